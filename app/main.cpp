@@ -1,0 +1,43 @@
+// The `inversevis` command-line program: parses arguments and maps errors to exit statuses.
+#include "commands.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/log.h>
+
+#include <iostream>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"inversevis: scalar fields on both sides of a surface mesh"};
+    app.require_subcommand(1);
+    app.fallthrough();  // global flags (-q) may follow the subcommand
+    bool quiet = false;
+    app.add_flag("-q,--quiet", quiet, "Print only warnings and errors");
+    const std::vector<ivis::app::Command> commands = {ivis::app::addInfoCommand(app),
+                                                       ivis::app::addSdfCommand(app),
+                                                       ivis::app::addRenderCommand(app)};
+    try {
+        app.parse(argc, argv);
+        if (quiet) ivis::core::setLogLevel(ivis::core::LogLevel::Warning);
+        for (const auto& command : commands)
+            if (command.parser->parsed()) command.run();
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help
+        std::cerr << "inversevis: error: " << e.what() << "\n";
+        return 2;
+    } catch (const ivis::InputError& e) {
+        std::cerr << "inversevis: error: " << e.what() << "\n";
+        return 2;
+    } catch (const ivis::ValueError& e) {
+        std::cerr << "inversevis: error: " << e.what() << "\n";
+        return 2;
+    } catch (const ivis::Cancelled& e) {
+        std::cerr << "inversevis: " << e.what() << "\n";
+        return 130;
+    } catch (const std::exception& e) {
+        std::cerr << "inversevis: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

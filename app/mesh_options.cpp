@@ -1,0 +1,43 @@
+#include "mesh_options.h"
+
+#include <ivis/core/errors.h>
+
+#include <filesystem>
+
+namespace ivis::app {
+
+void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag)
+{
+    command.add_option("mesh", source, "Mesh file (.obj .off .ply .stl) or scene:sphere|torus|vessel-tree")
+        ->required();
+    auto* scalar = command.add_option("--scalar", load.read.scalarName, "Per-vertex PLY property to show");
+    command.add_option("--scalar-file", load.read.scalarFile, "Text file with one scalar value per vertex")
+        ->excludes(scalar);
+    command.add_flag("--cap-holes", load.capHoles, "Close open boundary loops (caps are never coloured)");
+    command.add_option(resolutionFlag, volume.resolution, "Voxels across the box [-2.5,2.5]^3 (200 to 2000)")
+        ->capture_default_str();
+    command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")->capture_default_str();
+    command.add_option("--reach", volume.farFieldReach, "Exterior distance the far field covers (normalised)")
+        ->capture_default_str();
+    command.add_option("--distance", distance, "Distance sign: auto (unsigned for open meshes), signed, unsigned")
+        ->check(CLI::IsMember({"auto", "signed", "unsigned"}))
+        ->capture_default_str();
+}
+
+vdb::VolumeOptions MeshOptions::volumeOptions() const
+{
+    vdb::VolumeOptions options = volume;
+    options.sign = distance == "signed"     ? vdb::DistanceSign::Signed
+                   : distance == "unsigned" ? vdb::DistanceSign::Unsigned
+                                            : vdb::DistanceSign::Auto;
+    vdb::validate(options);
+    return options;
+}
+
+std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution)
+{
+    const std::string name = core::sourceStem(source) + ".res" + std::to_string(resolution) + ".vdb";
+    return (std::filesystem::path(folder) / name).string();
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,31 @@
+/// @file mesh_options.h
+/// @brief Command-line options shared by every subcommand that loads a mesh.
+#pragma once
+
+#include <ivis/core/surface_source.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace ivis::app {
+
+/// @brief The mesh argument and how to load it and build its volume.
+struct MeshOptions {
+    std::string source;  ///< file path or scene:<name>
+    core::SurfaceLoadOptions load;
+    vdb::VolumeOptions volume;
+    std::string distance = "auto";  ///< auto | signed | unsigned
+
+    /// @brief Registers MESH, --scalar, --scalar-file, --cap-holes, --volume-res-style options.
+    /// @param resolutionFlag name of the resolution flag ("--res" for sdf, "--volume-res" elsewhere)
+    void addTo(CLI::App& command, const std::string& resolutionFlag);
+    /// @brief Volume options with the distance mode parsed.
+    vdb::VolumeOptions volumeOptions() const;
+};
+
+/// @brief Default cache file for a source and resolution inside @a folder: "<stem>.res<N>.vdb".
+std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution);
+
+}  // namespace ivis::app

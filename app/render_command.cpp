@@ -1,0 +1,100 @@
+// `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera.
+#include "commands.h"
+#include "mesh_options.h"
+#include "view_options.h"
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/image_io.h>
+#include <ivis/core/log.h>
+#include <ivis/core/progress_bar.h>
+#include <ivis/render/renderer.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace ivis::app {
+
+Command addRenderCommand(CLI::App& app)
+{
+    struct Options {
+        MeshOptions mesh;
+        ViewOptions view;
+        std::string output = "inversevis.png";
+        std::string exr;
+        std::string statsJson;
+        std::string cameraOut;
+        std::string cacheDir;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("render", "Render a method's picture to PNG (and EXR layers)");
+    options->mesh.addTo(*command, "--volume-res");
+    options->view.addTo(*command);
+    command->add_option("-o,--output", options->output, "PNG file")->capture_default_str();
+    command->add_option("--exr", options->exr, "Multi-layer OpenEXR file (linear colour + per-pixel layers)");
+    command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON");
+    command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
+    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+
+    return {command, [options] {
+        const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
+        const core::Camera camera = options->view.camera();
+        render::RenderOptions renderOptions = options->view.renderOptions(field);
+
+        const std::filesystem::path output(options->output);
+        const std::string folder = !options->cacheDir.empty()            ? options->cacheDir
+                                   : output.has_parent_path() ? output.parent_path().string()
+                                                              : ".";
+        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution);
+        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
+        const render::RenderScene scene(field, volume);
+        const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
+
+        core::writePng(result.image, options->output, renderOptions.shading.transparentBackground);
+        if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr);
+        const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
+        core::writeCameraJson(camera, cameraPath);
+
+        const render::RenderStats& s = result.stats;
+        if (s.nanPixels > 0)
+            core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
+        const glm::dvec2 angles = camera.angles();
+        const nlohmann::json stats = {{"seconds", s.seconds},
+                                      {"width", renderOptions.width},
+                                      {"height", renderOptions.height},
+                                      {"samples_per_pixel", renderOptions.samplesPerPixel},
+                                      {"pixels_direct", s.pixelsDirect},
+                                      {"pixels_indirect", s.pixelsIndirect},
+                                      {"pixels_background", s.pixelsBackground},
+                                      {"rays_launched", s.raysLaunched},
+                                      {"rays_landed", s.raysLanded},
+                                      {"mean_steps", s.meanSteps()},
+                                      {"nan_pixels", s.nanPixels},
+                                      {"method", render::toString(renderOptions.method.method)},
+                                      {"theta", angles.x},
+                                      {"phi", angles.y},
+                                      {"alpha", renderOptions.method.curved.alpha},
+                                      {"hull_offset", renderOptions.method.curved.hullOffset},
+                                      {"mirror_w", renderOptions.method.mirror.w},
+                                      {"volume_resolution", volume.options.resolution},
+                                      {"volume_cache", volumePath},
+                                      {"output", options->output},
+                                      {"camera", cameraPath}};
+        if (!options->statsJson.empty())
+            core::writeAtomically(options->statsJson, [&](const std::string& path) {
+                std::ofstream out(path);
+                out << stats.dump(2) << "\n";
+                if (!out) throw std::runtime_error("write failed");
+            });
+        core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
+                      std::to_string(renderOptions.height) + ", " + render::toString(renderOptions.method.method) +
+                      ", " + std::to_string(s.seconds) + " s render)");
+    }};
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,68 @@
+// `inversevis sdf MESH`: build or reuse the cached sparse volume and report it.
+#include "commands.h"
+#include "mesh_options.h"
+
+#include <ivis/core/log.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+namespace ivis::app {
+
+Command addSdfCommand(CLI::App& app)
+{
+    struct Options {
+        MeshOptions mesh;
+        std::string output;
+        bool json = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
+    options->mesh.addTo(*command, "--res");
+    command->add_option("-o,--output", options->output, "Volume file (default: <mesh>.res<N>.vdb here)");
+    command->add_flag("--json", options->json, "Print one JSON object");
+
+    return {command, [options] {
+        const auto start = std::chrono::steady_clock::now();
+        const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
+        const std::string path = options->output.empty()
+                                     ? defaultVolumePath(".", options->mesh.source, volumeOptions.resolution)
+                                     : options->output;
+        vdb::CacheOutcome outcome{};
+        const vdb::SurfaceVolume volume =
+            vdb::loadOrBuildVolume(field.mesh, volumeOptions, path, nullptr, &outcome);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+        const nlohmann::json out = {
+            {"output", path},
+            {"cache", vdb::toString(outcome)},
+            {"resolution", volume.options.resolution},
+            {"voxel_size", volume.voxelSize()},
+            {"voxel_size_mesh_units", field.normalization.meshLength(volume.voxelSize())},
+            {"band_voxels", volume.options.bandVoxels},
+            {"far_field_resolution", volume.farPhi ? volume.options.farFieldResolution : volume.options.resolution},
+            {"reach", volume.reach()},
+            {"active_voxels", volume.activeVoxels()},
+            {"band_voxels_active", volume.phi->activeVoxelCount()},
+            {"memory_bytes", volume.memoryBytes()},
+            {"seconds", seconds},
+            {"open_mesh", core::boundaryEdgeCount(field.mesh) > 0},
+            {"unsigned_distance", volume.unsignedDistance},
+            {"triangles", volume.triangleCount}};
+        if (options->json) {
+            std::cout << out.dump(2) << "\n";
+            return;
+        }
+        core::logInfo(path + ": " + vdb::toString(outcome) + ", N=" + std::to_string(volume.options.resolution) +
+                      ", " + std::to_string(volume.activeVoxels()) + " active voxels, " +
+                      std::to_string(volume.memoryBytes() >> 20) + " MiB, " + std::to_string(seconds) + " s" +
+                      (volume.unsignedDistance ? ", unsigned distance (open mesh)" : ""));
+    }};
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,78 @@
+#include "view_options.h"
+
+#include <ivis/core/errors.h>
+
+#include <cstdio>
+
+namespace ivis::app {
+
+void ViewOptions::addTo(CLI::App& command)
+{
+    command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")->capture_default_str();
+    command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")->capture_default_str();
+    command.add_option("--fov", fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
+    command.add_flag("--ortho", orthographic, "Orthographic projection");
+    command.add_option("--camera", cameraFile, "Camera JSON (eye, target, up, fov_y_deg), instead of the angles")
+        ->check(CLI::ExistingFile);
+    command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
+    command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
+    command.add_option("--method", method, "front, backfaces, neugebauer, mirror or inversevis")->capture_default_str();
+    command.add_option("--alpha", alpha, "InverseVis initial velocity scale")->capture_default_str();
+    command.add_option("--hull-offset", hullOffset, "InverseVis hull distance phi0 (normalised units)")
+        ->capture_default_str();
+    command.add_option("--step", stepSize, "InverseVis symplectic Euler step h")->capture_default_str();
+    command.add_option("--max-steps", maxSteps, "Steps before a curved ray counts as a miss")->capture_default_str();
+    command.add_option("--mirror", mirror, "Mirror coefficients w1 w2 w3 w4 w5")->expected(5);
+    command.add_option("--ring-centre", ringCentre, "Ring map centre x y z (normalised units)")->expected(3);
+    command.add_option("--ring-width", ringWidth, "Ring width r2 - r1 (fraction of the image half-height)")
+        ->capture_default_str();
+    command.add_option("--colormap", colormap, "viridis, coolwarm or grey")->capture_default_str();
+    command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2);
+    command.add_option("--units", units, "Units shown on the colour bar");
+    command.add_flag("--no-legend", noLegend, "No colour bar");
+    command.add_flag("--no-outline", noOutline, "No outline around the directly visible object");
+    command.add_flag("--no-shadows", noShadows, "No shadow rays");
+    command.add_flag("--transparent", transparent, "Transparent background (PNG alpha)");
+}
+
+core::Camera ViewOptions::camera() const
+{
+    if (!cameraFile.empty()) return core::readCameraJson(cameraFile);
+    core::Camera camera = core::Camera::fromAngles(theta, phi, core::kCameraDistance, fovYDeg);
+    camera.orthographic = orthographic;
+    camera.validate();
+    return camera;
+}
+
+render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
+{
+    render::RenderOptions options;
+    char extra = 0;
+    if (std::sscanf(resolution.c_str(), "%dx%d%c", &options.width, &options.height, &extra) != 2 ||
+        options.width < 1 || options.height < 1 || options.width > 32768 || options.height > 32768)
+        throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
+    options.samplesPerPixel = samplesPerPixel;
+    options.method.method = render::parseMethod(method);
+    options.method.curved.alpha = alpha;
+    options.method.curved.hullOffset = hullOffset;
+    options.method.curved.stepSize = stepSize;
+    options.method.curved.maxSteps = maxSteps;
+    if (!(hullOffset > 0.0f) || !(stepSize > 0.0f) || maxSteps < 1)
+        throw ValueError("--hull-offset and --step must be positive and --max-steps at least 1");
+    for (std::size_t i = 0; i < mirror.size(); ++i) options.method.mirror.w[i] = mirror[i];
+    if (ringCentre.size() == 3) options.method.ring.centre = {ringCentre[0], ringCentre[1], ringCentre[2]};
+    options.method.ring.ringWidth = ringWidth;
+    options.shading.colormap = colormap;
+    core::colormap(colormap);  // validates the name
+    options.shading.range = range.size() == 2 ? core::scalarRangeFromUser(range[0], range[1])
+                                              : core::scalarRangeFromData(field.values);
+    options.shading.shadows = !noShadows;
+    options.shading.transparentBackground = transparent;
+    options.outline = !noOutline;
+    options.legend = !noLegend;
+    options.scalarName = field.name;
+    options.units = units;
+    return options;
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,50 @@
+/// @file view_options.h
+/// @brief Command-line options for the camera, the image, the method and the look of a render.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/core/surface_field.h>
+#include <ivis/render/renderer.h>
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+
+/// @brief Camera, image size, method parameters and shading, as given on the command line.
+struct ViewOptions {
+    double theta = 90.0;
+    double phi = 0.0;
+    double fovYDeg = core::kDefaultFovYDeg;
+    bool orthographic = false;
+    std::string cameraFile;
+    std::string resolution = "1000x1000";
+    int samplesPerPixel = 1;
+    std::string method = "inversevis";
+    float alpha = 0.5f;
+    float hullOffset = 0.4f;
+    float stepSize = 0.1f;
+    int maxSteps = 1000;
+    std::vector<float> mirror;
+    std::vector<float> ringCentre;
+    float ringWidth = 0.3f;
+    std::string colormap = "viridis";
+    std::vector<double> range;
+    std::string units;
+    bool noLegend = false;
+    bool noOutline = false;
+    bool noShadows = false;
+    bool transparent = false;
+
+    /// @brief Registers every option on @a command.
+    void addTo(CLI::App& command);
+    /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho.
+    core::Camera camera() const;
+    /// @brief Render options for @a field (its scalar range and name feed the colour bar).
+    /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
+    render::RenderOptions renderOptions(const core::SurfaceField& field) const;
+};
+
+}  // namespace ivis::app

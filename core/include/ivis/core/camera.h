@@ -1,0 +1,82 @@
+/// @file camera.h
+/// @brief Pinhole (or orthographic) camera looking at a target; angles on a sphere; JSON files.
+/// @note Angle convention: y is up; polar angle theta from +y, azimuth phi around y from +z toward +x.
+///       theta = 90, phi = 0 puts the eye at (0, 0, radius) looking down -z.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace ivis::core {
+
+/// @brief Default distance of the eye from the target (the paper's camera sphere).
+inline constexpr double kCameraDistance = 2.5;
+/// @brief Default vertical field of view: fits the hull (phi0 = 0.4) of a unit sphere seen from 2.5,
+///        whose half-angle is asin(1.4 / 2.5) = 34 degrees, with a margin.
+inline constexpr double kDefaultFovYDeg = 75.0;
+
+/// @brief A camera: where it is, what it looks at, and how it projects.
+struct Camera {
+    glm::dvec3 eye{0.0, 0.0, kCameraDistance};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fovYDeg = kDefaultFovYDeg;  ///< vertical field of view (perspective)
+    bool orthographic = false;
+    double orthoHalfHeight = 1.6;      ///< half the view height in world units (orthographic)
+
+    /// @brief Eye on the sphere of @a radius around the origin at polar @a thetaDeg, azimuth @a phiDeg.
+    static Camera fromAngles(double thetaDeg, double phiDeg, double radius = kCameraDistance,
+                             double fovYDeg = kDefaultFovYDeg);
+    /// @brief Polar and azimuth angles (degrees) of the eye around the target.
+    glm::dvec2 angles() const;
+    /// @brief Throws ValueError unless eye != target, up is not parallel to the view, 0 < fov < 180.
+    void validate() const;
+};
+
+/// @brief A ray from the camera: origin and unit direction, world space.
+struct CameraRay {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};
+};
+
+/// @brief A camera bound to an image size: generates rays for continuous pixel coordinates and
+///        projects world points back to pixels. Pixel (0,0) is the top-left corner of the image.
+class CameraFrame {
+public:
+    /// @brief Precomputes the basis; throws ValueError for a bad camera or size.
+    CameraFrame(const Camera& camera, int width, int height);
+    /// @brief Ray through continuous pixel position (x, y) (pixel centres at +0.5).
+    CameraRay ray(double x, double y) const;
+    /// @brief Continuous pixel position of a world point (may lie outside the image).
+    glm::dvec2 project(const glm::dvec3& world) const;
+    /// @brief Unit view direction (eye toward target).
+    const glm::dvec3& forward() const { return mForward; }
+    /// @brief Unit right vector of the image plane.
+    const glm::dvec3& right() const { return mRight; }
+    /// @brief Unit up vector of the image plane.
+    const glm::dvec3& upVector() const { return mUp; }
+    /// @brief The camera it was built from.
+    const Camera& camera() const { return mCamera; }
+    int width() const { return mWidth; }
+    int height() const { return mHeight; }
+
+private:
+    Camera mCamera;
+    int mWidth, mHeight;
+    glm::dvec3 mForward, mRight, mUp;
+    double mHalfHeight;  ///< tan(fov/2) (perspective) or orthoHalfHeight (orthographic)
+    double mAspect;
+};
+
+/// @brief Reads a camera JSON file {"eye":[x,y,z],"target":[...],"up":[...],"fov_y_deg":f,
+///        "orthographic":b,"ortho_half_height":f}; missing keys keep their defaults.
+/// @throw InputError naming the file for unreadable JSON or bad values
+Camera readCameraJson(const std::string& path);
+
+/// @brief Writes a camera as JSON (with its angles for reference), atomically.
+/// @throw InputError naming the file when it cannot be written
+void writeCameraJson(const Camera& camera, const std::string& path);
+
+}  // namespace ivis::core

@@ -1,0 +1,39 @@
+/// @file image_io.h
+/// @brief Writes images as 8-bit sRGB PNG or multi-layer OpenEXR; reads them back for tests.
+/// @note Writers go through writeAtomically (atomic_file.h): a temporary "<path>.tmp.<pid>.<n>" in
+///       the same folder, renamed onto @a path, so a reader never sees a half-written file; on
+///       failure the temporary is removed and an existing file at @a path is left untouched.
+#pragma once
+
+#include <ivis/core/image.h>
+
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+
+/// @brief Writes @a image as an 8-bit PNG, encoded with the sRGB transfer function (sRGB chunk set).
+/// @param transparentBackground true: RGBA with straight (un-premultiplied) colour and alpha;
+///        false: RGB as stored, i.e. composited over black where alpha < 1
+/// @throw ValueError for an empty image; InputError "<path>: cannot write (<reason>)" on any I/O
+///        failure (missing folder, no permission, disk full)
+void writePng(const Image& image, const std::string& path, bool transparentBackground);
+
+/// @brief Reads any PNG as 8-bit sRGB RGBA (libpng converts other layouts) into a linear,
+///        premultiplied Image.
+/// @throw InputError "<path>: cannot read (<reason>)"
+Image readPng(const std::string& path);
+
+/// @brief Writes a single-part scanline OpenEXR, ZIP-compressed: R, G, B, A as HALF (linear,
+///        premultiplied) plus every channel of @a layers as FLOAT under its own name ("P.X" is
+///        channel X of layer P).
+/// @throw ValueError for an empty image or layers of another size; InputError
+///        "<path>: cannot write (<reason>)" on any I/O failure
+void writeExr(const Image& image, const ImageLayers& layers, const std::string& path);
+
+/// @brief Reads channel @a name of an EXR file as floats, row-major from the top row.
+/// @throw InputError "<path>: cannot read (<reason>)", or when the channel is missing (the
+///        message lists the channels present)
+std::vector<float> readExrChannel(const std::string& path, const std::string& name);
+
+}  // namespace ivis::core

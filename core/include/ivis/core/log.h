@@ -1,0 +1,28 @@
+/// @file log.h
+/// @brief Minimal leveled logging to stderr, shared by the libraries and the programs.
+/// @warning Thread-safe: each message is written whole under a lock.
+#pragma once
+
+#include <string>
+
+namespace ivis::core {
+
+/// @brief Message importance; messages below the current level are dropped.
+enum class LogLevel { Debug = 0, Info = 1, Warning = 2, Error = 3, Silent = 4 };
+
+/// @brief Sets the minimum level printed (default Info).
+void setLogLevel(LogLevel level);
+
+/// @brief Current minimum level.
+LogLevel logLevel();
+
+/// @brief Prints "inversevis: <message>" when Info is enabled.
+void logInfo(const std::string& message);
+
+/// @brief Prints "inversevis: warning: <message>" when Warning is enabled.
+void logWarning(const std::string& message);
+
+/// @brief Prints "inversevis: debug: <message>" when Debug is enabled.
+void logDebug(const std::string& message);
+
+}  // namespace ivis::core

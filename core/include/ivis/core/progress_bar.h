@@ -1,0 +1,34 @@
+/// @file progress_bar.h
+/// @brief An Interrupter that draws a one-line progress bar on stderr once an operation has run
+///        for a second, only when stderr is a terminal and the log level allows Info.
+/// @warning wasInterrupted is safe to call from several threads.
+#pragma once
+
+#include <ivis/core/interrupter.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+
+namespace ivis::core {
+
+/// @brief Terminal progress bar; never cancels.
+class ProgressBar : public Interrupter {
+public:
+    /// @brief Draws nothing when @a enabled is false (e.g. --quiet).
+    explicit ProgressBar(bool enabled = true);
+    void start(const char* name = nullptr) override;
+    void end() override;
+    bool wasInterrupted(int percent = -1) override;
+
+private:
+    bool mEnabled;
+    std::string mName;
+    std::chrono::steady_clock::time_point mStart;
+    std::atomic<int> mShownPercent{-1};
+    std::atomic<bool> mDrawn{false};
+    std::mutex mMutex;
+};
+
+}  // namespace ivis::core

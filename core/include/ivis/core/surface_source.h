@@ -1,0 +1,29 @@
+/// @file surface_source.h
+/// @brief Turns a mesh argument (a file path or "scene:<name>") into a normalised SurfaceField.
+#pragma once
+
+#include <ivis/core/mesh_reader.h>
+#include <ivis/core/surface_field.h>
+
+#include <string>
+
+namespace ivis::core {
+
+/// @brief Prefix that selects a generated scene instead of a file: "scene:vessel-tree".
+inline constexpr const char* kScenePrefix = "scene:";
+
+/// @brief How to load a surface.
+struct SurfaceLoadOptions {
+    MeshReadOptions read;   ///< scalar selection (files only)
+    bool capHoles = false;  ///< close boundary loops with caps tagged as non-data
+};
+
+/// @brief Reads the file (or generates the scene), logs dropped degenerate triangles, caps holes
+///        when asked, and normalises into [-1,1]^3.
+/// @throw InputError for bad files or scene names (message names the source)
+SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options = {});
+
+/// @brief A short name for a source, usable in output file names ("armadillo_50k", "vessel-tree").
+std::string sourceStem(const std::string& source);
+
+}  // namespace ivis::core

@@ -1,0 +1,62 @@
+#include <ivis/core/camera.h>
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace ivis::core {
+namespace {
+
+glm::dvec3 readVector(const nlohmann::json& json, const char* key, const glm::dvec3& fallback)
+{
+    if (!json.contains(key)) return fallback;
+    const auto& v = json.at(key);
+    if (!v.is_array() || v.size() != 3) throw std::invalid_argument(std::string("'") + key + "' must be [x, y, z]");
+    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+}
+
+}  // namespace
+
+Camera readCameraJson(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open camera file");
+    Camera camera;
+    try {
+        const nlohmann::json json = nlohmann::json::parse(in);
+        if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
+        camera.eye = readVector(json, "eye", camera.eye);
+        camera.target = readVector(json, "target", camera.target);
+        camera.up = readVector(json, "up", camera.up);
+        camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
+        camera.orthographic = json.value("orthographic", camera.orthographic);
+        camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
+        camera.validate();
+    } catch (const std::exception& e) {
+        throw InputError(path + ": bad camera file (" + e.what() + ")");
+    }
+    return camera;
+}
+
+void writeCameraJson(const Camera& camera, const std::string& path)
+{
+    const glm::dvec2 angles = camera.angles();
+    const nlohmann::json json = {{"eye", {camera.eye.x, camera.eye.y, camera.eye.z}},
+                                 {"target", {camera.target.x, camera.target.y, camera.target.z}},
+                                 {"up", {camera.up.x, camera.up.y, camera.up.z}},
+                                 {"fov_y_deg", camera.fovYDeg},
+                                 {"orthographic", camera.orthographic},
+                                 {"ortho_half_height", camera.orthoHalfHeight},
+                                 {"theta_deg", angles.x},
+                                 {"phi_deg", angles.y}};
+    writeAtomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary);
+        out << json.dump(2) << "\n";
+        if (!out) throw std::runtime_error("write failed");
+    });
+}
+
+}  // namespace ivis::core

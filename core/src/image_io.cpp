@@ -1,0 +1,184 @@
+#include <ivis/core/image_io.h>
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
+#include <png.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+namespace {
+std::string oneLine(std::string text)
+{
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    return text;
+}
+
+std::runtime_error errnoFailure() { return std::runtime_error(std::strerror(errno)); }
+
+void checkNotEmpty(const Image& image, const std::string& path)
+{
+    if (image.width() == 0 || image.height() == 0) throw ValueError(path + ": cannot write an empty image");
+}
+
+std::uint8_t byteFromUnit(float v)
+{
+    return static_cast<std::uint8_t>(std::lround((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f));
+}
+
+std::vector<std::uint8_t> pngBytes(const Image& image, bool withAlpha)
+{
+    std::vector<std::uint8_t> bytes;
+    bytes.reserve(image.pixels().size() * (withAlpha ? 4 : 3));
+    for (const glm::vec4& pixel : image.pixels()) {
+        const float alpha = std::clamp(pixel.a, 0.0f, 1.0f);
+        const glm::vec3 rgb = !withAlpha ? glm::vec3(pixel) : alpha > 0.0f ? glm::vec3(pixel) / alpha : glm::vec3(0.0f);
+        for (int c = 0; c < 3; ++c) bytes.push_back(byteFromUnit(srgbFromLinear(rgb[c])));
+        if (withAlpha) bytes.push_back(byteFromUnit(alpha));
+    }
+    return bytes;
+}
+
+void writePngFile(const Image& image, const std::string& file, bool withAlpha)
+{
+    const std::vector<std::uint8_t> bytes = pngBytes(image, withAlpha);
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width());
+    png.height = static_cast<png_uint_32>(image.height());
+    png.format = withAlpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+    std::FILE* stream = std::fopen(file.c_str(), "wb");
+    if (!stream) throw errnoFailure();
+    const bool written = png_image_write_to_stdio(&png, stream, 0, bytes.data(), 0, nullptr) != 0;
+    const std::string message = png.message;
+    png_image_free(&png);
+    if (std::fclose(stream) != 0 && written) throw errnoFailure();
+    if (!written) throw std::runtime_error(message);
+}
+
+void writeExrFile(const Image& image, const ImageLayers& layers, const std::string& file)
+{
+    Imf::Header header(image.width(), image.height());
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const Imath::Box2i window = header.dataWindow();
+    const std::size_t width = static_cast<std::size_t>(image.width());
+    std::vector<Imath::half> rgba;  // OpenEXR writes only the pixel type of the file's channel
+    rgba.reserve(4 * image.pixels().size());
+    for (const glm::vec4& pixel : image.pixels()) rgba.insert(rgba.end(), {pixel.r, pixel.g, pixel.b, pixel.a});
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 4; ++c) {
+        const std::string name(1, "RGBA"[c]);
+        header.channels().insert(name, Imf::Channel(Imf::HALF));
+        frame.insert(name, Imf::Slice::Make(Imf::HALF, &rgba[c], window, 4 * sizeof(Imath::half),
+                                            4 * sizeof(Imath::half) * width));
+    }
+    for (const auto& [name, values] : layers.channels()) {
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        frame.insert(name, Imf::Slice::Make(Imf::FLOAT, values.data(), window, sizeof(float), sizeof(float) * width));
+    }
+    std::ofstream stream(file, std::ios::binary);
+    if (!stream) throw errnoFailure();
+    {
+        Imf::StdOFStream exrStream(stream, file.c_str());
+        Imf::OutputFile output(exrStream, header);
+        output.setFrameBuffer(frame);
+        output.writePixels(image.height());
+    }
+    stream.close();
+    if (!stream) throw errnoFailure();
+}
+
+std::string channelList(const Imf::ChannelList& channels)
+{
+    std::string list;
+    for (auto it = channels.begin(); it != channels.end(); ++it) list += (list.empty() ? "" : ", ") + std::string(it.name());
+    return list;
+}
+
+}  // namespace
+
+void writePng(const Image& image, const std::string& path, bool transparentBackground)
+{
+    checkNotEmpty(image, path);
+    writeAtomically(path, [&](const std::string& file) { writePngFile(image, file, transparentBackground); });
+}
+
+Image readPng(const std::string& path)
+{
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    std::vector<std::uint8_t> bytes;
+    if (png_image_begin_read_from_file(&png, path.c_str()) != 0) {
+        png.format = PNG_FORMAT_RGBA;
+        bytes.resize(PNG_IMAGE_SIZE(png));
+        png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr);
+    }
+    const std::string message = png.message;
+    png_image_free(&png);
+    if (PNG_IMAGE_FAILED(png)) throw InputError(path + ": cannot read (" + message + ")");
+
+    Image image(static_cast<int>(png.width), static_cast<int>(png.height));
+    for (std::size_t i = 0; i < image.pixels().size(); ++i) {
+        const std::uint8_t* rgba = &bytes[4 * i];
+        const float alpha = rgba[3] / 255.0f;
+        const glm::vec3 srgb(rgba[0] / 255.0f, rgba[1] / 255.0f, rgba[2] / 255.0f);
+        image.pixels()[i] = glm::vec4(linearFromSrgb(srgb) * alpha, alpha);
+    }
+    return image;
+}
+
+void writeExr(const Image& image, const ImageLayers& layers, const std::string& path)
+{
+    checkNotEmpty(image, path);
+    if (layers.width() != image.width() || layers.height() != image.height())
+        throw ValueError(path + ": image layers are " + std::to_string(layers.width()) + "x" +
+                         std::to_string(layers.height()) + ", the image " + std::to_string(image.width()) + "x" +
+                         std::to_string(image.height()));
+    writeAtomically(path, [&](const std::string& file) { writeExrFile(image, layers, file); });
+}
+
+std::vector<float> readExrChannel(const std::string& path, const std::string& name)
+{
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw InputError(path + ": cannot read (" + std::strerror(errno) + ")");
+    try {
+        Imf::StdIFStream exrStream(stream, path.c_str());
+        Imf::InputFile input(exrStream);
+        const Imf::ChannelList& channels = input.header().channels();
+        if (!channels.findChannel(name))
+            throw InputError(path + ": no channel '" + name + "' (channels: " + channelList(channels) + ")");
+        const Imath::Box2i window = input.header().dataWindow();
+        const std::size_t width = static_cast<std::size_t>(window.max.x - window.min.x + 1);
+        std::vector<float> values(width * static_cast<std::size_t>(window.max.y - window.min.y + 1));
+        Imf::FrameBuffer frame;
+        frame.insert(name, Imf::Slice::Make(Imf::FLOAT, values.data(), window, sizeof(float), sizeof(float) * width));
+        input.setFrameBuffer(frame);
+        input.readPixels(window.min.y, window.max.y);
+        return values;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": cannot read (" + oneLine(e.what()) + ")");
+    }
+}
+
+}  // namespace ivis::core

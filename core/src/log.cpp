@@ -1,0 +1,26 @@
+#include <ivis/core/log.h>
+
+#include <atomic>
+#include <iostream>
+#include <mutex>
+
+namespace ivis::core {
+namespace {
+std::atomic<LogLevel> gLevel{LogLevel::Info};
+std::mutex gMutex;
+
+void emit(LogLevel level, const char* tag, const std::string& message)
+{
+    if (level < gLevel.load()) return;
+    std::lock_guard<std::mutex> lock(gMutex);
+    std::cerr << "inversevis: " << tag << message << '\n';
+}
+}  // namespace
+
+void setLogLevel(LogLevel level) { gLevel = level; }
+LogLevel logLevel() { return gLevel.load(); }
+void logInfo(const std::string& message) { emit(LogLevel::Info, "", message); }
+void logWarning(const std::string& message) { emit(LogLevel::Warning, "warning: ", message); }
+void logDebug(const std::string& message) { emit(LogLevel::Debug, "debug: ", message); }
+
+}  // namespace ivis::core

@@ -1,0 +1,65 @@
+/// @file distance_field.h
+/// @brief phi and grad phi of a SurfaceVolume anywhere between the surface and the hull: the fine
+///        narrow band where a cell is fully inside it, the dense coarse far field elsewhere.
+/// @warning DistanceField is immutable and shared; create one Sampler per thread.
+#pragma once
+
+#include <ivis/render/dense_grid.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <glm/vec3.hpp>
+
+namespace ivis::render {
+
+/// @brief Read-only distance field of one volume.
+class DistanceField {
+public:
+    /// @brief Wraps @a volume (kept by reference: it must outlive this object) and densifies its
+    ///        far field (or, without one, its band) for fast sampling.
+    explicit DistanceField(const vdb::SurfaceVolume& volume);
+
+    /// @brief Per-thread sampler: owns the OpenVDB accessors, never shared between threads.
+    class Sampler {
+    public:
+        explicit Sampler(const DistanceField& field);
+        /// @brief Trilinear phi at p (world = normalised units).
+        float phi(const glm::vec3& p);
+        /// @brief Trilinear phi at p and the analytic gradient of its trilinear cell.
+        float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
+        /// @brief Closest triangle stored at the fine voxel nearest to p (-1 outside the band).
+        int nearestTriangle(const glm::vec3& p);
+        /// @brief The field this sampler reads.
+        const DistanceField& field() const { return mField; }
+
+    private:
+        /// Fills the 8 fine corner values of the cell containing p; false unless all are active.
+        bool fineCell(const glm::vec3& p, float corners[8], glm::vec3& t);
+
+        const DistanceField& mField;
+        openvdb::FloatGrid::ConstAccessor mPhi;
+        openvdb::Int32Grid::ConstAccessor mTriangle;
+    };
+
+    /// @brief A new sampler for the calling thread.
+    Sampler sampler() const { return Sampler(*this); }
+    /// @brief Fine voxel size (normalised units).
+    float voxelSize() const { return mVoxelSize; }
+    /// @brief Exterior distance up to which phi is exact; beyond it phi is clamped to this value.
+    float reach() const { return mReach; }
+    /// @brief Whether phi is an unsigned distance (open mesh).
+    bool isUnsigned() const { return mVolume.unsignedDistance; }
+    /// @brief The volume it samples.
+    const vdb::SurfaceVolume& volume() const { return mVolume; }
+
+private:
+    const vdb::SurfaceVolume& mVolume;
+    DenseGrid mFar;
+    bool mHasFineBand;       ///< false when the dense copy is the fine grid itself
+    float mVoxelSize;
+    float mInvVoxelSize;
+    float mOrigin;           ///< world coordinate of fine voxel centre 0 on each axis
+    float mFineTrustBelow;   ///< far values below this may lie in the fine band
+    float mReach;
+};
+
+}  // namespace ivis::render

@@ -1,0 +1,26 @@
+/// @file quadratic_mirror.h
+/// @brief The curved-mirror baseline: a quadratic height field behind the object whose normal is
+///        used directly as the new ray direction (METHOD.md, "Baseline 2").
+/// @note Eye space: camera at the origin looking down -z, x right, y up. The mirror is
+///       z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y with zm = -(eye-target distance) - distanceBehind.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/render/method.h>
+
+#include <glm/vec3.hpp>
+
+namespace ivis::render {
+
+/// @brief Where a camera ray meets the mirror, and the mirror's unit normal there (world space).
+struct MirrorHit {
+    glm::vec3 point{};
+    glm::vec3 normal{};
+};
+
+/// @brief Intersects the camera ray (world space) with the mirror: the smallest t > 0 root.
+/// @return false when the ray does not meet the mirror in front of the camera
+bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray, const MirrorParams& params,
+                     MirrorHit& hit);
+
+}  // namespace ivis::render

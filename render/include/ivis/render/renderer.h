@@ -1,0 +1,62 @@
+/// @file renderer.h
+/// @brief The TBB-parallel CPU renderer: one picture of a method at any size, with per-pixel
+///        layers (depth, region, triangle, P, scalar, steps) and statistics.
+/// @note The result does not depend on the number of threads.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/core/image.h>
+#include <ivis/core/interrupter.h>
+#include <ivis/render/method.h>
+#include <ivis/render/render_scene.h>
+#include <ivis/render/shading.h>
+
+#include <cstddef>
+#include <string>
+
+namespace ivis::render {
+
+/// @brief What to render and how.
+struct RenderOptions {
+    int width = 1000;
+    int height = 1000;
+    int samplesPerPixel = 1;  ///< supersampling: a fixed R2 pattern per pixel, the first at its centre
+    MethodParams method;
+    ShadingOptions shading;
+    bool outline = true;      ///< dark outline around the directly visible object
+    bool legend = true;       ///< colour bar with the scalar's name and range
+    std::string scalarName;   ///< legend title
+    std::string units;        ///< legend units
+};
+
+/// @brief Counts over the pixel centres (regions) and over every launched indirect ray.
+struct RenderStats {
+    double seconds = 0.0;
+    std::size_t pixelsDirect = 0;
+    std::size_t pixelsIndirect = 0;
+    std::size_t pixelsBackground = 0;
+    std::size_t raysLaunched = 0;  ///< indirect rays (all samples)
+    std::size_t raysLanded = 0;
+    std::size_t totalSteps = 0;    ///< integration steps over launched rays
+    std::size_t nanPixels = 0;     ///< pixel centres showing NaN data
+    /// @brief Mean integration steps per launched ray (0 when none).
+    double meanSteps() const { return raysLaunched ? double(totalSteps) / double(raysLaunched) : 0.0; }
+};
+
+/// @brief A rendered picture, its layers and its statistics.
+struct RenderResult {
+    core::Image image;
+    core::ImageLayers layers{0, 0};
+    RenderStats stats;
+};
+
+/// @brief Renders @a scene from @a camera.
+/// @param interrupter optional progress (percent of rows) and cancel
+/// @throw ValueError for bad options; Cancelled when interrupted
+RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, const RenderOptions& options,
+                         core::Interrupter* interrupter = nullptr);
+
+/// @brief Names of the per-pixel layers, in the order renderImage adds them.
+const char* const* layerNames();
+
+}  // namespace ivis::render

@@ -1,0 +1,60 @@
+/// @file screen_map.h
+/// @brief The map P: I -> S of METHOD.md: for a pixel position, the surface point it shows, by
+///        a straight view ray (I+) or by the chosen method's indirect ray (I-).
+/// @warning map() is const and thread-safe given one DistanceField::Sampler per thread.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/render/method.h>
+#include <ivis/render/neugebauer_map.h>
+#include <ivis/render/render_scene.h>
+#include <ivis/render/surface_point.h>
+
+#include <cstdint>
+
+namespace ivis::render {
+
+/// @brief Partition of the image domain: I0, I+, I-.
+enum class Region : std::uint8_t { Background = 0, Direct = 1, Indirect = 2 };
+
+/// @brief What one pixel sample shows.
+struct PixelMapping {
+    Region region = Region::Background;
+    SurfacePoint point;     ///< valid for Direct and Indirect
+    float depth = 0.0f;     ///< distance from the eye to the point shown (0 for background)
+    int steps = 0;          ///< integration / sphere-tracing steps of the indirect ray
+    bool launched = false;  ///< an indirect ray was launched for this sample
+    glm::vec3 arrival{};    ///< unit direction along which the point is seen (toward the surface)
+};
+
+/// @brief P for one camera, image size and method.
+class ScreenMap {
+public:
+    /// @brief Prepares the method's per-view state (ring radii from the silhouette).
+    ScreenMap(const RenderScene& scene, const core::CameraFrame& frame, const MethodParams& params);
+
+    /// @brief The surface point shown at continuous pixel position (x, y).
+    PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const;
+
+    /// @brief The ring layout (meaningful for Method::Neugebauer).
+    const RingLayout& rings() const { return mRings; }
+    const core::CameraFrame& frame() const { return mFrame; }
+    const MethodParams& params() const { return mParams; }
+    const RenderScene& scene() const { return mScene; }
+
+private:
+    PixelMapping inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
+    PixelMapping mirror(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
+    PixelMapping ring(const glm::dvec2& pixel) const;
+    /// Indirect mapping for a sphere-traced point near the surface.
+    PixelMapping landedAt(const glm::vec3& p, const glm::vec3& arrival, int steps,
+                          DistanceField::Sampler& sampler) const;
+
+    const RenderScene& mScene;
+    core::CameraFrame mFrame;
+    MethodParams mParams;
+    RingLayout mRings;
+    float mEpsilon;
+};
+
+}  // namespace ivis::render

@@ -1,0 +1,53 @@
+/// @file shading.h
+/// @brief Colours a pixel mapping: the scalar through a colour map, a key light with ambient and
+///        soft shadows for direct pixels, a dimmed "back side" look for indirect ones.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/core/colormap.h>
+#include <ivis/render/render_scene.h>
+#include <ivis/render/screen_map.h>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <string>
+
+namespace ivis::render {
+
+/// @brief Look of the rendered pixels (colours are linear RGB).
+struct ShadingOptions {
+    std::string colormap = "viridis";
+    core::ScalarRange range{0.0f, 1.0f};  ///< scalar values mapped to the ends of the colour map
+    float ambient = 0.3f;                 ///< light reaching every direct pixel
+    float indirectBrightness = 0.6f;      ///< indirect pixels: colour x this, so they read as behind
+    bool shadows = true;                  ///< shadow rays sphere-traced through the level set
+    bool transparentBackground = false;
+    glm::vec3 background{1.0f};
+    glm::vec3 nanColour{1.0f, 0.0f, 1.0f};  ///< data present but NaN at a vertex
+    glm::vec3 noDataColour{0.72f};          ///< caps, or a mesh without scalar
+};
+
+/// @brief Shades pixel mappings for one view.
+class Shader {
+public:
+    /// @brief Binds the scene, the view (for the key light) and the options.
+    Shader(const RenderScene& scene, const core::CameraFrame& frame, const ShadingOptions& options);
+
+    /// @brief Premultiplied linear RGBA of one mapping; sets @a isNan when the scalar was NaN data.
+    glm::vec4 shade(const PixelMapping& mapping, DistanceField::Sampler& sampler, bool& isNan) const;
+
+    /// @brief Unit direction toward the key light (upper left, from the camera's side).
+    const glm::vec3& toLight() const { return mToLight; }
+
+private:
+    /// Surface colour of a point: colour map of its scalar, or the NaN / no-data colours.
+    glm::vec3 albedo(const SurfacePoint& point, bool& isNan) const;
+
+    const RenderScene& mScene;
+    ShadingOptions mOptions;
+    const core::Colormap& mColormap;
+    glm::vec3 mToLight;
+};
+
+}  // namespace ivis::render

@@ -1,0 +1,19 @@
+/// @file shadow.h
+/// @brief Shadow rays sphere-traced through the level set (the paper's depth cue).
+#pragma once
+
+#include <ivis/render/distance_field.h>
+
+#include <glm/vec3.hpp>
+
+namespace ivis::render {
+
+/// @brief Soft shadow factor in [0, 1] (1 = fully lit) toward a directional light: sphere traces
+///        phi from @a point (offset two voxels along @a normal) along @a toLight, darkening by the
+///        closest approach min(k phi / t) and returning 0 when the ray meets the surface.
+/// @param normal unit surface normal on the side facing the light
+/// @param toLight unit direction from the surface to the light
+float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, const glm::vec3& normal,
+                   const glm::vec3& toLight);
+
+}  // namespace ivis::render

@@ -1,0 +1,73 @@
+#include <ivis/render/distance_field.h>
+
+#include <cmath>
+
+namespace ivis::render {
+
+DistanceField::DistanceField(const vdb::SurfaceVolume& volume)
+    : mVolume(volume),
+      mFar(volume.farPhi ? *volume.farPhi : *volume.phi),
+      mHasFineBand(bool(volume.farPhi)),
+      mVoxelSize(float(volume.voxelSize())),
+      mInvVoxelSize(1.0f / float(volume.voxelSize())),
+      mOrigin(float(-vdb::kBoxHalfExtent + 0.5 * volume.voxelSize())),
+      mFineTrustBelow(volume.phi->background() + mFar.voxelSize()),
+      mReach(float(volume.reach()))
+{
+}
+
+DistanceField::Sampler::Sampler(const DistanceField& field)
+    : mField(field), mPhi(field.mVolume.phi->getConstAccessor()), mTriangle(field.mVolume.triangle->getConstAccessor())
+{
+}
+
+bool DistanceField::Sampler::fineCell(const glm::vec3& p, float corners[8], glm::vec3& t)
+{
+    const glm::vec3 q = (p - glm::vec3(mField.mOrigin)) * mField.mInvVoxelSize;
+    const glm::vec3 f(std::floor(q.x), std::floor(q.y), std::floor(q.z));
+    t = q - f;
+    const openvdb::Coord base(int(f.x), int(f.y), int(f.z));
+    const auto* leaf = mPhi.probeConstLeaf(base);
+    const bool insideLeaf = leaf && (base.x() & 7) != 7 && (base.y() & 7) != 7 && (base.z() & 7) != 7;
+    for (int i = 0; i < 8; ++i) {
+        const openvdb::Coord ijk = base.offsetBy(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+        if (insideLeaf) {
+            const openvdb::Index offset = leaf->coordToOffset(ijk);
+            if (!leaf->isValueOn(offset)) return false;
+            corners[i] = leaf->getValue(offset);
+        } else if (!mPhi.probeValue(ijk, corners[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+float DistanceField::Sampler::phi(const glm::vec3& p)
+{
+    const float far = mField.mFar.value(p);
+    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
+    float corners[8];
+    glm::vec3 t;
+    return fineCell(p, corners, t) ? detail::trilinear(corners, t, nullptr) : far;
+}
+
+float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
+{
+    const float far = mField.mFar.valueAndGradient(p, gradient);
+    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
+    float corners[8];
+    glm::vec3 t;
+    if (!fineCell(p, corners, t)) return far;
+    const float value = detail::trilinear(corners, t, &gradient);
+    gradient *= mField.mInvVoxelSize;
+    return value;
+}
+
+int DistanceField::Sampler::nearestTriangle(const glm::vec3& p)
+{
+    const glm::vec3 q = (p - glm::vec3(mField.mOrigin)) * mField.mInvVoxelSize;
+    const openvdb::Coord ijk(int(std::lround(q.x)), int(std::lround(q.y)), int(std::lround(q.z)));
+    return mTriangle.getValue(ijk);
+}
+
+}  // namespace ivis::render

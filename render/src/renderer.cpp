@@ -1,0 +1,139 @@
+#include <ivis/render/renderer.h>
+
+#include <ivis/core/color_bar.h>
+#include <ivis/core/errors.h>
+#include <ivis/render/screen_map.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+namespace ivis::render {
+namespace {
+
+constexpr const char* kLayerNames[] = {"depth", "region", "triangle", "P.X", "P.Y", "P.Z", "scalar", "steps", nullptr};
+
+/// Sample k of the per-pixel R2 pattern (k = 0 is the pixel centre).
+glm::dvec2 sampleOffset(int k)
+{
+    return {std::fmod(0.5 + k * 0.7548776662466927, 1.0), std::fmod(0.5 + k * 0.5698402909980532, 1.0)};
+}
+
+/// Marks direct pixels next to a non-direct one within @a radius pixels and darkens them.
+void drawOutline(core::Image& image, const std::vector<float>& region, int radius)
+{
+    const int w = image.width(), h = image.height();
+    auto isDirect = [&](int x, int y) { return region[std::size_t(y) * w + x] == float(Region::Direct); };
+    std::vector<char> edge(std::size_t(w) * h, 0);
+    tbb::parallel_for(0, h, [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            if (!isDirect(x, y)) continue;
+            for (int dy = -radius; dy <= radius && !edge[std::size_t(y) * w + x]; ++dy)
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (dx * dx + dy * dy > radius * radius) continue;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h || !isDirect(nx, ny)) {
+                        edge[std::size_t(y) * w + x] = 1;
+                        break;
+                    }
+                }
+        }
+    });
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (edge[std::size_t(y) * w + x]) image.blendOver(x, y, glm::vec3(0.05f), 0.85f);
+}
+
+}  // namespace
+
+const char* const* layerNames() { return kLayerNames; }
+
+RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, const RenderOptions& options,
+                         core::Interrupter* interrupter)
+{
+    if (options.samplesPerPixel < 1 || options.samplesPerPixel > 1024)
+        throw ValueError("samples per pixel " + std::to_string(options.samplesPerPixel) + " is out of range (1 to 1024)");
+    const auto start = std::chrono::steady_clock::now();
+    const core::CameraFrame frame(camera, options.width, options.height);
+    const ScreenMap screen(scene, frame, options.method);
+    const Shader shader(scene, frame, options.shading);
+
+    RenderResult result;
+    result.image = core::Image(options.width, options.height);
+    result.layers = core::ImageLayers(options.width, options.height);
+    std::vector<std::vector<float>*> layers;
+    for (const char* const* name = kLayerNames; *name; ++name) layers.push_back(&result.layers.add(*name));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+
+    std::mutex statsMutex;
+    std::atomic<int> rowsDone{0};
+    std::atomic<bool> cancelled{false};
+    if (interrupter) interrupter->start("render");
+    tbb::parallel_for(tbb::blocked_range<int>(0, options.height, 8), [&](const tbb::blocked_range<int>& rows) {
+        if (cancelled) return;
+        DistanceField::Sampler sampler = scene.distance().sampler();
+        RenderStats local;
+        for (int y = rows.begin(); y != rows.end(); ++y) {
+            for (int x = 0; x < options.width; ++x) {
+                glm::vec4 colour(0.0f);
+                const std::size_t index = std::size_t(y) * options.width + x;
+                for (int k = 0; k < options.samplesPerPixel; ++k) {
+                    const glm::dvec2 offset = sampleOffset(k);
+                    const PixelMapping m = screen.map(x + offset.x, y + offset.y, sampler);
+                    bool isNan = false;
+                    colour += shader.shade(m, sampler, isNan);
+                    if (m.launched) {
+                        ++local.raysLaunched;
+                        local.totalSteps += std::size_t(m.steps);
+                        if (m.region == Region::Indirect) ++local.raysLanded;
+                    }
+                    if (k != 0) continue;
+                    const bool shown = m.region != Region::Background;
+                    (m.region == Region::Direct     ? local.pixelsDirect
+                     : m.region == Region::Indirect ? local.pixelsIndirect
+                                                    : local.pixelsBackground)++;
+                    if (isNan) ++local.nanPixels;
+                    (*layers[0])[index] = shown ? m.depth : nan;
+                    (*layers[1])[index] = float(m.region);
+                    (*layers[2])[index] = shown ? float(m.point.triangle) : -1.0f;
+                    (*layers[3])[index] = shown ? m.point.position.x : nan;
+                    (*layers[4])[index] = shown ? m.point.position.y : nan;
+                    (*layers[5])[index] = shown ? m.point.position.z : nan;
+                    (*layers[6])[index] = shown ? scalarAt(scene.field(), m.point) : nan;
+                    (*layers[7])[index] = float(m.steps);
+                }
+                result.image.at(x, y) = colour / float(options.samplesPerPixel);
+            }
+        }
+        {
+            std::lock_guard<std::mutex> lock(statsMutex);
+            RenderStats& s = result.stats;
+            s.pixelsDirect += local.pixelsDirect;
+            s.pixelsIndirect += local.pixelsIndirect;
+            s.pixelsBackground += local.pixelsBackground;
+            s.raysLaunched += local.raysLaunched;
+            s.raysLanded += local.raysLanded;
+            s.totalSteps += local.totalSteps;
+            s.nanPixels += local.nanPixels;
+        }
+        const int done = rowsDone += int(rows.size());
+        if (interrupter && interrupter->wasInterrupted(int(100.0 * done / options.height))) cancelled = true;
+    });
+    if (interrupter) interrupter->end();
+    if (cancelled) throw Cancelled("render cancelled");
+
+    if (options.outline)
+        drawOutline(result.image, result.layers.channel("region"), std::max(1, options.height / 400));
+    if (options.legend && scene.field().hasScalar())
+        core::drawColorBar(result.image, core::colormap(options.shading.colormap), options.shading.range,
+                           options.scalarName, options.units);
+    result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace ivis::render

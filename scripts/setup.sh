@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Shared set-up for scripts/demo.sh and scripts/test.sh: installs missing Debian packages (when
+# root), configures and builds Release into build/. Source it; it defines IVIS_BUILD.
+set -euo pipefail
+
+IVIS_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+IVIS_BUILD=${IVIS_BUILD:-$IVIS_ROOT/build}
+IVIS_PACKAGES=(
+  build-essential cmake ccache pkg-config
+  libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
+  libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+)
+
+ivis_missing_packages() {
+  local missing=()
+  for p in "${IVIS_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  echo "${missing[@]:-}"
+}
+
+ivis_install_packages() {
+  local missing
+  missing=$(ivis_missing_packages)
+  [ -z "$missing" ] && return 0
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "inversevis: missing Debian packages: $missing" >&2
+    echo "inversevis: install them with: sudo apt-get install $missing" >&2
+    exit 1
+  fi
+  echo "inversevis: installing $missing" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  # shellcheck disable=SC2086
+  apt-get install -y -qq --no-install-recommends $missing >/dev/null
+}
+
+ivis_build() {
+  local jobs
+  jobs=$(nproc 2>/dev/null || echo 2)
+  cmake -S "$IVIS_ROOT" -B "$IVIS_BUILD" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake --build "$IVIS_BUILD" -j "$jobs"
+}
+
+ivis_install_packages

@@ -1,0 +1,126 @@
+// Curved rays on the unit sphere against the analytic picture of METHOD.md, and one integrator step
+// against the formula.
+#include "render/scene_fixture.h"
+
+#include <ivis/render/curved_ray.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace ivis::render {
+namespace {
+
+/// Landing points of the curved rays of a column of pixels sweeping from the sphere's silhouette to
+/// past the hull's, camera at (0, 0, 2.5) looking down -z.
+std::vector<CurvedRayEnd> sweep(float alpha, std::vector<glm::vec3>* seeds = nullptr)
+{
+    const auto& fixture = test::sphereScene();
+    auto sampler = fixture.scene->distance().sampler();
+    CurvedRayParams params;
+    params.alpha = alpha;
+    const float eps = landingEpsilon(params, fixture.scene->distance());
+    std::vector<CurvedRayEnd> ends;
+    const glm::vec3 eye(0.0f, 0.0f, 2.5f);
+    for (int i = 0; i <= 200; ++i) {
+        const float angle = glm::radians(20.0f + 15.0f * float(i) / 200.0f);  // sphere edge 23.6, hull 34 deg
+        const glm::vec3 direction(std::sin(angle) * 0.6f, std::sin(angle) * 0.8f, -std::cos(angle));
+        glm::vec3 seed;
+        if (glm::length(glm::cross(direction, eye)) < 1.01f) continue;  // the view ray hits the sphere
+        if (!findHullExit(sampler, eye, direction, params.hullOffset, seed)) continue;
+        glm::vec3 gradient;
+        sampler.phiAndGradient(seed, gradient);
+        ends.push_back(traceCurvedRay(sampler, seed, initialVelocity(gradient, direction, alpha), params, eps));
+        if (seeds) seeds->push_back(seed);
+    }
+    return ends;
+}
+
+TEST(CurvedRay, HullExitIsFarthestCrossingOfAnalyticHull)
+{
+    const auto& fixture = test::sphereScene();
+    auto sampler = fixture.scene->distance().sampler();
+    const glm::vec3 eye(0.0f, 0.0f, 2.5f);
+    const glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.0f, -1.0f));
+    glm::vec3 seed;
+    ASSERT_TRUE(findHullExit(sampler, eye, direction, 0.4f, seed));
+    // Far root of |eye + t d| = 1.4.
+    const float b = glm::dot(eye, direction), c = glm::dot(eye, eye) - 1.4f * 1.4f;
+    const float tFar = -b + std::sqrt(b * b - c);
+    EXPECT_LT(glm::length(seed - (eye + tFar * direction)), 0.01f);
+    EXPECT_FALSE(findHullExit(sampler, eye, glm::normalize(glm::vec3(1.0f, 0.0f, -0.5f)), 0.4f, seed));
+}
+
+TEST(CurvedRay, SmallAlphaFallsRadiallyFromTheSeed)
+{
+    std::vector<glm::vec3> seeds;
+    const std::vector<CurvedRayEnd> ends = sweep(0.001f, &seeds);
+    ASSERT_GT(ends.size(), 50u);
+    float zMin = 1.0f, zMax = -1.0f;
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+        ASSERT_TRUE(ends[i].landed);
+        EXPECT_LT(glm::length(ends[i].position - glm::normalize(seeds[i])), 0.02f);
+        zMin = std::min(zMin, ends[i].position.z);
+        zMax = std::max(zMax, ends[i].position.z);
+    }
+    // METHOD.md: alpha ~ 0 lands on the band -0.35 .. 0.52.
+    EXPECT_NEAR(zMin, -0.35f, 0.05f);
+    EXPECT_NEAR(zMax, 0.52f, 0.05f);
+}
+
+TEST(CurvedRay, LargerAlphaLandsDeeperOnTheBack)
+{
+    float previousMeanZ = 1.0f;
+    for (float alpha : {0.05f, 0.2f, 0.5f, 1.0f}) {
+        const std::vector<CurvedRayEnd> ends = sweep(alpha);
+        double sumZ = 0.0;
+        int landed = 0;
+        for (const CurvedRayEnd& end : ends)
+            if (end.landed) {
+                sumZ += end.position.z;
+                ++landed;
+                // Landed means phi < eps = half a voxel (0.0125 here), up to interpolation error.
+                EXPECT_NEAR(glm::length(end.position), 1.0f, 0.0125f + 0.002f);
+            }
+        ASSERT_GT(landed, 50);
+        const float meanZ = float(sumZ / landed);
+        EXPECT_LT(meanZ, previousMeanZ) << "alpha " << alpha;
+        previousMeanZ = meanZ;
+    }
+}
+
+TEST(CurvedRay, OneSymplecticEulerStepMatchesTheFormula)
+{
+    const auto& fixture = test::sphereScene();
+    auto sampler = fixture.scene->distance().sampler();
+    const glm::vec3 p0(0.3f, -0.9f, -0.8f), v0(0.2f, 0.1f, -0.4f);
+    CurvedRayParams params;
+    params.maxSteps = 1;
+    const CurvedRayEnd end = traceCurvedRay(sampler, p0, v0, params, 1e-6f);
+    glm::vec3 gradient;
+    const float phi = sampler.phiAndGradient(p0, gradient);
+    const glm::vec3 v1 = v0 - params.stepSize * gradient;
+    const glm::vec3 p1 = p0 + params.stepSize * phi * v1 / glm::length(v1);
+    EXPECT_EQ(end.steps, 1);
+    EXPECT_FALSE(end.landed);
+    EXPECT_LT(glm::length(end.velocity - v1), 1e-6f);
+    EXPECT_LT(glm::length(end.position - p1), 1e-6f);
+    // On the unit sphere phi = |p| - 1 and grad phi = p / |p|.
+    EXPECT_NEAR(phi, glm::length(p0) - 1.0f, 0.5f * fixture.scene->distance().voxelSize());
+    EXPECT_LT(glm::length(gradient - glm::normalize(p0)), 0.02f);
+}
+
+TEST(CurvedRay, InitialVelocityIsTangentialToTheHull)
+{
+    const glm::vec3 g = glm::normalize(glm::vec3(1.0f, 2.0f, -0.5f));
+    const glm::vec3 r = glm::normalize(glm::vec3(0.1f, -0.3f, -1.0f));
+    const glm::vec3 v = initialVelocity(2.0f * g, r, 0.5f);
+    EXPECT_NEAR(glm::dot(v, g), 0.0f, 1e-6f);
+    EXPECT_LT(glm::length(v - 0.5f * (r - glm::dot(r, g) * g)), 1e-6f);
+}
+
+}  // namespace
+}  // namespace ivis::render

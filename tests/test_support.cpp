@@ -1,0 +1,73 @@
+#include "test_support.h"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace ivis::test {
+namespace fs = std::filesystem;
+
+TempDir::TempDir()
+{
+    static std::atomic<int> counter{0};
+    const fs::path base = fs::temp_directory_path() /
+                          ("ivis-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    fs::create_directories(base);
+    mPath = base.string();
+}
+
+TempDir::~TempDir()
+{
+    std::error_code ignored;
+    fs::remove_all(mPath, ignored);
+}
+
+std::string TempDir::file(const std::string& name) const { return (fs::path(mPath) / name).string(); }
+
+std::string sharedMesh(const std::string& name)
+{
+    const char* env = std::getenv("IVIS_SHARED_DIR");
+    const fs::path shared = env ? fs::path(env) : fs::path(IVIS_SOURCE_DIR) / ".." / "shared";
+    const fs::path path = shared / "meshes" / name;
+    if (!fs::exists(path)) throw std::runtime_error("shared mesh missing: " + path.string());
+    return path.string();
+}
+
+namespace {
+std::string slurp(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+}  // namespace
+
+CliResult runCli(const std::string& arguments)
+{
+    TempDir dir;
+    const std::string out = dir.file("out"), err = dir.file("err");
+    const std::string command = std::string("'") + IVIS_CLI_PATH + "' " + arguments + " >'" + out + "' 2>'" + err + "'";
+    const int raw = std::system(command.c_str());
+    CliResult result;
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    result.out = slurp(out);
+    result.err = slurp(err);
+    return result;
+}
+
+void writeFile(const std::string& path, const std::string& text)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace ivis::test

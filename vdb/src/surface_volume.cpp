@@ -1,0 +1,66 @@
+#include <ivis/vdb/surface_volume.h>
+
+#include <ivis/core/errors.h>
+
+#include <cmath>
+#include <mutex>
+#include <string>
+
+namespace ivis::vdb {
+
+void validate(const VolumeOptions& options)
+{
+    if (options.resolution < 16 || options.resolution > 4096)
+        throw ValueError("volume resolution " + std::to_string(options.resolution) +
+                         " is out of range (16 to 4096)");
+    if (!(options.bandVoxels >= 3.0f) || !std::isfinite(options.bandVoxels) || options.bandVoxels > 64.0f)
+        throw ValueError("narrow band half-width " + std::to_string(options.bandVoxels) +
+                         " voxels is out of range (3 to 64)");
+    if (!(options.farFieldReach > 0.0) || !std::isfinite(options.farFieldReach) || options.farFieldReach > 2.0)
+        throw ValueError("far-field reach " + std::to_string(options.farFieldReach) +
+                         " is out of range (0 to 2 normalised units)");
+    if (options.farFieldResolution < 16 || options.farFieldResolution > 1000)
+        throw ValueError("far-field resolution " + std::to_string(options.farFieldResolution) +
+                         " is out of range (16 to 1000)");
+}
+
+openvdb::math::Transform::Ptr boxTransform(int resolution)
+{
+    const double voxelSize = 2.0 * kBoxHalfExtent / resolution;
+    auto transform = openvdb::math::Transform::createLinearTransform(voxelSize);
+    transform->postTranslate(openvdb::Vec3d(-kBoxHalfExtent + 0.5 * voxelSize));
+    return transform;
+}
+
+void detail::initializeOpenVdb()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+double SurfaceVolume::voxelSize() const { return 2.0 * kBoxHalfExtent / options.resolution; }
+
+std::size_t SurfaceVolume::activeVoxels() const
+{
+    std::size_t count = phi ? phi->activeVoxelCount() : 0;
+    if (farPhi) count += farPhi->activeVoxelCount();
+    return count;
+}
+
+std::size_t SurfaceVolume::memoryBytes() const
+{
+    std::size_t bytes = 0;
+    if (phi) bytes += phi->memUsage();
+    if (triangle) bytes += triangle->memUsage();
+    if (barycentric) bytes += barycentric->memUsage();
+    if (farPhi) bytes += farPhi->memUsage();
+    return bytes;
+}
+
+double SurfaceVolume::reach() const
+{
+    if (farPhi) return options.farFieldReach;
+    return phi ? double(phi->background()) : 0.0;
+}
+
+}  // namespace ivis::vdb

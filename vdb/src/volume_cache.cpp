@@ -1,0 +1,242 @@
+#include <ivis/vdb/volume_cache.h>
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/content_hash.h>
+#include <ivis/core/errors.h>
+#include <ivis/core/log.h>
+
+#include <openvdb/io/File.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace ivis::vdb {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kVersionKey = "ivis_format_version";
+constexpr const char* kMeshHashKey = "ivis_mesh_hash";
+constexpr const char* kResolutionKey = "ivis_resolution";
+constexpr const char* kBandKey = "ivis_band_voxels";
+constexpr const char* kReachKey = "ivis_far_field_reach";
+constexpr const char* kFarResolutionKey = "ivis_far_field_resolution";
+constexpr const char* kUnsignedKey = "ivis_unsigned_distance";
+constexpr const char* kTrianglesKey = "ivis_triangles";
+constexpr const char* kChecksumKey = "ivis_checksum";
+
+/// Hash of a grid's leaf origins, active masks and values: detects corrupted payloads.
+template <typename GridT>
+void hashGrid(const GridT& grid, core::ContentHash& hash)
+{
+    hash.add(grid.getName().data(), grid.getName().size());
+    hash.addValue(grid.background());
+    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+        hash.addValue(leaf->origin());
+        hash.add(&leaf->getValueMask(), sizeof(leaf->getValueMask()));
+        hash.add(leaf->buffer().data(), sizeof(typename GridT::ValueType) * GridT::TreeType::LeafNodeType::SIZE);
+    }
+}
+
+std::string checksum(const SurfaceVolume& volume)
+{
+    core::ContentHash hash;
+    hashGrid(*volume.phi, hash);
+    hashGrid(*volume.triangle, hash);
+    hashGrid(*volume.barycentric, hash);
+    if (volume.farPhi) hashGrid(*volume.farPhi, hash);
+    return hash.hex();
+}
+
+/// The options/mesh facts a cache file was written for.
+struct CacheKey {
+    int version = 0;
+    std::string meshHash;
+    int resolution = 0;
+    float bandVoxels = 0.0f;
+    double reach = 0.0;
+    int farResolution = 0;
+    bool unsignedDistance = false;
+    std::int64_t triangles = 0;
+    std::string checksum;
+};
+
+CacheKey readKey(const openvdb::MetaMap& meta, const std::string& path)
+{
+    try {
+        CacheKey key;
+        key.version = meta.metaValue<openvdb::Int32>(kVersionKey);
+        key.meshHash = meta.metaValue<std::string>(kMeshHashKey);
+        key.resolution = meta.metaValue<openvdb::Int32>(kResolutionKey);
+        key.bandVoxels = meta.metaValue<float>(kBandKey);
+        key.reach = meta.metaValue<double>(kReachKey);
+        key.farResolution = meta.metaValue<openvdb::Int32>(kFarResolutionKey);
+        key.unsignedDistance = meta.metaValue<bool>(kUnsignedKey);
+        key.triangles = meta.metaValue<openvdb::Int64>(kTrianglesKey);
+        key.checksum = meta.metaValue<std::string>(kChecksumKey);
+        return key;
+    } catch (const openvdb::Exception&) {
+        throw InputError(path + ": not an inversevis volume (metadata missing)");
+    }
+}
+
+std::string hexHash(std::uint64_t value)
+{
+    char buffer[17];
+    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(value));
+    return buffer;
+}
+
+/// Opens a volume file and reads only its metadata.
+CacheKey readCacheKey(const std::string& path)
+{
+    detail::initializeOpenVdb();
+    try {
+        openvdb::io::File file(path);
+        file.open(/*delayLoad=*/false);
+        CacheKey key = readKey(*file.getMetadata(), path);
+        file.close();
+        return key;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": corrupt or truncated volume file (" + e.what() + ")");
+    }
+}
+
+/// Why a cache written with @a key does not fit the request ("" when it fits).
+std::string staleReason(const CacheKey& key, const core::TriangleMesh& mesh, const VolumeOptions& options)
+{
+    if (key.version != kVolumeFormatVersion)
+        return "format version " + std::to_string(key.version) + ", expected " + std::to_string(kVolumeFormatVersion);
+    if (key.meshHash != hexHash(core::meshHash(mesh))) return "built from another mesh";
+    if (key.resolution != options.resolution)
+        return "resolution " + std::to_string(key.resolution) + ", requested " + std::to_string(options.resolution);
+    if (key.bandVoxels != options.bandVoxels) return "another band width";
+    if (key.reach != options.farFieldReach || key.farResolution != options.farFieldResolution)
+        return "another far field";
+    if (key.unsignedDistance != usesUnsignedDistance(mesh, options.sign)) return "another distance sign mode";
+    return "";
+}
+
+template <typename GridT>
+typename GridT::Ptr findGrid(const openvdb::GridPtrVecPtr& grids, const std::string& name, const std::string& path)
+{
+    for (const auto& base : *grids)
+        if (base->getName() == name)
+            if (auto grid = openvdb::gridPtrCast<GridT>(base)) return grid;
+    throw InputError(path + ": grid '" + name + "' missing or of the wrong type");
+}
+
+}  // namespace
+
+const char* toString(CacheOutcome outcome)
+{
+    switch (outcome) {
+    case CacheOutcome::Built: return "built";
+    case CacheOutcome::Reused: return "reused";
+    case CacheOutcome::RebuiltStale: return "rebuilt-stale";
+    case CacheOutcome::RebuiltCorrupt: return "rebuilt-corrupt";
+    }
+    return "unknown";
+}
+
+void writeVolume(const SurfaceVolume& volume, const std::string& path)
+{
+    detail::initializeOpenVdb();
+    IVIS_CHECK(volume.phi && volume.triangle && volume.barycentric);
+    openvdb::MetaMap meta;
+    meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kVolumeFormatVersion));
+    meta.insertMeta(kMeshHashKey, openvdb::StringMetadata(hexHash(volume.meshHash)));
+    meta.insertMeta(kResolutionKey, openvdb::Int32Metadata(volume.options.resolution));
+    meta.insertMeta(kBandKey, openvdb::FloatMetadata(volume.options.bandVoxels));
+    meta.insertMeta(kReachKey, openvdb::DoubleMetadata(volume.options.farFieldReach));
+    meta.insertMeta(kFarResolutionKey, openvdb::Int32Metadata(volume.options.farFieldResolution));
+    meta.insertMeta(kUnsignedKey, openvdb::BoolMetadata(volume.unsignedDistance));
+    meta.insertMeta(kTrianglesKey, openvdb::Int64Metadata(openvdb::Int64(volume.triangleCount)));
+    meta.insertMeta(kChecksumKey, openvdb::StringMetadata(checksum(volume)));
+
+    openvdb::GridCPtrVec grids{volume.phi, volume.triangle, volume.barycentric};
+    if (volume.farPhi) grids.push_back(volume.farPhi);
+
+    const fs::path target(path);
+    if (target.has_parent_path()) {
+        std::error_code error;
+        fs::create_directories(target.parent_path(), error);
+    }
+    core::writeAtomically(path, [&](const std::string& temporary) {
+        openvdb::io::File file(temporary);
+        file.write(grids, meta);
+        file.close();
+    });
+}
+
+SurfaceVolume readVolume(const std::string& path)
+{
+    detail::initializeOpenVdb();
+    if (!fs::exists(path)) throw InputError(path + ": file not found");
+    SurfaceVolume volume;
+    CacheKey key;
+    try {
+        openvdb::io::File file(path);
+        file.open(/*delayLoad=*/false);
+        key = readKey(*file.getMetadata(), path);
+        const openvdb::GridPtrVecPtr grids = file.getGrids();
+        file.close();
+        volume.phi = findGrid<openvdb::FloatGrid>(grids, "phi", path);
+        volume.triangle = findGrid<openvdb::Int32Grid>(grids, "triangle", path);
+        volume.barycentric = findGrid<openvdb::Vec3SGrid>(grids, "barycentric", path);
+        for (const auto& base : *grids)
+            if (base->getName() == "far_phi") volume.farPhi = findGrid<openvdb::FloatGrid>(grids, "far_phi", path);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": corrupt or truncated volume file (" + e.what() + ")");
+    }
+    if (key.version != kVolumeFormatVersion)
+        throw InputError(path + ": volume format version " + std::to_string(key.version) + ", expected " +
+                         std::to_string(kVolumeFormatVersion));
+    if (checksum(volume) != key.checksum) throw InputError(path + ": corrupt volume file (checksum mismatch)");
+    volume.options.resolution = key.resolution;
+    volume.options.bandVoxels = key.bandVoxels;
+    volume.options.farFieldReach = key.reach;
+    volume.options.farFieldResolution = key.farResolution;
+    volume.options.sign = key.unsignedDistance ? DistanceSign::Unsigned : DistanceSign::Signed;
+    volume.unsignedDistance = key.unsignedDistance;
+    volume.meshHash = std::stoull(key.meshHash, nullptr, 16);
+    volume.triangleCount = std::size_t(key.triangles);
+    return volume;
+}
+
+SurfaceVolume loadOrBuildVolume(const core::TriangleMesh& mesh, const VolumeOptions& options,
+                                const std::string& path, core::Interrupter* interrupter,
+                                CacheOutcome* outcome, std::string* reason)
+{
+    validate(options);
+    CacheOutcome result = CacheOutcome::Built;
+    std::string why;
+    if (fs::exists(path)) {
+        try {
+            why = staleReason(readCacheKey(path), mesh, options);
+            if (why.empty()) {
+                SurfaceVolume cached = readVolume(path);
+                if (outcome) *outcome = CacheOutcome::Reused;
+                if (reason) reason->clear();
+                return cached;
+            }
+            result = CacheOutcome::RebuiltStale;
+            core::logInfo(path + ": stale volume cache (" + why + "), rebuilding");
+        } catch (const InputError& e) {
+            result = CacheOutcome::RebuiltCorrupt;
+            why = e.what();
+            core::logWarning(why + "; rebuilding");
+        }
+    }
+    SurfaceVolume volume = buildSurfaceVolume(mesh, options, interrupter);
+    writeVolume(volume, path);
+    if (outcome) *outcome = result;
+    if (reason) *reason = why;
+    return volume;
+}
+
+}  // namespace ivis::vdb
