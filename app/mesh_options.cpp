@@ -40,4 +40,11 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
     return (std::filesystem::path(folder) / name).string();
 }
 
+void checkOutputFolder(const std::string& path)
+{
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder))
+        throw InputError(path + ": cannot write (folder '" + folder.string() + "' does not exist)");
+}
+
 }  // namespace ivis::app

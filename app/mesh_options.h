@@ -28,4 +28,9 @@ struct MeshOptions {
 /// @brief Default cache file for a source and resolution inside @a folder: "<stem>.res<N>.vdb".
 std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution);
 
+/// @brief Checks, before any work, that the folder of output file @a path exists (outputs never
+///        create folders, so a mistyped -o leaves nothing behind).
+/// @throw InputError "<path>: cannot write (folder '<folder>' does not exist)"
+void checkOutputFolder(const std::string& path);
+
 }  // namespace ivis::app

@@ -40,9 +40,13 @@ Command addRenderCommand(CLI::App& app)
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
 
     return {command, [options] {
+        for (const std::string& path : {options->output, options->exr, options->statsJson, options->cameraOut})
+            if (!path.empty()) checkOutputFolder(path);
+        // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
-        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const core::Camera camera = options->view.camera();
+        options->view.renderOptions();
+        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
 
         const std::filesystem::path output(options->output);

@@ -28,6 +28,7 @@ Command addSdfCommand(CLI::App& app)
 
     return {command, [options] {
         const auto start = std::chrono::steady_clock::now();
+        if (!options->output.empty()) checkOutputFolder(options->output);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()

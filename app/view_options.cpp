@@ -44,7 +44,7 @@ core::Camera ViewOptions::camera() const
     return camera;
 }
 
-render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
+render::RenderOptions ViewOptions::renderOptions() const
 {
     render::RenderOptions options;
     char extra = 0;
@@ -64,14 +64,20 @@ render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field
     options.method.ring.ringWidth = ringWidth;
     options.shading.colormap = colormap;
     core::colormap(colormap);  // validates the name
-    options.shading.range = range.size() == 2 ? core::scalarRangeFromUser(range[0], range[1])
-                                              : core::scalarRangeFromData(field.values);
+    if (range.size() == 2) options.shading.range = core::scalarRangeFromUser(range[0], range[1]);
     options.shading.shadows = !noShadows;
     options.shading.transparentBackground = transparent;
     options.outline = !noOutline;
     options.legend = !noLegend;
-    options.scalarName = field.name;
     options.units = units;
+    return options;
+}
+
+render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
+{
+    render::RenderOptions options = renderOptions();
+    if (range.size() != 2) options.shading.range = core::scalarRangeFromData(field.values);
+    options.scalarName = field.name;
     return options;
 }
 

@@ -42,7 +42,12 @@ struct ViewOptions {
     void addTo(CLI::App& command);
     /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho.
     core::Camera camera() const;
-    /// @brief Render options for @a field (its scalar range and name feed the colour bar).
+    /// @brief Render options from the flags alone, every value checked, so that a bad flag fails
+    ///        before a mesh is read; the scalar range is --range's (the default when not given).
+    /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
+    render::RenderOptions renderOptions() const;
+    /// @brief Render options for @a field (its scalar range, unless --range is given, and its name
+    ///        feed the colour bar).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
 };

@@ -17,4 +17,7 @@ struct Benchmark {
 /// @brief `inversevis-bench sdf MESH --res N --json`: full volume build vs OpenVDB's bare conversion.
 Benchmark addSdfBenchmark(CLI::App& app);
 
+/// @brief `inversevis-bench render MESH`: frame times and curved-ray steps/s vs a dense array.
+Benchmark addRenderBenchmark(CLI::App& app);
+
 }  // namespace ivis::bench

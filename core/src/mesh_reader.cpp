@@ -1,12 +1,7 @@
 #include <ivis/core/mesh_reader.h>
 
-#include <ivis/core/errors.h>
-
-#include <OpenMesh/Core/IO/IOManager.hh>
-#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
-#include <OpenMesh/Core/IO/reader/OFFReader.hh>
-#include <OpenMesh/Core/Mesh/BaseKernel.hh>
-#include <OpenMesh/Core/System/omstream.hh>
+#include <ivis/core/mesh_layout_check.h>
+#include <ivis/core/raw_mesh_import.h>
 
 #include <glm/geometric.hpp>
 
@@ -14,15 +9,10 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <limits>
-#include <mutex>
-#include <optional>
-#include <sstream>
 #include <string_view>
 #include <system_error>
 #include <tuple>
@@ -31,25 +21,9 @@ namespace ivis::core {
 namespace {
 
 namespace fs = std::filesystem;
-namespace omio = OpenMesh::IO;
-
-// ---------------------------------------------------------------------------------------------
-// Files, formats, tokens
-// ---------------------------------------------------------------------------------------------
-
-enum class Format { Obj, Off, Ply, Stl };
-
-/// Throws the one-line InputError "<path>: <problem>".
-[[noreturn]] void fail(const std::string& path, const std::string& problem)
-{
-    throw InputError(path + ": " + problem);
-}
-
-std::string lowercase(std::string text)
-{
-    for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
+using detail::failInput;
+using detail::MeshFormat;
+using detail::NamedValues;
 
 /// "Permission denied" -> "permission denied".
 std::string systemMessage(int code)
@@ -65,750 +39,24 @@ std::string readFileBytes(const std::string& path)
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory) {
-        fail(path, "cannot read file (" + systemMessage(ec.value()) + ")");
+        failInput(path, "cannot read file (" + systemMessage(ec.value()) + ")");
     }
-    if (!fs::exists(status)) fail(path, "file not found");
-    if (fs::is_directory(status)) fail(path, "is a directory, not a file");
+    if (!fs::exists(status)) failInput(path, "file not found");
+    if (fs::is_directory(status)) failInput(path, "is a directory, not a file");
 
     std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot read file (" + systemMessage(errno) + ")");
+    if (!in) failInput(path, "cannot read file (" + systemMessage(errno) + ")");
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
-    if (size < 0) fail(path, "cannot read file (not a regular file)");
+    if (size < 0) failInput(path, "cannot read file (not a regular file)");
     in.seekg(0);
     std::string data(std::size_t(size), '\0');
-    if (!in.read(data.data(), size)) fail(path, "cannot read file (read error)");
+    if (!in.read(data.data(), size)) failInput(path, "cannot read file (read error)");
     return data;
 }
 
-Format formatOf(const std::string& path)
-{
-    const std::string ext = lowercase(fs::path(path).extension().string());
-    if (ext == ".obj") return Format::Obj;
-    if (ext == ".off") return Format::Off;
-    if (ext == ".ply") return Format::Ply;
-    if (ext == ".stl") return Format::Stl;
-    fail(path, "unknown mesh format '" + ext + "' (expected .obj, .off, .ply, .stl)");
-}
-
-const char* formatName(Format format)
-{
-    static const char* const kNames[] = {"obj", "off", "ply", "stl"};
-    return kNames[int(format)];
-}
-
-/// "not a valid PLY mesh" style name.
-std::string formatLabel(Format format)
-{
-    std::string label = formatName(format);
-    for (char& c : label) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return label;
-}
-
-/// Whitespace-separated tokens and lines of a file held in memory, with the semantics of
-/// `std::istream >> std::string` and `std::getline` that OpenMesh's readers use.
-class TextCursor {
-public:
-    explicit TextCursor(const std::string& text, std::size_t pos = 0) : mText(text), mPos(pos) {}
-
-    /// Next token, or "" at the end of the text.
-    std::string_view token()
-    {
-        while (mPos < mText.size() && std::isspace(static_cast<unsigned char>(mText[mPos]))) ++mPos;
-        const std::size_t begin = mPos;
-        while (mPos < mText.size() && !std::isspace(static_cast<unsigned char>(mText[mPos]))) ++mPos;
-        return std::string_view(mText).substr(begin, mPos - begin);
-    }
-
-    /// Rest of the current line without its newline; moves past the newline.
-    std::string_view line()
-    {
-        const std::size_t begin = mPos;
-        const std::size_t end = std::min(mText.find('\n', mPos), mText.size());
-        mPos = std::min(end + 1, mText.size());
-        return std::string_view(mText).substr(begin, end - begin);
-    }
-
-    bool atEnd() const { return mPos >= mText.size(); }
-    std::size_t pos() const { return mPos; }
-
-private:
-    const std::string& mText;
-    std::size_t mPos;
-};
-
-std::string_view trim(std::string_view text)
-{
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
-    return text;
-}
-
-std::size_t skipDigits(std::string_view text, std::size_t i)
-{
-    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
-    return i;
-}
-
-std::size_t skipSign(std::string_view text) { return !text.empty() && (text[0] == '+' || text[0] == '-'); }
-
-/// [+-]digits: a token `std::istream >> int` consumes whole. Anything it reads only in part
-/// ("2-1" is 2, then -1) would shift every later value, so the layout checks reject it.
-bool isInteger(std::string_view token)
-{
-    const std::size_t start = skipSign(token);
-    return token.size() > start && skipDigits(token, start) == token.size();
-}
-
-/// [+-] digits [. digits] [e [+-] digits]: a token `std::istream >> float` consumes whole
-/// (streams read no hexadecimal, nan or inf).
-bool isDecimal(std::string_view token)
-{
-    std::size_t i = skipSign(token);
-    std::size_t digits = skipDigits(token, i) - i;
-    i += digits;
-    if (i < token.size() && token[i] == '.') {
-        const std::size_t fraction = skipDigits(token, i + 1) - (i + 1);
-        digits += fraction;
-        i += 1 + fraction;
-    }
-    if (digits == 0) return false;
-    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
-        const std::size_t start = i + 1 + skipSign(token.substr(i + 1));
-        i = skipDigits(token, start);
-        if (i == start) return false;
-    }
-    return i == token.size();
-}
-
-/// A number token as a stream reads it into a float.
-struct FloatToken {
-    enum Kind { Finite, NonFinite, NotANumber } kind;
-    double value;
-};
-
-/// Decimal numbers are Finite; nan/inf spellings and float overflow are NonFinite; anything
-/// else, hexadecimal included, is NotANumber.
-FloatToken parseFloatToken(std::string_view token)
-{
-    const std::string text(token);
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (!isDecimal(token)) {
-        const bool spelled = !text.empty() && end == text.c_str() + text.size() && !std::isfinite(value);
-        return {spelled ? FloatToken::NonFinite : FloatToken::NotANumber, value};
-    }
-    const bool fits = std::isfinite(value) && std::abs(value) <= std::numeric_limits<float>::max();
-    return {fits ? FloatToken::Finite : FloatToken::NonFinite, value};
-}
-
-/// A count token as `std::istream >> unsigned` reads it without failing, or nothing.
-std::optional<std::uint32_t> parseCount(std::string_view token)
-{
-    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-    std::uint64_t value = 0;
-    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (token.empty() || ec != std::errc() || end != token.data() + token.size() ||
-        value > std::numeric_limits<std::uint32_t>::max()) {
-        return std::nullopt;
-    }
-    return std::uint32_t(value);
-}
-
-/// Validates a coordinate token, naming the vertex in the error.
-void checkCoordinate(const std::string& path, std::string_view token, const std::string& where)
-{
-    const FloatToken number = parseFloatToken(token);
-    if (number.kind == FloatToken::NonFinite) fail(path, where + " has a non-finite coordinate");
-    if (number.kind == FloatToken::NotANumber) {
-        fail(path, where + " has a non-numeric coordinate '" + std::string(token) + "'");
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Layout checks. OpenMesh 9.0's readers trust the file: a truncated PLY header makes the header
-// loop grow without bound, a property before any element dereferences an empty vector, and a
-// huge vertex count in an OFF/PLY face makes it push billions of handles. Each check walks the
-// file as OpenMesh will, so that every file reaching OpenMesh has counts that match its content.
-// ---------------------------------------------------------------------------------------------
-
-enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-std::optional<PlyType> plyType(std::string_view name)
-{
-    static const std::pair<std::string_view, PlyType> kNames[] = {
-        {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-        {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-        {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-        {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-        {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
-        {"float64", PlyType::Float64}};
-    for (const auto& [text, type] : kNames) {
-        if (text == name) return type;
-    }
-    return std::nullopt;
-}
-
-std::size_t plySize(PlyType type)
-{
-    static const std::size_t kSizes[] = {1, 1, 2, 2, 4, 4, 4, 8};
-    return kSizes[int(type)];
-}
-
-bool isPlyFloat(PlyType type) { return type == PlyType::Float32 || type == PlyType::Float64; }
-
-/// How OpenMesh's PLY reader treats a property.
-enum class PlyRole { Position, Vector, Color, Indices, Custom };
-
-struct PlyProperty {
-    std::string name;
-    PlyType type = PlyType::Float32;     ///< value type (entry type of a list)
-    std::optional<PlyType> countType;    ///< set for list properties
-    PlyRole role = PlyRole::Custom;
-};
-
-struct PlyElement {
-    std::string name;
-    std::uint32_t count = 0;
-    std::vector<PlyProperty> properties;
-};
-
-struct PlyLayout {
-    bool ascii = true;
-    bool bigEndian = false;
-    std::vector<PlyElement> elements;
-    std::size_t bodyOffset = 0;    ///< where the element data starts
-    std::size_t headerTokens = 0;  ///< end of the last header token before end_header
-};
-
-PlyRole plyRole(const std::string& element, const PlyProperty& p)
-{
-    const auto is = [&](std::initializer_list<std::string_view> names) {
-        return std::find(names.begin(), names.end(), p.name) != names.end();
-    };
-    if (element == "vertex" && !p.countType) {
-        if (is({"x", "y", "z"})) return PlyRole::Position;
-        if (is({"nx", "ny", "nz", "u", "v", "s", "t"})) return PlyRole::Vector;
-        if (is({"red", "green", "blue", "alpha", "diffuse_red", "diffuse_green", "diffuse_blue"})) {
-            return PlyRole::Color;
-        }
-    }
-    if (element == "face") {
-        if (p.countType && is({"vertex_index", "vertex_indices"})) return PlyRole::Indices;
-        if (!p.countType && is({"red", "green", "blue", "alpha"})) return PlyRole::Color;
-    }
-    return PlyRole::Custom;
-}
-
-/// Parses the header token by token, exactly as OpenMesh does.
-PlyLayout parsePlyHeader(const std::string& path, const std::string& data)
-{
-    const auto bad = [&](const std::string& why) { fail(path, "not a valid PLY mesh (" + why + ")"); };
-    TextCursor in(data);
-    const std::string_view magic = trim(in.line());
-    if (magic != "ply" && magic != "PLY") fail(path, "not a valid PLY mesh");
-
-    PlyLayout layout;
-    in.token();  // "format"
-    const std::string encoding(in.token());
-    if (parseFloatToken(in.token()).kind != FloatToken::Finite) bad("bad format line");
-    if (encoding == "binary_little_endian" || encoding == "binary_big_endian") {
-        layout.ascii = false;
-        layout.bigEndian = encoding == "binary_big_endian";
-    } else if (encoding != "ascii") {
-        bad("unsupported format '" + encoding + "'");
-    }
-
-    for (;;) {
-        const std::size_t before = in.pos();
-        const std::string_view keyword = in.token();
-        if (keyword.empty()) bad("the header has no end_header");
-        if (keyword == "end_header") {
-            layout.headerTokens = before;
-            if (!layout.ascii) in.line();  // binary data starts on the next line
-            layout.bodyOffset = in.pos();
-            break;
-        }
-        if (keyword == "comment") {
-            in.line();
-        } else if (keyword == "element") {
-            PlyElement element;
-            element.name = in.token();
-            const std::optional<std::uint32_t> count = parseCount(in.token());
-            if (!count) bad("bad count for element '" + element.name + "'");
-            element.count = *count;
-            layout.elements.push_back(std::move(element));
-        } else if (keyword == "property") {
-            if (layout.elements.empty()) bad("property before any element");
-            PlyProperty p;
-            const std::string first(in.token());
-            if (first == "list") {
-                const std::string count(in.token());
-                const std::string entry(in.token());
-                p.name = in.token();
-                // The only list length types OpenMesh 9.0 accepts.
-                if (count != "uint8" && count != "uint16" && count != "uchar" && count != "int") {
-                    bad("unsupported list length type '" + count + "'");
-                }
-                p.countType = plyType(count);
-                if (!plyType(entry)) bad("unknown property type '" + entry + "'");
-                p.type = *plyType(entry);
-            } else {
-                const std::string second(in.token());
-                if (plyType(first)) {
-                    p.type = *plyType(first);
-                    p.name = second;
-                } else if (plyType(second)) {
-                    p.type = *plyType(second);
-                    p.name = first;
-                } else {
-                    bad("unknown property type in 'property " + first + " " + second + "'");
-                }
-            }
-            if (p.name.empty()) bad("the header ends early");
-            p.role = plyRole(layout.elements.back().name, p);
-            layout.elements.back().properties.push_back(std::move(p));
-        }
-        // Any other keyword (obj_info, ...) is skipped one token at a time, as OpenMesh does.
-    }
-    return layout;
-}
-
-/// Rejects property layouts that OpenMesh 9.0 would read misaligned or not at all.
-void checkPlySupport(const std::string& path, const PlyLayout& layout)
-{
-    const auto bad = [&](const std::string& why) { fail(path, "not a valid PLY mesh (" + why + ")"); };
-    bool haveVertex = false;
-    for (const PlyElement& e : layout.elements) {
-        if (e.count > 0 && e.properties.empty()) bad("element '" + e.name + "' has no properties");
-        if (e.name == "vertex") {
-            if (haveVertex) bad("two vertex elements");
-            haveVertex = true;
-            for (const char* axis : {"x", "y", "z"}) {
-                const auto n = std::count_if(e.properties.begin(), e.properties.end(),
-                                             [&](const PlyProperty& p) { return p.name == axis; });
-                if (n != 1) bad("the vertex element needs exactly one property '" + std::string(axis) + "'");
-            }
-        }
-        if (e.name == "face" && !haveVertex) bad("the face element comes before the vertex element");
-        bool afterIndices = false;
-        for (const PlyProperty& p : e.properties) {
-            const std::string what = "property '" + p.name + "' of element '" + e.name + "'";
-            if (p.role == PlyRole::Indices) {
-                if (isPlyFloat(p.type)) bad("vertex indices must be integers");
-                afterIndices = true;
-            } else if (p.countType && e.name != "vertex" && !(e.name == "face" && afterIndices)) {
-                bad("list " + what + " is not supported");
-            }
-            if (!layout.ascii && (p.role == PlyRole::Position || p.role == PlyRole::Vector) &&
-                !isPlyFloat(p.type)) {
-                bad(what + " must be float or double in binary PLY");
-            }
-            if (!layout.ascii && p.role == PlyRole::Color && p.type == PlyType::Float64) {
-                bad(what + " cannot be double in binary PLY");
-            }
-            if (layout.ascii && p.role == PlyRole::Custom && plySize(p.type) == 1) {
-                bad(what + " has an 8-bit type, which ASCII PLY reading does not support");
-            }
-        }
-        if (e.name == "face") break;  // OpenMesh stops after the faces
-    }
-    if (!haveVertex) bad("no vertex element");
-}
-
-/// Reads a binary list length of @a type at @a offset.
-std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType type, bool bigEndian)
-{
-    std::array<unsigned char, 4> bytes{};
-    const std::size_t size = plySize(type);
-    for (std::size_t i = 0; i < size; ++i) {
-        bytes[bigEndian ? size - 1 - i : i] = static_cast<unsigned char>(data[offset + i]);
-    }
-    const std::uint32_t raw = bytes[0] | (bytes[1] << 8) | (bytes[2] << 16) | (std::uint32_t(bytes[3]) << 24);
-    return type == PlyType::Int32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
-}
-
-/// Checks that OpenMesh reads an ASCII value whole, into the C++ type it uses for that property:
-/// float for positions, normals, texture coordinates and float colours, the declared type for
-/// other properties, and an integer for everything else.
-void checkPlyValue(const std::string& path, std::string_view token, const PlyProperty& p,
-                   const std::string& where)
-{
-    if (p.role == PlyRole::Position) return checkCoordinate(path, token, where);
-    const bool asFloat = p.role == PlyRole::Vector ||
-                         (p.role == PlyRole::Color ? p.type == PlyType::Float32 : isPlyFloat(p.type));
-    if (asFloat ? isDecimal(token) : isInteger(token)) return;
-    const bool nonFinite = parseFloatToken(token).kind == FloatToken::NonFinite;
-    fail(path, where + " has " + (nonFinite ? "a non-finite" : "an invalid") + " value '" +
-                   std::string(token) + "' for property '" + p.name + "'" +
-                   (nonFinite ? " (ASCII PLY cannot hold nan or inf)" : ""));
-}
-
-/// Walks the element data up to the faces: every value present, list lengths sane, ASCII values
-/// readable whole.
-void checkPlyBody(const std::string& path, const std::string& data, const PlyLayout& layout)
-{
-    const auto truncated = [&] { fail(path, "not a valid PLY mesh (the file is truncated)"); };
-    TextCursor text(data, layout.bodyOffset);
-    std::size_t offset = layout.bodyOffset;
-    if (offset > data.size()) truncated();
-
-    // Consumes one value; returns its ASCII token ("" for binary).
-    const auto value = [&](PlyType type) -> std::string_view {
-        if (layout.ascii) {
-            const std::string_view token = text.token();
-            if (token.empty()) truncated();
-            return token;
-        }
-        if (data.size() - offset < plySize(type)) truncated();
-        offset += plySize(type);
-        return {};
-    };
-    const auto listLength = [&](PlyType type) -> std::uint64_t {
-        if (layout.ascii) {
-            const std::optional<std::uint32_t> n = parseCount(value(type));
-            if (!n) fail(path, "not a valid PLY mesh (bad list length)");
-            return *n;
-        }
-        const std::size_t at = offset;
-        value(type);
-        const std::int64_t n = binaryCount(data, at, type, layout.bigEndian);
-        if (n < 0) fail(path, "not a valid PLY mesh (negative list length)");
-        return std::uint64_t(n);
-    };
-
-    for (const PlyElement& e : layout.elements) {
-        // OpenMesh reads other elements as text it skips.
-        const bool checked = layout.ascii && (e.name == "vertex" || e.name == "face");
-        for (std::uint32_t r = 0; r < e.count; ++r) {
-            const std::string where = e.name + " " + std::to_string(r);
-            for (const PlyProperty& p : e.properties) {
-                if (!p.countType) {
-                    const std::string_view token = value(p.type);
-                    if (checked) checkPlyValue(path, token, p, where);
-                    continue;
-                }
-                const std::uint64_t n = listLength(*p.countType);
-                if (!layout.ascii) {
-                    if (n > (data.size() - offset) / plySize(p.type)) truncated();
-                    offset += n * plySize(p.type);
-                } else {
-                    for (std::uint64_t k = 0; k < n; ++k) {
-                        const std::string_view token = value(p.type);
-                        if (checked) checkPlyValue(path, token, p, where);
-                    }
-                }
-            }
-        }
-        if (e.name == "face") break;
-    }
-}
-
-/// Checks a PLY file and returns its face count. OpenMesh starts binary data 12 bytes (14 with
-/// CRLF) past the end of the last header token before end_header, which is off when a comment
-/// line or trailing blanks precede the data; @a data then gets that canonical tail.
-std::size_t preparePly(const std::string& path, std::string& data)
-{
-    const PlyLayout layout = parsePlyHeader(path, data);
-    checkPlySupport(path, layout);
-    checkPlyBody(path, data, layout);
-    if (!layout.ascii && data.compare(layout.headerTokens, layout.bodyOffset - layout.headerTokens,
-                                      "\nend_header\n") != 0) {
-        data = data.substr(0, layout.headerTokens) + "\nend_header\n" + data.substr(layout.bodyOffset);
-    }
-    for (const PlyElement& e : layout.elements) {
-        if (e.name == "face") return e.count;
-    }
-    return 0;
-}
-
-/// ASCII OFF as OpenMesh reads it: header line, counts, per vertex 3 (6 with N) numbers and the
-/// rest of the line, per face a length and that many indices (and the rest of the line with C).
-std::size_t checkOff(const std::string& path, const std::string& data)
-{
-    const auto truncated = [&] { fail(path, "not a valid OFF mesh (the file is truncated)"); };
-    TextCursor in(data);
-    const std::string_view header = in.line();
-    std::size_t i = header.compare(0, 2, "ST") == 0 ? 2 : 0;
-    const bool colors = i < header.size() && header[i] == 'C';
-    i += colors;
-    const bool normals = i < header.size() && header[i] == 'N';
-    i += normals;
-    if (i < header.size() && (header[i] == '4' || header[i] == 'n')) {
-        fail(path, "not a valid OFF mesh (only 3D vertices are supported)");
-    }
-    if (header.compare(i, 3, "OFF") != 0) fail(path, "not a valid OFF mesh");
-    if (header.find("BINARY", i) != std::string_view::npos) fail(path, "binary OFF is not supported");
-
-    std::array<std::uint32_t, 3> counts{};  // vertices, faces, edges
-    for (std::uint32_t& count : counts) {
-        const std::optional<std::uint32_t> n = parseCount(in.token());
-        if (!n) fail(path, "not a valid OFF mesh (bad vertex/face/edge counts)");
-        count = *n;
-    }
-    for (std::uint32_t v = 0; v < counts[0]; ++v) {
-        for (int k = 0; k < (normals ? 6 : 3); ++k) {
-            const std::string_view token = in.token();
-            if (token.empty()) truncated();
-            if (k < 3) {
-                checkCoordinate(path, token, "vertex " + std::to_string(v));
-            } else if (!isDecimal(token)) {
-                fail(path, "vertex " + std::to_string(v) + " has an invalid normal '" +
-                               std::string(token) + "'");
-            }
-        }
-        in.line();
-    }
-    for (std::uint32_t f = 0; f < counts[1]; ++f) {
-        const std::string_view length = in.token();
-        if (length.empty()) truncated();
-        const std::optional<std::uint32_t> n = parseCount(length);
-        if (!n) {
-            fail(path, "not a valid OFF mesh (face " + std::to_string(f) + " has length '" +
-                           std::string(length) + "')");
-        }
-        for (std::uint32_t k = 0; k < *n; ++k) {
-            const std::string_view index = in.token();
-            if (index.empty()) truncated();
-            if (!isInteger(index)) {
-                fail(path, "face " + std::to_string(f) + " has an invalid index '" +
-                               std::string(index) + "'");
-            }
-        }
-        if (colors) in.line();
-    }
-    return counts[1];
-}
-
-/// Checks every "v" line (OpenMesh silently skips unreadable ones, shifting all later indices)
-/// and returns the number of "f" lines. OBJ numbering is 1-based.
-std::size_t checkObj(const std::string& path, const std::string& data)
-{
-    TextCursor lines(data);
-    std::size_t vertices = 0;
-    std::size_t faces = 0;
-    while (!lines.atEnd()) {
-        const std::string content(trim(lines.line()));
-        TextCursor in(content);
-        const std::string_view keyword = in.token();
-        if (keyword == "f") ++faces;
-        if (keyword != "v") continue;
-        const std::string where = "vertex " + std::to_string(++vertices);
-        for (int k = 0; k < 3; ++k) {
-            const std::string_view token = in.token();
-            if (token.empty()) fail(path, where + " has fewer than three coordinates");
-            checkCoordinate(path, token, where);
-        }
-    }
-    return faces;
-}
-
-struct StlFacts {
-    bool binary = false;
-    std::size_t facets = 0;
-};
-
-/// Binary when the size matches the triangle count (OpenMesh's test); otherwise ASCII, where
-/// OpenMesh takes the three lines after each "outer loop" line as the corners.
-StlFacts checkStl(const std::string& path, const std::string& data)
-{
-    if (data.size() >= 84) {
-        std::uint32_t count = 0;
-        for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(data[80 + i]);
-        if (84 + 50 * std::uint64_t(count) == data.size()) return {true, count};
-    }
-    const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
-    if (lowercase(start) != "solid") {
-        fail(path, "not a valid STL mesh");
-    }
-    TextCursor lines(data);
-    std::size_t facets = 0;
-    while (!lines.atEnd()) {
-        const std::string_view line = lines.line();
-        if (line.find("outer") == std::string_view::npos && line.find("OUTER") == std::string_view::npos) {
-            continue;
-        }
-        const std::string where = "facet " + std::to_string(facets++);
-        for (int corner = 0; corner < 3; ++corner) {
-            if (lines.atEnd()) fail(path, "not a valid STL mesh (the file is truncated)");
-            const std::string content(lines.line());
-            TextCursor in(content);
-            in.token();  // "vertex"
-            for (int k = 0; k < 3; ++k) {
-                const std::string_view token = in.token();
-                if (token.empty()) fail(path, where + " has a corner with fewer than three coordinates");
-                checkCoordinate(path, token, where);
-            }
-        }
-    }
-    return {false, facets};
-}
-
-// ---------------------------------------------------------------------------------------------
-// OpenMesh import
-// ---------------------------------------------------------------------------------------------
-
-/// Property storage without connectivity: the PLY reader adds custom per-vertex and per-face
-/// properties to the importer's kernel by name (Options::Custom), one slot per element.
-class PropertyKernel final : public OpenMesh::BaseKernel {
-public:
-    OpenMesh::VertexHandle addVertex()
-    {
-        vprops_resize(++mVertices);
-        return OpenMesh::VertexHandle(int(mVertices - 1));
-    }
-    OpenMesh::FaceHandle addFace()
-    {
-        fprops_resize(++mFaces);
-        return OpenMesh::FaceHandle(int(mFaces - 1));
-    }
-    size_t n_vertices() const override { return mVertices; }
-    size_t n_faces() const override { return mFaces; }
-
-private:
-    std::size_t mVertices = 0;
-    std::size_t mFaces = 0;
-};
-
-/// Importer that records positions and faces as raw index lists: no half-edge topology, so
-/// OpenMesh never refuses a non-manifold face, and out-of-range indices reach us instead of being
-/// dropped. If a token could not be parsed, OpenMesh's readers carry on with stale values; the
-/// importer reports the failed stream at the next vertex or face instead.
-class RawImporter final : public omio::BaseImporter {
-public:
-    RawImporter(const std::istream& stream, std::string path, bool oneBased)
-        : mStream(stream), mPath(std::move(path)), mOneBased(oneBased)
-    {
-    }
-
-    const std::vector<OpenMesh::Vec3f>& positions() const { return mPositions; }
-    const PropertyKernel& properties() const { return mProperties; }
-    std::size_t faceCount() const { return mFaceEnds.size(); }
-    /// Corner indices of face @a f as the file gives them (0-based, possibly out of range).
-    std::pair<const int*, const int*> face(std::size_t f) const
-    {
-        const std::size_t begin = f == 0 ? 0 : mFaceEnds[f - 1];
-        return {mCorners.data() + begin, mCorners.data() + mFaceEnds[f]};
-    }
-
-    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override
-    {
-        checkStream("vertex", mPositions.size());
-        mPositions.push_back(p);
-        return mProperties.addVertex();
-    }
-    OpenMesh::VertexHandle add_vertex() override { return add_vertex(OpenMesh::Vec3f(0.0f)); }
-    void set_point(OpenMesh::VertexHandle v, const OpenMesh::Vec3f& p) override
-    {
-        checkStream("vertex", std::size_t(v.idx()));
-        IVIS_CHECK(v.idx() >= 0 && std::size_t(v.idx()) < mPositions.size());
-        mPositions[std::size_t(v.idx())] = p;
-    }
-    OpenMesh::FaceHandle add_face(const VHandles& corners) override
-    {
-        checkStream("face", mFaceEnds.size());
-        for (const OpenMesh::VertexHandle v : corners) mCorners.push_back(v.idx());
-        mFaceEnds.push_back(mCorners.size());
-        return mProperties.addFace();  // a real handle, so PLY face properties have a slot
-    }
-    OpenMesh::BaseKernel* kernel() override { return &mProperties; }
-    size_t n_vertices() const override { return mPositions.size(); }
-    size_t n_faces() const override { return mFaceEnds.size(); }
-    size_t n_edges() const override { return 0; }
-
-    // Everything below is data we do not keep (normals, colours, texture coordinates, status)
-    // or half-edge connectivity, which only the OM format writes directly.
-    OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle, OpenMesh::VertexHandle) override
-    {
-        return OpenMesh::HalfedgeHandle();
-    }
-    OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return OpenMesh::FaceHandle(); }
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                            const std::vector<OpenMesh::Vec2f>&) override {}
-    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
-                            const std::vector<OpenMesh::Vec3f>&) override {}
-    void set_face_texindex(OpenMesh::FaceHandle, int) override {}
-    void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
-    void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
-    void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc&) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc&) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
-    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f&) override {}
-    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f&) override {}
-    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
-    void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
-    void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
-    void request_face_texcoords2D() override {}
-    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f&) override {}
-    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f&) override {}
-    void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc&) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc&) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f&) override {}
-    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f&) override {}
-    void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
-    void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc&) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc&) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
-    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f&) override {}
-    void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void add_texture_information(int, std::string) override {}
-
-private:
-    void checkStream(const char* element, std::size_t index) const
-    {
-        if (!mStream.fail()) return;
-        fail(mPath, "cannot read " + std::string(element) + " " + std::to_string(index + mOneBased) +
-                        " (a value is missing, not a number or out of range)");
-    }
-
-    const std::istream& mStream;
-    std::string mPath;
-    bool mOneBased;
-    std::vector<OpenMesh::Vec3f> mPositions;
-    PropertyKernel mProperties;
-    std::vector<int> mCorners;
-    std::vector<std::size_t> mFaceEnds;
-};
-
-/// Silences OpenMesh's log streams while alive and restores their previous state.
-class QuietOpenMesh {
-public:
-    QuietOpenMesh()
-    {
-        for (std::size_t i = 0; i < kStreams.size(); ++i) {
-            mWasEnabled[i] = kStreams[i]().is_enabled();
-            kStreams[i]().disable();
-        }
-    }
-    ~QuietOpenMesh()
-    {
-        for (std::size_t i = 0; i < kStreams.size(); ++i) {
-            if (mWasEnabled[i]) kStreams[i]().enable();
-        }
-    }
-    QuietOpenMesh(const QuietOpenMesh&) = delete;
-    QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
-
-private:
-    static constexpr std::array<OpenMesh::mostream& (*)(), 3> kStreams{&omerr, &omlog, &omout};
-    std::array<bool, 3> mWasEnabled{};
-};
-
-/// OpenMesh's reader singletons and log streams are process-wide state.
-std::mutex gOpenMeshMutex;
-
-struct NamedValues {
-    std::string name;
-    std::vector<float> values;
-};
-
 struct LoadedMesh {
-    Format format = Format::Ply;
+    MeshFormat format = MeshFormat::Ply;
     TriangleMesh mesh;
     std::size_t degenerateDropped = 0;
     std::vector<NamedValues> scalars;  ///< every per-vertex float/double property, file order
@@ -823,29 +71,28 @@ bool isDegenerate(const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& 
     return glm::dot(n, n) == 0.0;
 }
 
-/// Positions, fan-triangulated faces and scalar properties from the importer.
-LoadedMesh collect(const std::string& path, const RawImporter& importer, bool oneBased,
-                   std::size_t facesInFile)
+/// Positions, fan-triangulated faces and scalar properties from the raw import, validated.
+LoadedMesh collect(const std::string& path, detail::RawMesh raw, bool oneBased, std::size_t facesInFile)
 {
     LoadedMesh out;
-    const std::size_t vertexCount = importer.positions().size();
+    const std::size_t vertexCount = raw.positions.size();
     for (std::size_t i = 0; i < vertexCount; ++i) {
-        const OpenMesh::Vec3f& p = importer.positions()[i];
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
-            fail(path, "vertex " + std::to_string(i + oneBased) + " has a non-finite coordinate");
+        const glm::vec3& p = raw.positions[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            failInput(path, "vertex " + std::to_string(i + oneBased) + " has a non-finite coordinate");
         }
-        out.mesh.positions.emplace_back(p[0], p[1], p[2]);
     }
+    out.mesh.positions = std::move(raw.positions);
 
     // Faces OpenMesh skipped itself (OBJ/STL faces with repeated corners) count as degenerate.
-    out.degenerateDropped = facesInFile > importer.faceCount() ? facesInFile - importer.faceCount() : 0;
-    for (std::size_t f = 0; f < importer.faceCount(); ++f) {
-        const auto [begin, end] = importer.face(f);
+    out.degenerateDropped = facesInFile > raw.faceCount() ? facesInFile - raw.faceCount() : 0;
+    for (std::size_t f = 0; f < raw.faceCount(); ++f) {
+        const auto [begin, end] = raw.face(f);
         for (const int* c = begin; c != end; ++c) {
             if (*c < 0 || std::size_t(*c) >= vertexCount) {
-                fail(path, "face " + std::to_string(f + oneBased) + " references vertex " +
-                               std::to_string(std::int64_t(*c) + oneBased) + " but the mesh has " +
-                               std::to_string(vertexCount) + " vertices");
+                failInput(path, "face " + std::to_string(f + oneBased) + " references vertex " +
+                                    std::to_string(std::int64_t(*c) + oneBased) + " but the mesh has " +
+                                    std::to_string(vertexCount) + " vertices");
             }
         }
         if (end - begin < 3) {
@@ -862,24 +109,10 @@ LoadedMesh collect(const std::string& path, const RawImporter& importer, bool on
             }
         }
     }
-    if (out.mesh.triangles.empty()) fail(path, "mesh has no triangles");
+    if (out.mesh.triangles.empty()) failInput(path, "mesh has no triangles");
     out.mesh.dataTriangleCount = out.mesh.triangles.size();
 
-    const PropertyKernel& kernel = importer.properties();
-    for (auto it = kernel.vprops_begin(); it != kernel.vprops_end(); ++it) {
-        if (*it == nullptr) continue;
-        NamedValues scalar{(*it)->name(), {}};
-        OpenMesh::VPropHandleT<float> asFloat;
-        OpenMesh::VPropHandleT<double> asDouble;
-        if (kernel.get_property_handle(asFloat, scalar.name)) {
-            for (const float v : kernel.property(asFloat).data_vector()) scalar.values.push_back(v);
-        } else if (kernel.get_property_handle(asDouble, scalar.name)) {
-            for (const double v : kernel.property(asDouble).data_vector()) scalar.values.push_back(float(v));
-        } else {
-            continue;
-        }
-        out.scalars.push_back(std::move(scalar));
-    }
+    out.scalars = std::move(raw.scalars);
     return out;
 }
 
@@ -887,39 +120,10 @@ LoadedMesh collect(const std::string& path, const RawImporter& importer, bool on
 LoadedMesh loadMesh(const std::string& path)
 {
     std::string data = readFileBytes(path);
-    const Format format = formatOf(path);
-    std::size_t facesInFile = 0;
-    bool binaryStl = false;
-    switch (format) {
-    case Format::Ply: facesInFile = preparePly(path, data); break;
-    case Format::Off: facesInFile = checkOff(path, data); break;
-    case Format::Obj: facesInFile = checkObj(path, data); break;
-    case Format::Stl: {
-        const StlFacts facts = checkStl(path, data);
-        facesInFile = facts.facets;
-        binaryStl = facts.binary;
-        break;
-    }
-    }
-
-    // OpenMesh parses exactly the bytes that were checked.
-    std::istringstream stream(data);
-    std::string().swap(data);
-    const bool oneBased = format == Format::Obj;
-    RawImporter importer(stream, path, oneBased);
-    omio::Options options = omio::Options::Custom;
-    if (binaryStl) options += omio::Options::Binary;
-    bool ok = false;
-    {
-        std::lock_guard<std::mutex> lock(gOpenMeshMutex);
-        QuietOpenMesh quiet;
-        // The OFF stream reader takes its binary/normal/colour flags from the last header check.
-        ok = (format != Format::Off || omio::OFFReader().can_u_read(path)) &&
-             omio::IOManager().read(stream, formatName(format), importer, options);
-    }
-    if (!ok) fail(path, "not a valid " + formatLabel(format) + " mesh");
-
-    LoadedMesh loaded = collect(path, importer, oneBased, facesInFile);
+    const MeshFormat format = detail::meshFormat(path);
+    const detail::MeshLayout layout = detail::checkMeshLayout(path, format, data);
+    detail::RawMesh raw = detail::importRawMesh(path, format, layout.binaryStl, std::move(data));
+    LoadedMesh loaded = collect(path, std::move(raw), format == MeshFormat::Obj, layout.facesInFile);
     loaded.format = format;
     return loaded;
 }
@@ -930,7 +134,7 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options,
                       std::size_t* degenerateDropped)
 {
     if (!options.scalarName.empty() && !options.scalarFile.empty()) {
-        fail(path, "choose either a scalar name or a scalar file, not both");
+        failInput(path, "choose either a scalar name or a scalar file, not both");
     }
     LoadedMesh loaded = loadMesh(path);
     SurfaceField field;
@@ -942,8 +146,8 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options,
         if (it == loaded.scalars.end()) {
             std::string available;
             for (const NamedValues& s : loaded.scalars) available += (available.empty() ? "" : ", ") + s.name;
-            fail(path, "no per-vertex scalar '" + options.scalarName + "'; available: " +
-                           (available.empty() ? "none" : available));
+            failInput(path, "no per-vertex scalar '" + options.scalarName + "'; available: " +
+                                (available.empty() ? "none" : available));
         }
         field.values = std::move(it->values);
         field.name = options.scalarName;
@@ -960,7 +164,7 @@ MeshInfo describeMesh(const std::string& path)
     const LoadedMesh loaded = loadMesh(path);
     MeshInfo info;
     info.path = path;
-    info.format = formatName(loaded.format);
+    info.format = detail::formatName(loaded.format);
     info.vertices = loaded.mesh.positions.size();
     info.triangles = loaded.mesh.triangles.size();
     info.degenerateDropped = loaded.degenerateDropped;
@@ -982,19 +186,19 @@ std::vector<float> readScalarFile(const std::string& path, std::size_t expectedC
 {
     const std::string data = readFileBytes(path);
     std::vector<float> values;
-    TextCursor in(data);
+    detail::TextCursor in(data);
     for (std::string_view token = in.token(); !token.empty(); token = in.token()) {
         const std::string where = "value " + std::to_string(values.size()) + " '" + std::string(token) + "'";
-        const FloatToken number = parseFloatToken(token);
-        if (number.kind == FloatToken::NotANumber) fail(path, where + " is not a number");
-        if (number.kind == FloatToken::NonFinite && !std::isnan(number.value)) {
-            fail(path, where + " is not finite (only nan is allowed)");
+        const detail::FloatToken number = detail::parseFloatToken(token);
+        if (number.kind == detail::FloatToken::NotANumber) failInput(path, where + " is not a number");
+        if (number.kind == detail::FloatToken::NonFinite && !std::isnan(number.value)) {
+            failInput(path, where + " is not finite (only nan is allowed)");
         }
         values.push_back(float(number.value));
     }
     if (values.size() != expectedCount) {
-        fail(path, "expected " + std::to_string(expectedCount) + " scalar values (one per vertex), found " +
-                       std::to_string(values.size()));
+        failInput(path, "expected " + std::to_string(expectedCount) + " scalar values (one per vertex), found " +
+                            std::to_string(values.size()));
     }
     return values;
 }

@@ -2,6 +2,8 @@
 
 #include <ivis/vdb/surface_volume.h>
 
+#include <glm/common.hpp>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -10,18 +12,19 @@
 namespace ivis::render {
 namespace {
 
-/// Parameter interval of the ray inside the volume's box [-2.5,2.5]^3 (slab test).
-bool boxInterval(const glm::vec3& origin, const glm::vec3& direction, float& tEnter, float& tExit)
+/// Parameter interval (t >= 0) of the ray inside @a box (slab test); false when it misses.
+bool boxInterval(const glm::vec3& origin, const glm::vec3& direction, const core::Bounds3& box, float& tEnter,
+                 float& tExit)
 {
-    const float half = float(vdb::kBoxHalfExtent);
     tEnter = 0.0f;
     tExit = 1e30f;
     for (int a = 0; a < 3; ++a) {
+        const float lo = float(box.lo[a]), hi = float(box.hi[a]);
         if (std::abs(direction[a]) < 1e-12f) {
-            if (origin[a] < -half || origin[a] > half) return false;
+            if (origin[a] < lo || origin[a] > hi) return false;
             continue;
         }
-        float t0 = (-half - origin[a]) / direction[a], t1 = (half - origin[a]) / direction[a];
+        float t0 = (lo - origin[a]) / direction[a], t1 = (hi - origin[a]) / direction[a];
         if (t0 > t1) std::swap(t0, t1);
         tEnter = std::max(tEnter, t0);
         tExit = std::min(tExit, t1);
@@ -31,11 +34,20 @@ bool boxInterval(const glm::vec3& origin, const glm::vec3& direction, float& tEn
 
 }  // namespace
 
+core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize)
+{
+    core::Bounds3 box = core::bounds(mesh);
+    const double grow = double(hullOffset) + voxelSize, half = vdb::kBoxHalfExtent;
+    box.lo = glm::max(box.lo - grow, glm::dvec3(-half));
+    box.hi = glm::min(box.hi + grow, glm::dvec3(half));
+    return box;
+}
+
 bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
-                  float hullOffset, glm::vec3& seed)
+                  float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed)
 {
     float tEnter, tExit;
-    if (!boxInterval(origin, direction, tEnter, tExit)) return false;
+    if (!boxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float minStep = 1e-4f;
     float tOutside = tExit;  // last parameter known to be outside the hull (phi > phi0)
     float t = tExit;
@@ -43,7 +55,7 @@ bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, cons
         const float excess = sampler.phi(origin + t * direction) - hullOffset;
         if (excess <= 0.0f) {
             float lo = t, hi = tOutside;  // phi(lo) <= phi0 < phi(hi)
-            for (int i = 0; i < 24; ++i) {
+            while (hi - lo > 1e-5f) {
                 const float mid = 0.5f * (lo + hi);
                 (sampler.phi(origin + mid * direction) <= hullOffset ? lo : hi) = mid;
             }
@@ -67,30 +79,6 @@ glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirect
 float landingEpsilon(const CurvedRayParams& params, const DistanceField& field)
 {
     return params.landingEpsilon > 0.0f ? params.landingEpsilon : 0.5f * field.voxelSize();
-}
-
-CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
-                            const CurvedRayParams& params, float epsilon)
-{
-    CurvedRayEnd end;
-    glm::vec3 p = seed, v = velocity, gradient;
-    const float escape = sampler.field().reach() * 0.999f;
-    for (int step = 0; step < params.maxSteps; ++step) {
-        const float phi = sampler.phiAndGradient(p, gradient);
-        if (phi < epsilon) {
-            end.landed = true;
-            break;
-        }
-        if (phi >= escape) break;
-        v -= params.stepSize * gradient;
-        const float speed = glm::length(v);
-        const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
-        p += params.stepSize * phi * heading;
-        ++end.steps;
-    }
-    end.position = p;
-    end.velocity = v;
-    return end;
 }
 
 }  // namespace ivis::render

@@ -1,6 +1,9 @@
 #include <ivis/render/dense_grid.h>
 
+#include <ivis/core/errors.h>
+
 #include <cmath>
+#include <utility>
 
 namespace ivis::render {
 
@@ -40,6 +43,18 @@ DenseGrid::DenseGrid(const openvdb::FloatGrid& grid)
     for (int z = box.min().z(); z <= box.max().z(); ++z)
         for (int y = box.min().y(); y <= box.max().y(); ++y)
             for (int x = box.min().x(); x <= box.max().x(); ++x) mValues[i++] = accessor.getValue({x, y, z});
+}
+
+DenseGrid::DenseGrid(const glm::vec3& origin, const std::array<int, 3>& dims, float voxelSize,
+                     std::vector<float> values, float background)
+    : mValues(std::move(values)),
+      mOrigin(origin),
+      mVoxelSize(voxelSize),
+      mInvVoxelSize(1.0f / voxelSize),
+      mBackground(background)
+{
+    for (int a = 0; a < 3; ++a) mDims[a] = dims[a];
+    IVIS_CHECK(mValues.size() == std::size_t(dims[0]) * dims[1] * dims[2]);
 }
 
 bool DenseGrid::locate(const glm::vec3& p, std::size_t& base, glm::vec3& t) const

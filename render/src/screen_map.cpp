@@ -7,11 +7,16 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace ivis::render {
 
 ScreenMap::ScreenMap(const RenderScene& scene, const core::CameraFrame& frame, const MethodParams& params)
-    : mScene(scene), mFrame(frame), mParams(params), mEpsilon(landingEpsilon(params.curved, scene.distance()))
+    : mScene(scene),
+      mFrame(frame),
+      mParams(params),
+      mHullBox(hullBounds(scene.mesh(), params.curved.hullOffset, scene.distance().voxelSize())),
+      mEpsilon(landingEpsilon(params.curved, scene.distance()))
 {
     if (params.method == Method::Neugebauer) mRings = layoutRings(frame, scene.mesh(), params.ring);
 }
@@ -46,24 +51,47 @@ PixelMapping ScreenMap::landedAt(const glm::vec3& p, const glm::vec3& arrival, i
     PixelMapping result;
     result.launched = true;
     result.steps = steps;
-    const int triangle = sampler.nearestTriangle(p);
+    // The triangle stored at the nearest voxel is closest to that voxel's centre; its distance to p
+    // bounds a BVH search that returns the exact closest surface point of p.
+    const int stored = sampler.nearestTriangle(p);
+    const double bound = stored >= 0 ? glm::length(projectOntoTriangle(mScene.mesh(), stored, p).position - p)
+                                     : std::numeric_limits<double>::infinity();
+    int triangle = -1;
+    const core::TrianglePoint closest = mScene.bvh().closestPoint(glm::dvec3(p), bound, triangle);
     if (triangle < 0) return result;
     result.region = Region::Indirect;
-    result.point = projectOntoTriangle(mScene.mesh(), triangle, p);
+    result.point = {triangle, glm::vec3(closest.barycentric), glm::vec3(closest.point)};
     result.depth = glm::length(result.point.position - glm::vec3(mFrame.camera().eye));
     const float length = glm::length(arrival);
     result.arrival = length > 0.0f ? arrival / length : glm::vec3(mFrame.forward());
     return result;
 }
 
-PixelMapping ScreenMap::inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const
+bool ScreenMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, glm::vec3& seed,
+                            glm::vec3& velocityPerAlpha) const
 {
     const glm::vec3 direction(ray.direction);
-    glm::vec3 seed;
-    if (!findHullExit(sampler, glm::vec3(ray.origin), direction, mParams.curved.hullOffset, seed)) return {};
+    if (!findHullExit(sampler, glm::vec3(ray.origin), direction, mParams.curved.hullOffset, mHullBox, seed))
+        return false;
     glm::vec3 gradient;
     sampler.phiAndGradient(seed, gradient);
-    const glm::vec3 v0 = initialVelocity(gradient, direction, mParams.curved.alpha);
+    velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
+    return true;
+}
+
+bool ScreenMap::curvedRayStart(double x, double y, DistanceField::Sampler& sampler, glm::vec3& seed,
+                               glm::vec3& velocityPerAlpha) const
+{
+    const core::CameraRay ray = mFrame.ray(x, y);
+    if (mScene.bvh().intersect(glm::vec3(ray.origin), glm::vec3(ray.direction)).hit()) return false;
+    return seedFromRay(ray, sampler, seed, velocityPerAlpha);
+}
+
+PixelMapping ScreenMap::inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const
+{
+    glm::vec3 seed, velocityPerAlpha;
+    if (!seedFromRay(ray, sampler, seed, velocityPerAlpha)) return {};
+    const glm::vec3 v0 = mParams.curved.alpha * velocityPerAlpha;
     const CurvedRayEnd end = traceCurvedRay(sampler, seed, v0, mParams.curved, mEpsilon);
     if (!end.landed) {
         PixelMapping missed;

@@ -14,6 +14,13 @@
 namespace ivis::render {
 namespace {
 
+/// The box around the unit sphere's hull.
+core::Bounds3 hullBox()
+{
+    const auto& fixture = test::sphereScene();
+    return hullBounds(fixture.field.mesh, 0.4f, fixture.scene->distance().voxelSize());
+}
+
 /// Landing points of the curved rays of a column of pixels sweeping from the sphere's silhouette to
 /// past the hull's, camera at (0, 0, 2.5) looking down -z.
 std::vector<CurvedRayEnd> sweep(float alpha, std::vector<glm::vec3>* seeds = nullptr)
@@ -30,7 +37,7 @@ std::vector<CurvedRayEnd> sweep(float alpha, std::vector<glm::vec3>* seeds = nul
         const glm::vec3 direction(std::sin(angle) * 0.6f, std::sin(angle) * 0.8f, -std::cos(angle));
         glm::vec3 seed;
         if (glm::length(glm::cross(direction, eye)) < 1.01f) continue;  // the view ray hits the sphere
-        if (!findHullExit(sampler, eye, direction, params.hullOffset, seed)) continue;
+        if (!findHullExit(sampler, eye, direction, params.hullOffset, hullBox(), seed)) continue;
         glm::vec3 gradient;
         sampler.phiAndGradient(seed, gradient);
         ends.push_back(traceCurvedRay(sampler, seed, initialVelocity(gradient, direction, alpha), params, eps));
@@ -46,12 +53,12 @@ TEST(CurvedRay, HullExitIsFarthestCrossingOfAnalyticHull)
     const glm::vec3 eye(0.0f, 0.0f, 2.5f);
     const glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.0f, -1.0f));
     glm::vec3 seed;
-    ASSERT_TRUE(findHullExit(sampler, eye, direction, 0.4f, seed));
+    ASSERT_TRUE(findHullExit(sampler, eye, direction, 0.4f, hullBox(), seed));
     // Far root of |eye + t d| = 1.4.
     const float b = glm::dot(eye, direction), c = glm::dot(eye, eye) - 1.4f * 1.4f;
     const float tFar = -b + std::sqrt(b * b - c);
     EXPECT_LT(glm::length(seed - (eye + tFar * direction)), 0.01f);
-    EXPECT_FALSE(findHullExit(sampler, eye, glm::normalize(glm::vec3(1.0f, 0.0f, -0.5f)), 0.4f, seed));
+    EXPECT_FALSE(findHullExit(sampler, eye, glm::normalize(glm::vec3(1.0f, 0.0f, -0.5f)), 0.4f, hullBox(), seed));
 }
 
 TEST(CurvedRay, SmallAlphaFallsRadiallyFromTheSeed)

@@ -3,8 +3,11 @@
 ///        the hidden surface (METHOD.md, "InverseVis, I-").
 #pragma once
 
+#include <ivis/core/triangle_mesh.h>
 #include <ivis/render/distance_field.h>
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 namespace ivis::render {
@@ -27,11 +30,16 @@ struct CurvedRayEnd {
 };
 
 /// @brief The FARTHEST intersection of the straight ray origin + t dir (t >= 0) with the hull
-///        {phi = hullOffset}: sphere-traces backward from where the ray leaves the volume's box and
+///        {phi = hullOffset}: sphere-traces backward from where the ray leaves @a hullBox and
 ///        refines the crossing by bisection.
+/// @param hullBox a box containing the whole hull (e.g. hullBounds())
 /// @return false when the ray never comes within hullOffset of the surface
 bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
-                  float hullOffset, glm::vec3& seed);
+                  float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed);
+
+/// @brief A box around the hull {phi = hullOffset} of @a mesh: its bounds grown by the offset
+///        plus one voxel, clipped to the volume's box.
+core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize);
 
 /// @brief v0 = alpha * g x (r x g) with g = grad phi / |grad phi| at the seed: alpha times the part
 ///        of the view direction r tangential to the hull.
@@ -39,9 +47,82 @@ glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirect
 
 /// @brief Integrates dp/dt = phi v/|v|, dv/dt = -grad phi with symplectic Euler:
 ///        v' = v - h grad phi(p); p' = p + h phi(p) v'/|v'|, until phi(p) < eps (landed), phi
-///        reaches the field's reach (escaped) or maxSteps.
-CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
-                            const CurvedRayParams& params, float landingEpsilon);
+///        reaches @a escapeDistance (escaped) or maxSteps.
+/// @interface FieldSampler: float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
+template <typename FieldSampler>
+CurvedRayEnd integrateCurvedRay(FieldSampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
+                                const CurvedRayParams& params, float epsilon, float escapeDistance)
+{
+    CurvedRayEnd end;
+    glm::vec3 p = seed, v = velocity, gradient;
+    for (int step = 0; step < params.maxSteps; ++step) {
+        const float phi = sampler.phiAndGradient(p, gradient);
+        if (phi < epsilon) {
+            end.landed = true;
+            break;
+        }
+        if (phi >= escapeDistance) break;
+        v -= params.stepSize * gradient;
+        const float speed = glm::length(v);
+        const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
+        p += params.stepSize * phi * heading;
+        ++end.steps;
+    }
+    end.position = p;
+    end.velocity = v;
+    return end;
+}
+
+/// @brief A curved ray's end and the derivative of its end position with respect to a scalar
+///        parameter of the initial conditions (forward mode, exact for the discrete steps).
+struct CurvedRayTangent {
+    CurvedRayEnd end;
+    glm::vec3 dPosition{0.0f};  ///< d(end position) / d(parameter)
+};
+
+/// @brief integrateCurvedRay carrying the tangent (dp, dv) of one parameter through every step:
+///        dv' = dv - h H dp;  dp' = dp + h (grad phi . dp) u + h phi (I - u u^T) dv' / |v'|,
+///        u = v'/|v'|, with H the Hessian of the sampled phi. For alpha, dp0 = 0 and dv0 = v0/alpha.
+/// @interface FieldSampler: float phiGradientHessian(const glm::vec3&, glm::vec3&, glm::mat3&);
+template <typename FieldSampler>
+CurvedRayTangent integrateCurvedRayTangent(FieldSampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
+                                           const glm::vec3& dVelocity, const CurvedRayParams& params,
+                                           float epsilon, float escapeDistance)
+{
+    CurvedRayTangent result;
+    glm::vec3 p = seed, v = velocity, dp(0.0f), dv = dVelocity, gradient;
+    glm::mat3 hessian;
+    const float h = params.stepSize;
+    for (int step = 0; step < params.maxSteps; ++step) {
+        const float phi = sampler.phiGradientHessian(p, gradient, hessian);
+        if (phi < epsilon) {
+            result.end.landed = true;
+            break;
+        }
+        if (phi >= escapeDistance) break;
+        v -= h * gradient;
+        dv -= h * (hessian * dp);
+        const float speed = glm::length(v);
+        if (!(speed > 0.0f)) break;
+        const glm::vec3 u = v / speed;
+        const glm::vec3 du = (dv - glm::dot(u, dv) * u) / speed;
+        dp += h * glm::dot(gradient, dp) * u + h * phi * du;
+        p += h * phi * u;
+        ++result.end.steps;
+    }
+    result.end.position = p;
+    result.end.velocity = v;
+    result.dPosition = dp;
+    return result;
+}
+
+/// @brief integrateCurvedRay on a volume's distance field; rays escape where phi reaches the
+///        field's reach (beyond it phi is only a lower bound).
+inline CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
+                                   const CurvedRayParams& params, float epsilon)
+{
+    return integrateCurvedRay(sampler, seed, velocity, params, epsilon, 0.999f * sampler.field().reach());
+}
 
 /// @brief The landing threshold actually used: params.landingEpsilon or half a fine voxel.
 float landingEpsilon(const CurvedRayParams& params, const DistanceField& field);

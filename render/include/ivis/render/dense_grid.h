@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -19,6 +20,10 @@ public:
     /// @brief Copies the active bounding box (plus one voxel) of @a grid; inactive voxels keep
     ///        their (signed) background value.
     explicit DenseGrid(const openvdb::FloatGrid& grid);
+    /// @brief Adopts @a values (x fastest, then y, then z) of a box of @a dims voxels whose voxel
+    ///        (0,0,0) is centred at @a origin.
+    DenseGrid(const glm::vec3& origin, const std::array<int, 3>& dims, float voxelSize, std::vector<float> values,
+              float background);
 
     /// @brief Trilinear value at world point p (background outside the box).
     float value(const glm::vec3& p) const;

@@ -36,6 +36,12 @@ public:
     /// @brief The surface point shown at continuous pixel position (x, y).
     PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const;
 
+    /// @brief InverseVis start of the curved ray of pixel position (x, y): the hull seed and the
+    ///        initial velocity per unit alpha (v0 = alpha * velocityPerAlpha).
+    /// @return false when the view ray hits the surface or misses the hull
+    bool curvedRayStart(double x, double y, DistanceField::Sampler& sampler, glm::vec3& seed,
+                        glm::vec3& velocityPerAlpha) const;
+
     /// @brief The ring layout (meaningful for Method::Neugebauer).
     const RingLayout& rings() const { return mRings; }
     const core::CameraFrame& frame() const { return mFrame; }
@@ -44,16 +50,22 @@ public:
 
 private:
     PixelMapping inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
+    bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, glm::vec3& seed,
+                     glm::vec3& velocityPerAlpha) const;
     PixelMapping mirror(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
     PixelMapping ring(const glm::dvec2& pixel) const;
-    /// Indirect mapping for a sphere-traced point near the surface.
+public:
+    /// @brief Indirect mapping for a point that reached the surface (phi < eps): its exact closest
+    ///        surface point (BVH search bounded by the triangle stored at its nearest fine voxel).
     PixelMapping landedAt(const glm::vec3& p, const glm::vec3& arrival, int steps,
                           DistanceField::Sampler& sampler) const;
 
+private:
     const RenderScene& mScene;
     core::CameraFrame mFrame;
     MethodParams mParams;
     RingLayout mRings;
+    core::Bounds3 mHullBox;
     float mEpsilon;
 };
 

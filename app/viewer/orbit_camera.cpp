@@ -1,0 +1,85 @@
+#include "orbit_camera.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ivis::app {
+
+OrbitCamera OrbitCamera::fromCamera(const core::Camera& camera, bool keepExact)
+{
+    OrbitCamera orbit;
+    const glm::dvec2 angles = camera.angles();
+    orbit.thetaDeg = angles.x;
+    orbit.phiDeg = angles.y;
+    orbit.distance = glm::length(camera.eye - camera.target);
+    orbit.target = camera.target;
+    orbit.fovYDeg = camera.fovYDeg;
+    orbit.orthographic = camera.orthographic;
+    orbit.orthoHalfHeight = camera.orthoHalfHeight;
+    if (keepExact) orbit.fixed = camera;
+    return orbit;
+}
+
+core::Camera OrbitCamera::camera() const
+{
+    if (fixed) return *fixed;
+    core::Camera camera = core::Camera::fromAngles(thetaDeg, phiDeg, distance, fovYDeg);
+    camera.eye += target;
+    camera.target = target;
+    camera.orthographic = orthographic;
+    camera.orthoHalfHeight = orthoHalfHeight;
+    return camera;
+}
+
+void OrbitCamera::orbit(double dx, double dy)
+{
+    fixed.reset();
+    phiDeg = std::fmod(phiDeg - 0.4 * dx, 360.0);
+    thetaDeg = std::clamp(thetaDeg - 0.4 * dy, 0.5, 179.5);
+}
+
+void OrbitCamera::zoom(double steps)
+{
+    fixed.reset();
+    const double factor = std::pow(0.9, steps);
+    distance = std::clamp(distance * factor, 0.3, 20.0);
+    orthoHalfHeight = std::clamp(orthoHalfHeight * factor, 0.05, 20.0);
+}
+
+void OrbitCamera::pan(double dx, double dy, int viewportHeight)
+{
+    const core::Camera current = camera();
+    fixed.reset();
+    const core::CameraFrame frame(current, std::max(1, viewportHeight), std::max(1, viewportHeight));
+    const double halfHeight =
+        orthographic ? orthoHalfHeight : distance * std::tan(0.5 * fovYDeg * M_PI / 180.0);
+    const double worldPerPixel = 2.0 * halfHeight / std::max(1, viewportHeight);
+    target += worldPerPixel * (-dx * frame.right() + dy * frame.upVector());
+}
+
+CameraAnimation::CameraAnimation(const OrbitCamera& from, float alphaFrom, const OrbitCamera& to, float alphaTo,
+                                 double startTime, double seconds)
+    : mFrom(from), mTo(to), mAlphaFrom(alphaFrom), mAlphaTo(alphaTo), mStart(startTime), mSeconds(seconds), mActive(true)
+{
+    mFrom.fixed.reset();
+    mTo.fixed.reset();
+    // Azimuth the shorter way round.
+    const double delta = std::fmod(mTo.phiDeg - mFrom.phiDeg + 540.0, 360.0) - 180.0;
+    mTo.phiDeg = mFrom.phiDeg + delta;
+}
+
+void CameraAnimation::at(double now, OrbitCamera& camera, float& alpha) const
+{
+    const double s = std::clamp((now - mStart) / mSeconds, 0.0, 1.0), w = s * s * (3.0 - 2.0 * s);
+    camera = mFrom;
+    camera.thetaDeg = mFrom.thetaDeg + w * (mTo.thetaDeg - mFrom.thetaDeg);
+    camera.phiDeg = mFrom.phiDeg + w * (mTo.phiDeg - mFrom.phiDeg);
+    camera.distance = mFrom.distance + w * (mTo.distance - mFrom.distance);
+    camera.target = mFrom.target + w * (mTo.target - mFrom.target);
+    camera.orthoHalfHeight = mFrom.orthoHalfHeight + w * (mTo.orthoHalfHeight - mFrom.orthoHalfHeight);
+    alpha = float(mAlphaFrom + w * (mAlphaTo - mAlphaFrom));
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,93 @@
+/// @file viewer_app.h
+/// @brief The `inversevis-view` program: a GLFW window with an OpenGL 4.3 core context, the GPU
+///        renderer, a Dear ImGui panel, background loading and optimisation, and the headless
+///        screenshot and benchmark modes.
+#pragma once
+
+#include "gpu_renderer.h"
+#include "orbit_camera.h"
+#include "scene_loader.h"
+#include "view_optimiser.h"
+#include "viewer_options.h"
+
+#include <ivis/core/surface_field.h>
+#include <ivis/render/method.h>
+#include <ivis/render/shading.h>
+
+#include <atomic>
+#include <future>
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace ivis::app {
+
+/// @brief One viewer session on one surface.
+class ViewerApp {
+public:
+    /// @brief Validates the view options against @a field (colour map, range, method).
+    /// @throw InputError / ValueError for bad options
+    ViewerApp(const ViewerOptions& options, core::SurfaceField field);
+    ~ViewerApp();
+    ViewerApp(const ViewerApp&) = delete;
+    ViewerApp& operator=(const ViewerApp&) = delete;
+
+    /// @brief Opens the window and runs until it closes (or the headless job is done).
+    /// @return the exit status (0)
+    /// @throw GlError when no OpenGL 4.3 core context can be had; InputError / ValueError from loading
+    int run();
+
+    /// @brief Replaces the stand-in optimisers (e.g. by the real CPU optimiser once it exists).
+    void setOptimisers(ViewOptimiser alpha, ViewOptimiser view);
+
+private:
+    void openWindow();
+    void closeWindow();
+    void startLoading();
+    /// Uploads the loaded scene once the loader is done; true when it did so this call.
+    bool pollLoader();
+    void waitForScene();
+    GpuFrame frame(int width, int height) const;
+    void renderFrame(int width, int height);
+    void writeScreenshot(const std::string& path, const std::string& regionPath);
+    int runHeadlessScreenshot();
+    int runBenchmark();
+    int runInteractive();
+    void drawPanel();
+    void handleInput();
+    void startOptimiser(const ViewOptimiser& optimiser, const char* name);
+    void pollOptimiser(double now);
+
+    ViewerOptions mOptions;
+    std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
+    render::MethodParams mMethod;
+    render::ShadingOptions mShading;
+    core::ScalarRange mDataRange;
+    OrbitCamera mOrbit;
+    ViewOptimiser mAlphaOptimiser;
+    ViewOptimiser mViewOptimiser;
+
+    GLFWwindow* mWindow = nullptr;
+    bool mGlfwReady = false;
+    bool mImGuiReady = false;
+    std::string mGlRenderer;
+    std::unique_ptr<GpuRenderer> mRenderer;
+    std::unique_ptr<SceneLoader> mLoader;
+    std::unique_ptr<LoadedScene> mLoaded;
+    std::string mVolumeText;
+
+    std::future<OptimiserResult> mJob;
+    std::atomic<bool> mCancelJob{false};
+    std::string mJobName;
+    std::string mStatus;
+    CameraAnimation mAnimation;
+
+    bool mDirty = true;
+    float mRenderScale = 1.0f;
+    double mLastFrameMs = 0.0;
+    int mScreenshots = 0;
+    int mColormapIndex = 0;
+};
+
+}  // namespace ivis::app

@@ -1,0 +1,57 @@
+#include "viewer_options.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/surface_source.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace ivis::app {
+
+void ViewerOptions::addTo(CLI::App& app)
+{
+    mesh.addTo(app, "--volume-res");
+    view.addTo(app);
+    // Flags of `inversevis render` that have no meaning in a window.
+    for (const char* name : {"--res", "--spp", "--no-legend", "--no-outline", "--transparent"})
+        app.remove_option(app.get_option(name));
+    app.add_option("--width", width, "Window width in pixels (headless: the image width)")->capture_default_str();
+    app.add_option("--height", height, "Window height in pixels (headless: the image height)")->capture_default_str();
+    app.add_option("--screenshot", screenshot, "Render without input, write this PNG and exit");
+    app.add_option("--frames", frames, "Frames rendered before the screenshot")->capture_default_str();
+    app.add_option("--region-png", regionPng,
+                   "Also write the last frame's regions as grey levels (0 background, 128 direct, 255 indirect)");
+    app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
+    app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
+    app.add_option("--cache-dir", cacheDir, "Folder for volume caches (default: ~/.cache/inversevis)");
+    app.add_option("--texture-budget", textureBudgetMiB, "GPU memory for the volume textures, MiB")
+        ->capture_default_str();
+}
+
+void ViewerOptions::validate() const
+{
+    if (width < 16 || height < 16 || width > 8192 || height > 8192)
+        throw ValueError("--width/--height " + std::to_string(width) + "x" + std::to_string(height) +
+                         " is out of range (16 to 8192 each)");
+    if (frames < 1 || frames > 100000) throw ValueError("--frames " + std::to_string(frames) + " must be at least 1");
+    if (benchmarkFrames < 2 || benchmarkFrames > 100000)
+        throw ValueError("--benchmark-frames " + std::to_string(benchmarkFrames) + " must be at least 2");
+    if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
+        throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
+    if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
+}
+
+std::string ViewerOptions::resolvedCacheDir() const
+{
+    namespace fs = std::filesystem;
+    if (!cacheDir.empty()) return cacheDir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return (fs::path(xdg) / "inversevis").string();
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return (fs::path(home) / ".cache" / "inversevis").string();
+    const std::string source = mesh.source;
+    if (source.rfind(core::kScenePrefix, 0) == 0) return ".";
+    const fs::path parent = fs::path(source).parent_path();
+    return parent.empty() ? "." : parent.string();
+}
+
+}  // namespace ivis::app

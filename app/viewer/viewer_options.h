@@ -1,0 +1,43 @@
+/// @file viewer_options.h
+/// @brief Command-line options of `inversevis-view`: the mesh and view options shared with the
+///        CLI, plus the window size, the headless screenshot / benchmark modes and the cache folder.
+/// @note The viewer has no --res (the window or --width/--height is the image) and no legend,
+///       outline, supersampling or transparency flags; the rest of ViewOptions applies unchanged.
+#pragma once
+
+#include "../mesh_options.h"
+#include "../view_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace ivis::app {
+
+/// @brief Everything `inversevis-view` reads from its command line.
+struct ViewerOptions {
+    MeshOptions mesh;           ///< MESH, --scalar, --volume-res, ... (as the CLI)
+    ViewOptions view;           ///< --theta, --phi, --method, --alpha, --colormap, --range, ...
+    int width = 1024;           ///< window (and headless image) width in pixels
+    int height = 768;           ///< window (and headless image) height in pixels
+    std::string screenshot;     ///< headless: write the last frame here and exit
+    int frames = 3;             ///< headless: frames rendered before the screenshot
+    std::string regionPng;      ///< debug: region of the last frame as grey (0 background, 128 direct, 255 indirect)
+    bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
+    int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
+    std::string cacheDir;       ///< volume cache folder ("" = $XDG_CACHE_HOME or ~/.cache/inversevis)
+    int textureBudgetMiB = 512; ///< GPU memory allowed for the volume textures
+
+    /// @brief Registers every option on @a app.
+    void addTo(CLI::App& app);
+    /// @brief Throws InputError / ValueError for values CLI11 does not check (sizes, frames, budget).
+    void validate() const;
+    /// @brief True when the program renders without a user (screenshot or benchmark).
+    bool headless() const { return !screenshot.empty() || benchmark; }
+    /// @brief The cache folder actually used: --cache-dir, else $XDG_CACHE_HOME/inversevis, else
+    ///        ~/.cache/inversevis, else the mesh's folder ("beside" it) when HOME is unset.
+    std::string resolvedCacheDir() const;
+};
+
+}  // namespace ivis::app

@@ -1,0 +1,195 @@
+// `inversevis-bench render`: a front frame and an InverseVis frame, and the curved-ray integration
+// on our sampler (sparse fine band + dense coarse far field) against the same rays integrated on a
+// plain dense float copy of the distance at full resolution (trilinear value + analytic gradient
+// of the trilinear cell: the memory-bound ceiling).
+#include "benchmarks.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/surface_source.h>
+#include <ivis/render/curved_ray.h>
+#include <ivis/render/renderer.h>
+
+#include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace ivis::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// A curved ray's start: hull seed and initial velocity.
+struct RaySeed {
+    glm::vec3 position;
+    glm::vec3 velocity;
+};
+
+/// Seeds of every pixel whose view ray misses the surface but meets the hull, in pixel order.
+std::vector<RaySeed> collectSeeds(const render::RenderScene& scene, const core::CameraFrame& frame,
+                                  const render::CurvedRayParams& params)
+{
+    const core::Bounds3 hullBox = render::hullBounds(scene.mesh(), params.hullOffset, scene.distance().voxelSize());
+    std::vector<std::vector<RaySeed>> rows(std::size_t(frame.height()));
+    tbb::parallel_for(0, frame.height(), [&](int y) {
+        auto sampler = scene.distance().sampler();
+        for (int x = 0; x < frame.width(); ++x) {
+            const core::CameraRay ray = frame.ray(x + 0.5, y + 0.5);
+            const glm::vec3 origin(ray.origin), direction(ray.direction);
+            if (scene.bvh().intersect(origin, direction).hit()) continue;
+            glm::vec3 seed, gradient;
+            if (!render::findHullExit(sampler, origin, direction, params.hullOffset, hullBox, seed)) continue;
+            sampler.phiAndGradient(seed, gradient);
+            rows[std::size_t(y)].push_back({seed, render::initialVelocity(gradient, direction, params.alpha)});
+        }
+    });
+    std::vector<RaySeed> seeds;
+    for (const auto& row : rows) seeds.insert(seeds.end(), row.begin(), row.end());
+    return seeds;
+}
+
+/// Integrates every seed with a per-thread sampler made by @a makeSampler; returns total steps.
+template <typename MakeSampler>
+std::size_t integrateAll(const std::vector<RaySeed>& seeds, const render::CurvedRayParams& params, float epsilon,
+                         float escape, MakeSampler makeSampler)
+{
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, seeds.size(), 1024), std::size_t(0),
+        [&](const tbb::blocked_range<std::size_t>& range, std::size_t steps) {
+            auto sampler = makeSampler();
+            for (std::size_t i = range.begin(); i != range.end(); ++i)
+                steps += std::size_t(
+                    render::integrateCurvedRay(sampler, seeds[i].position, seeds[i].velocity, params, epsilon, escape)
+                        .steps);
+            return steps;
+        },
+        std::plus<>());
+}
+
+/// Dense sampler facade with the FieldSampler interface.
+struct DenseSampler {
+    const render::DenseGrid* grid;
+    float phiAndGradient(const glm::vec3& p, glm::vec3& gradient) { return grid->valueAndGradient(p, gradient); }
+};
+
+/// Dense copy, at the fine voxel size, of the distance inside the box the far field covers.
+render::DenseGrid denseCopy(const render::RenderScene& scene)
+{
+    const vdb::SurfaceVolume& volume = scene.volume();
+    const openvdb::FloatGrid& reachGrid = volume.farPhi ? *volume.farPhi : *volume.phi;
+    const openvdb::CoordBBox box = reachGrid.evalActiveVoxelBoundingBox();
+    const openvdb::Vec3d lo = reachGrid.indexToWorld(box.min()), hi = reachGrid.indexToWorld(box.max());
+    const float voxel = float(volume.voxelSize());
+    const float half = float(vdb::kBoxHalfExtent);
+    // Align to the fine grid's voxel centres.
+    glm::vec3 origin;
+    std::array<int, 3> dims{};
+    for (int a = 0; a < 3; ++a) {
+        const int first = int(std::floor((lo[a] + half) / voxel - 0.5));
+        const int last = int(std::ceil((hi[a] + half) / voxel - 0.5));
+        origin[a] = -half + (first + 0.5f) * voxel;
+        dims[a] = last - first + 1;
+    }
+    std::vector<float> values(std::size_t{1} * dims[0] * dims[1] * dims[2]);
+    tbb::parallel_for(0, dims[2], [&](int z) {
+        auto sampler = scene.distance().sampler();
+        std::size_t i = std::size_t(z) * dims[1] * dims[0];
+        for (int y = 0; y < dims[1]; ++y)
+            for (int x = 0; x < dims[0]; ++x)
+                values[i++] = sampler.phi(origin + voxel * glm::vec3(float(x), float(y), float(z)));
+    });
+    return render::DenseGrid(origin, dims, voxel, std::move(values), scene.distance().reach());
+}
+
+}  // namespace
+
+Benchmark addRenderBenchmark(CLI::App& app)
+{
+    struct Options {
+        std::string mesh;
+        int volumeResolution = 1000;
+        std::string image = "1000x1000";
+        double theta = 90.0, phi = 0.0;
+        bool json = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("render", "Front and InverseVis frames; curved-ray steps vs a dense array");
+    command->add_option("mesh", options->mesh, "Mesh file or scene:<name>")->required();
+    command->add_option("--volume-res", options->volumeResolution, "Volume resolution")->capture_default_str();
+    command->add_option("--image", options->image, "Image size WxH")->capture_default_str();
+    command->add_option("--theta", options->theta, "Camera polar angle (degrees)")->capture_default_str();
+    command->add_option("--phi", options->phi, "Camera azimuth (degrees)")->capture_default_str();
+    command->add_flag("--json", options->json, "Print one JSON object");
+
+    return {command, [options] {
+        const core::SurfaceField field = core::loadSurface(options->mesh);
+        render::RenderOptions renderOptions;
+        if (std::sscanf(options->image.c_str(), "%dx%d", &renderOptions.width, &renderOptions.height) != 2)
+            throw InputError("--image '" + options->image + "': expected WIDTHxHEIGHT");
+        renderOptions.legend = false;
+        vdb::VolumeOptions volumeOptions;
+        volumeOptions.resolution = options->volumeResolution;
+
+        auto start = Clock::now();
+        const vdb::SurfaceVolume volume = vdb::buildSurfaceVolume(field.mesh, volumeOptions);
+        const double volumeSeconds = secondsSince(start);
+        const render::RenderScene scene(field, volume);
+        const core::Camera camera = core::Camera::fromAngles(options->theta, options->phi);
+
+        renderOptions.method.method = render::Method::Front;
+        const render::RenderStats front = render::renderImage(scene, camera, renderOptions).stats;
+        renderOptions.method.method = render::Method::InverseVis;
+        const render::RenderStats inverse = render::renderImage(scene, camera, renderOptions).stats;
+
+        const core::CameraFrame frame(camera, renderOptions.width, renderOptions.height);
+        const render::CurvedRayParams& params = renderOptions.method.curved;
+        const std::vector<RaySeed> seeds = collectSeeds(scene, frame, params);
+        const float epsilon = render::landingEpsilon(params, scene.distance());
+        const float escape = 0.999f * scene.distance().reach();
+
+        start = Clock::now();
+        const std::size_t oursSteps =
+            integrateAll(seeds, params, epsilon, escape, [&] { return scene.distance().sampler(); });
+        const double oursSeconds = secondsSince(start);
+
+        const render::DenseGrid dense = denseCopy(scene);
+        start = Clock::now();
+        const std::size_t referenceSteps =
+            integrateAll(seeds, params, epsilon, escape, [&] { return DenseSampler{&dense}; });
+        const double referenceSeconds = secondsSince(start);
+
+        const double stepsPerSecond = double(oursSteps) / oursSeconds;
+        const double referenceStepsPerSecond = double(referenceSteps) / referenceSeconds;
+        const nlohmann::json out = {
+            {"mesh", options->mesh},
+            {"volume_resolution", options->volumeResolution},
+            {"image", options->image},
+            {"volume_seconds", volumeSeconds},
+            {"front_seconds", front.seconds},
+            {"inversevis_seconds", inverse.seconds},
+            {"rays_launched", inverse.raysLaunched},
+            {"rays_per_second", double(inverse.raysLaunched) / inverse.seconds},
+            {"mean_steps", inverse.meanSteps()},
+            {"integrated_rays", seeds.size()},
+            {"steps", oursSteps},
+            {"steps_per_second", stepsPerSecond},
+            {"reference_steps", referenceSteps},
+            {"reference_steps_per_second", referenceStepsPerSecond},
+            {"reference_bytes", dense.memoryBytes()},
+            {"ratio", stepsPerSecond / referenceStepsPerSecond}};
+        if (options->json) {
+            std::cout << out.dump() << "\n";
+            return;
+        }
+        std::cout << out.dump(2) << "\n";
+    }};
+}
+
+}  // namespace ivis::bench

@@ -1,0 +1,78 @@
+/// @file mesh_layout_check.h
+/// @brief Walks the bytes of a PLY, OFF, OBJ or STL file the way OpenMesh 9.0 will read them and
+///        rejects layouts it would misread, loop on or crash on.
+/// @note Internal to readMesh: every failure is an InputError with the one-line message
+///       "<path>: <problem>"; vertex and face numbers count from 0, OBJ ones from 1.
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace ivis::core::detail {
+
+/// Mesh file formats readMesh understands.
+enum class MeshFormat { Obj, Off, Ply, Stl };
+
+/// Facts about a checked file that its OpenMesh import needs.
+struct MeshLayout {
+    std::size_t facesInFile = 0;  ///< faces (STL facets) the file declares or contains
+    bool binaryStl = false;       ///< STL whose size matches its binary triangle count
+};
+
+/// Throws the one-line InputError "<path>: <problem>".
+[[noreturn]] void failInput(const std::string& path, const std::string& problem);
+
+/// The format chosen by the extension of @a path (case-insensitive); throws InputError for others.
+MeshFormat meshFormat(const std::string& path);
+
+/// Lower-case name of @a format: "obj", "off", "ply" or "stl".
+const char* formatName(MeshFormat format);
+
+/// Checks the whole file in @a data and may rewrite a binary PLY header into the form OpenMesh expects.
+MeshLayout checkMeshLayout(const std::string& path, MeshFormat format, std::string& data);
+
+/// Whitespace-separated tokens and lines of text held in memory, split as an istream splits them.
+class TextCursor {
+public:
+    /// Starts at byte @a pos of @a text, which must outlive the cursor.
+    explicit TextCursor(const std::string& text, std::size_t pos = 0) : mText(text), mPos(pos) {}
+
+    /// Next token, or "" at the end of the text.
+    std::string_view token()
+    {
+        while (mPos < mText.size() && std::isspace(static_cast<unsigned char>(mText[mPos]))) ++mPos;
+        const std::size_t begin = mPos;
+        while (mPos < mText.size() && !std::isspace(static_cast<unsigned char>(mText[mPos]))) ++mPos;
+        return std::string_view(mText).substr(begin, mPos - begin);
+    }
+    /// Rest of the current line without its newline; moves past the newline.
+    std::string_view line()
+    {
+        const std::size_t begin = mPos;
+        const std::size_t end = std::min(mText.find('\n', mPos), mText.size());
+        mPos = std::min(end + 1, mText.size());
+        return std::string_view(mText).substr(begin, end - begin);
+    }
+    /// True when every byte has been consumed.
+    bool atEnd() const { return mPos >= mText.size(); }
+    /// Offset of the next unread byte.
+    std::size_t pos() const { return mPos; }
+
+private:
+    const std::string& mText;
+    std::size_t mPos;
+};
+
+/// A number token as a stream reads it into a float.
+struct FloatToken {
+    enum Kind { Finite, NonFinite, NotANumber } kind;
+    double value;
+};
+
+/// Classifies @a token: decimals Finite; nan/inf spellings and float overflow NonFinite; else NotANumber.
+FloatToken parseFloatToken(std::string_view token);
+
+}  // namespace ivis::core::detail

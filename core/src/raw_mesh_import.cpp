@@ -1,0 +1,214 @@
+#include <ivis/core/raw_mesh_import.h>
+
+#include <ivis/core/errors.h>
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <OpenMesh/Core/IO/reader/OFFReader.hh>
+#include <OpenMesh/Core/Mesh/BaseKernel.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <array>
+#include <cctype>
+#include <mutex>
+#include <sstream>
+
+namespace ivis::core::detail {
+namespace {
+
+namespace omio = OpenMesh::IO;
+
+/// Property storage without connectivity: the PLY reader adds custom per-vertex and per-face
+/// properties to the importer's kernel by name (Options::Custom), one slot per element.
+class PropertyKernel final : public OpenMesh::BaseKernel {
+public:
+    OpenMesh::VertexHandle addVertex()
+    {
+        vprops_resize(++mVertices);
+        return OpenMesh::VertexHandle(int(mVertices - 1));
+    }
+    OpenMesh::FaceHandle addFace()
+    {
+        fprops_resize(++mFaces);
+        return OpenMesh::FaceHandle(int(mFaces - 1));
+    }
+    size_t n_vertices() const override { return mVertices; }
+    size_t n_faces() const override { return mFaces; }
+
+private:
+    std::size_t mVertices = 0;
+    std::size_t mFaces = 0;
+};
+
+/// Importer that records positions and faces as raw index lists: no half-edge topology, so
+/// OpenMesh never refuses a non-manifold face, and out-of-range indices reach us instead of being
+/// dropped. If a token could not be parsed, OpenMesh's readers carry on with stale values; the
+/// importer reports the failed stream at the next vertex or face instead.
+class RawImporter final : public omio::BaseImporter {
+public:
+    RawImporter(const std::istream& stream, std::string path, bool oneBased)
+        : mStream(stream), mPath(std::move(path)), mOneBased(oneBased)
+    {
+    }
+
+    /// What was read, with every per-vertex float/double property the kernel collected.
+    RawMesh take()
+    {
+        for (auto it = mProperties.vprops_begin(); it != mProperties.vprops_end(); ++it) {
+            if (*it == nullptr) continue;
+            NamedValues scalar{(*it)->name(), {}};
+            OpenMesh::VPropHandleT<float> asFloat;
+            OpenMesh::VPropHandleT<double> asDouble;
+            if (mProperties.get_property_handle(asFloat, scalar.name)) {
+                for (const float v : mProperties.property(asFloat).data_vector()) scalar.values.push_back(v);
+            } else if (mProperties.get_property_handle(asDouble, scalar.name)) {
+                for (const double v : mProperties.property(asDouble).data_vector())
+                    scalar.values.push_back(float(v));
+            } else {
+                continue;
+            }
+            mMesh.scalars.push_back(std::move(scalar));
+        }
+        return std::move(mMesh);
+    }
+
+    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override
+    {
+        checkStream("vertex", mMesh.positions.size());
+        mMesh.positions.emplace_back(p[0], p[1], p[2]);
+        return mProperties.addVertex();
+    }
+    OpenMesh::VertexHandle add_vertex() override { return add_vertex(OpenMesh::Vec3f(0.0f)); }
+    void set_point(OpenMesh::VertexHandle v, const OpenMesh::Vec3f& p) override
+    {
+        checkStream("vertex", std::size_t(v.idx()));
+        IVIS_CHECK(v.idx() >= 0 && std::size_t(v.idx()) < mMesh.positions.size());
+        mMesh.positions[std::size_t(v.idx())] = glm::vec3(p[0], p[1], p[2]);
+    }
+    OpenMesh::FaceHandle add_face(const VHandles& corners) override
+    {
+        checkStream("face", mMesh.faceEnds.size());
+        for (const OpenMesh::VertexHandle v : corners) mMesh.corners.push_back(v.idx());
+        mMesh.faceEnds.push_back(mMesh.corners.size());
+        return mProperties.addFace();  // a real handle, so PLY face properties have a slot
+    }
+    OpenMesh::BaseKernel* kernel() override { return &mProperties; }
+    size_t n_vertices() const override { return mMesh.positions.size(); }
+    size_t n_faces() const override { return mMesh.faceEnds.size(); }
+    size_t n_edges() const override { return 0; }
+
+    // Everything below is data we do not keep (normals, colours, texture coordinates, status)
+    // or half-edge connectivity, which only the OM format writes directly.
+    OpenMesh::HalfedgeHandle add_edge(OpenMesh::VertexHandle, OpenMesh::VertexHandle) override
+    {
+        return OpenMesh::HalfedgeHandle();
+    }
+    OpenMesh::FaceHandle add_face(OpenMesh::HalfedgeHandle) override { return OpenMesh::FaceHandle(); }
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                            const std::vector<OpenMesh::Vec2f>&) override {}
+    void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
+                            const std::vector<OpenMesh::Vec3f>&) override {}
+    void set_face_texindex(OpenMesh::FaceHandle, int) override {}
+    void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
+    void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+    void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc&) override {}
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc&) override {}
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+    void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f&) override {}
+    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec2f&) override {}
+    void set_texcoord(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
+    void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+    void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
+    void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
+    void request_face_texcoords2D() override {}
+    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec2f&) override {}
+    void set_texcoord(OpenMesh::HalfedgeHandle, const OpenMesh::Vec3f&) override {}
+    void set_status(OpenMesh::HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3uc&) override {}
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4uc&) override {}
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec3f&) override {}
+    void set_color(OpenMesh::EdgeHandle, const OpenMesh::Vec4f&) override {}
+    void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+    void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
+    void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc&) override {}
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc&) override {}
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
+    void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f&) override {}
+    void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
+    void add_texture_information(int, std::string) override {}
+
+private:
+    void checkStream(const char* element, std::size_t index) const
+    {
+        if (!mStream.fail()) return;
+        failInput(mPath, "cannot read " + std::string(element) + " " + std::to_string(index + mOneBased) +
+                             " (a value is missing, not a number or out of range)");
+    }
+
+    const std::istream& mStream;
+    std::string mPath;
+    bool mOneBased;
+    RawMesh mMesh;
+    PropertyKernel mProperties;
+};
+
+/// Silences OpenMesh's log streams while alive and restores their previous state.
+class QuietOpenMesh {
+public:
+    QuietOpenMesh()
+    {
+        for (std::size_t i = 0; i < kStreams.size(); ++i) {
+            mWasEnabled[i] = kStreams[i]().is_enabled();
+            kStreams[i]().disable();
+        }
+    }
+    ~QuietOpenMesh()
+    {
+        for (std::size_t i = 0; i < kStreams.size(); ++i) {
+            if (mWasEnabled[i]) kStreams[i]().enable();
+        }
+    }
+    QuietOpenMesh(const QuietOpenMesh&) = delete;
+    QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
+
+private:
+    static constexpr std::array<OpenMesh::mostream& (*)(), 3> kStreams{&omerr, &omlog, &omout};
+    std::array<bool, 3> mWasEnabled{};
+};
+
+/// OpenMesh's reader singletons and log streams are process-wide state.
+std::mutex gOpenMeshMutex;
+
+/// "not a valid PLY mesh" style name.
+std::string formatLabel(MeshFormat format)
+{
+    std::string label = formatName(format);
+    for (char& c : label) c = char(std::toupper(static_cast<unsigned char>(c)));
+    return label;
+}
+
+}  // namespace
+
+RawMesh importRawMesh(const std::string& path, MeshFormat format, bool binaryStl, std::string data)
+{
+    // OpenMesh parses exactly the bytes that were checked.
+    std::istringstream stream(data);
+    std::string().swap(data);
+    RawImporter importer(stream, path, format == MeshFormat::Obj);
+    omio::Options options = omio::Options::Custom;
+    if (binaryStl) options += omio::Options::Binary;
+    bool ok = false;
+    {
+        std::lock_guard<std::mutex> lock(gOpenMeshMutex);
+        QuietOpenMesh quiet;
+        // The OFF stream reader takes its binary/normal/colour flags from the last header check.
+        ok = (format != MeshFormat::Off || omio::OFFReader().can_u_read(path)) &&
+             omio::IOManager().read(stream, formatName(format), importer, options);
+    }
+    if (!ok) failInput(path, "not a valid " + formatLabel(format) + " mesh");
+    return importer.take();
+}
+
+}  // namespace ivis::core::detail

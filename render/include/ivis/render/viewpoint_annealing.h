@@ -1,0 +1,55 @@
+/// @file viewpoint_annealing.h
+/// @brief Simulated annealing of the camera on the sphere of radius 2.5 (METHOD.md, "Viewpoint
+///        optimisation"): neighbours within +-60 degrees in polar and azimuth angle, acceptance
+///        exp(10 (E_new - E_old) / T), T_k = T0 * cooling^k; the method's parameters are optimised
+///        at every proposal before its energy is measured.
+/// @note Deterministic for a seed (std::mt19937_64 and fixed-order reductions).
+#pragma once
+
+#include <ivis/render/parameter_optimizer.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ivis::render {
+
+/// @brief Annealing schedule and start.
+struct AnnealingOptions {
+    int steps = 30;                  ///< proposals after the start view
+    double neighbourhoodDeg = 60.0;  ///< proposal range in each angle
+    double startTemperature = 1.0;
+    double cooling = 0.9;            ///< T_k = startTemperature * cooling^k
+    double acceptanceScale = 10.0;   ///< the 10 in exp(10 dE / T)
+    double startThetaDeg = 90.0;
+    double startPhiDeg = 0.0;
+    double fovYDeg = 75.0;
+    std::uint64_t seed = 1;
+};
+
+/// @brief One evaluated camera position.
+struct VisitedView {
+    double thetaDeg = 0.0;
+    double phiDeg = 0.0;
+    EnergyValue value;
+    MethodParams params;
+    bool accepted = false;
+};
+
+/// @brief Every visited view (the start first) and the best one.
+struct AnnealingResult {
+    std::vector<VisitedView> visited;
+    std::size_t best = 0;  ///< index into visited
+    double seconds = 0.0;
+    int evaluations = 0;
+    /// @brief The best view.
+    const VisitedView& bestView() const { return visited[best]; }
+};
+
+/// @brief Camera of a view on the sphere, looking at the origin.
+core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg);
+
+/// @brief Runs the annealing from the start view with the method of @a start.
+AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodParams& start,
+                                const AnnealingOptions& options = {}, const AscentOptions& ascent = {});
+
+}  // namespace ivis::render

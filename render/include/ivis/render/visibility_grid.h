@@ -1,0 +1,44 @@
+/// @file visibility_grid.h
+/// @brief The paper's visibility measure: voxels of a grid over the box whose centre lies closer
+///        to the surface than one voxel are "marked"; a marked voxel is "visited" when a ray lands
+///        in it; visibility = visited / marked.
+/// @note Sparse: only the marked voxels are stored (sorted keys), so any resolution works.
+#pragma once
+
+#include <ivis/core/triangle_bvh.h>
+#include <ivis/core/triangle_mesh.h>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace ivis::render {
+
+/// @brief Marked voxels of a resolution^3 grid over [-2.5, 2.5]^3.
+class VisibilityGrid {
+public:
+    /// @brief Key of no voxel (a point outside the box).
+    static constexpr std::uint64_t kNoVoxel = std::numeric_limits<std::uint64_t>::max();
+
+    /// @brief Marks every voxel whose centre is within one voxel of the mesh (exact distance).
+    /// @param resolution voxels across the box (paper: 200)
+    VisibilityGrid(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, int resolution = 200);
+
+    /// @brief Key of the voxel containing @a p, or kNoVoxel outside the box.
+    std::uint64_t keyOf(const glm::vec3& p) const;
+    /// @brief Number of marked voxels among @a keys (sorted and deduplicated in place).
+    std::size_t countMarked(std::vector<std::uint64_t>& keys) const;
+    /// @brief Number of marked voxels.
+    std::size_t markedCount() const { return mMarked.size(); }
+    int resolution() const { return mResolution; }
+    double voxelSize() const { return mVoxelSize; }
+
+private:
+    int mResolution;
+    double mVoxelSize;
+    std::vector<std::uint64_t> mMarked;  ///< sorted keys
+};
+
+}  // namespace ivis::render

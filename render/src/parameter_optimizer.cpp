@@ -1,0 +1,106 @@
+#include <ivis/render/parameter_optimizer.h>
+
+#include <ivis/core/errors.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ivis::render {
+namespace {
+
+/// The free parameters of a method as a vector, and back.
+std::vector<double> parameterVector(const MethodParams& params)
+{
+    if (params.method == Method::InverseVis) return {params.curved.alpha};
+    if (params.method == Method::Mirror) return {params.mirror.w.begin(), params.mirror.w.end()};
+    return {};
+}
+
+MethodParams withParameters(MethodParams params, const std::vector<double>& x, double maxAlpha)
+{
+    if (params.method == Method::InverseVis) params.curved.alpha = float(std::clamp(x[0], 0.0, maxAlpha));
+    if (params.method == Method::Mirror)
+        for (std::size_t i = 0; i < params.mirror.w.size(); ++i) params.mirror.w[i] = float(x[i]);
+    return params;
+}
+
+}  // namespace
+
+double goldenSectionMaximize(const std::function<double(double)>& f, double lo, double hi, double tolerance,
+                             int* evaluations)
+{
+    const double invPhi = 2.0 / (1.0 + std::sqrt(5.0));
+    double x2 = hi - (hi - lo) * invPhi, x3 = lo + (hi - lo) * invPhi;
+    double f2 = f(x2), f3 = f(x3);
+    int calls = 2;
+    while (hi - lo >= tolerance) {
+        if (f2 > f3) {  // the maximum lies in [lo, x3]
+            hi = x3;
+            x3 = x2;
+            f3 = f2;
+            x2 = hi - (hi - lo) * invPhi;
+            f2 = f(x2);
+        } else {  // in [x2, hi]
+            lo = x2;
+            x2 = x3;
+            f2 = f3;
+            x3 = lo + (hi - lo) * invPhi;
+            f3 = f(x3);
+        }
+        ++calls;
+    }
+    if (evaluations) *evaluations += calls;
+    return 0.5 * (lo + hi);
+}
+
+AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Camera& camera,
+                                const MethodParams& start, const AscentOptions& options)
+{
+    AscentResult result;
+    result.params = start;
+    result.value = evaluator.evaluate(camera, start);
+    result.evaluations = 1;
+    result.energyTrace.push_back(result.value.energy);
+    std::vector<double> x = parameterVector(start);
+    if (x.empty()) return result;
+
+    const bool analytic = start.method == Method::InverseVis && evaluator.options().kind == EnergyKind::Scalar &&
+                          options.gradient != GradientMode::ForwardDifference;
+    if (options.gradient == GradientMode::Analytic && !analytic)
+        throw ValueError("the analytic gradient exists only for InverseVis with the scalar energy");
+    auto energyAt = [&](const std::vector<double>& point) {
+        ++result.evaluations;
+        return evaluator.evaluate(camera, withParameters(start, point, options.maxAlpha));
+    };
+
+    for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
+        std::vector<double> gradient(x.size());
+        if (analytic) {
+            gradient[0] = evaluator.alphaDerivative(camera, withParameters(start, x, options.maxAlpha));
+            ++result.evaluations;
+        } else {
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                std::vector<double> shifted = x;
+                shifted[i] += options.differenceStep;
+                gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
+            }
+        }
+        auto along = [&](double t) {
+            std::vector<double> point = x;
+            for (std::size_t i = 0; i < x.size(); ++i) point[i] += t * gradient[i];
+            return point;
+        };
+        const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0,
+                                               options.maxStep, options.tolerance, &result.evaluations);
+        const EnergyValue candidate = energyAt(along(t));
+        ++result.iterations;
+        if (!(candidate.energy > result.value.energy)) break;
+        x = along(t);
+        result.value = candidate;
+        result.params = withParameters(start, x, options.maxAlpha);
+        result.energyTrace.push_back(candidate.energy);
+    }
+    return result;
+}
+
+}  // namespace ivis::render

@@ -1,0 +1,78 @@
+#include <ivis/render/visibility_grid.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <glm/common.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ivis::render {
+
+VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, int resolution)
+    : mResolution(resolution), mVoxelSize(2.0 * vdb::kBoxHalfExtent / resolution)
+{
+    if (resolution < 8 || resolution > 8192)
+        throw ValueError("visibility grid resolution " + std::to_string(resolution) + " is out of range (8 to 8192)");
+    // Candidates: voxels whose centre lies in a triangle's box grown by one voxel.
+    std::vector<std::vector<std::uint64_t>> perTriangle(mesh.triangles.size());
+    const double half = vdb::kBoxHalfExtent;
+    tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
+        glm::dvec3 lo(1e30), hi(-1e30);
+        for (std::uint32_t v : mesh.triangles[t]) {
+            lo = glm::min(lo, glm::dvec3(mesh.positions[v]));
+            hi = glm::max(hi, glm::dvec3(mesh.positions[v]));
+        }
+        int i0[3], i1[3];
+        for (int a = 0; a < 3; ++a) {
+            i0[a] = std::max(0, int(std::ceil((lo[a] - mVoxelSize + half) / mVoxelSize - 0.5)));
+            i1[a] = std::min(resolution - 1, int(std::floor((hi[a] + mVoxelSize + half) / mVoxelSize - 0.5)));
+        }
+        for (int k = i0[2]; k <= i1[2]; ++k)
+            for (int j = i0[1]; j <= i1[1]; ++j)
+                for (int i = i0[0]; i <= i1[0]; ++i)
+                    perTriangle[t].push_back((std::uint64_t(k) * resolution + j) * resolution + i);
+    });
+    std::vector<std::uint64_t> candidates;
+    for (const auto& keys : perTriangle) candidates.insert(candidates.end(), keys.begin(), keys.end());
+    tbb::parallel_sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+
+    std::vector<char> marked(candidates.size(), 0);
+    tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t n) {
+        const std::uint64_t key = candidates[n];
+        const glm::dvec3 centre(-half + (double(key % resolution) + 0.5) * mVoxelSize,
+                                -half + (double(key / resolution % resolution) + 0.5) * mVoxelSize,
+                                -half + (double(key / (std::uint64_t(resolution) * resolution)) + 0.5) * mVoxelSize);
+        int triangle = -1;
+        const core::TrianglePoint closest = bvh.closestPoint(centre, mVoxelSize, triangle);
+        marked[n] = triangle >= 0 && closest.distanceSquared < mVoxelSize * mVoxelSize;
+    });
+    for (std::size_t n = 0; n < candidates.size(); ++n)
+        if (marked[n]) mMarked.push_back(candidates[n]);
+}
+
+std::uint64_t VisibilityGrid::keyOf(const glm::vec3& p) const
+{
+    std::uint64_t index[3];
+    for (int a = 0; a < 3; ++a) {
+        const double i = std::floor((double(p[a]) + vdb::kBoxHalfExtent) / mVoxelSize);
+        if (!(i >= 0.0 && i < mResolution)) return kNoVoxel;
+        index[a] = std::uint64_t(i);
+    }
+    return (index[2] * mResolution + index[1]) * mResolution + index[0];
+}
+
+std::size_t VisibilityGrid::countMarked(std::vector<std::uint64_t>& keys) const
+{
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::size_t count = 0;
+    for (std::uint64_t key : keys) count += std::binary_search(mMarked.begin(), mMarked.end(), key) ? 1 : 0;
+    return count;
+}
+
+}  // namespace ivis::render

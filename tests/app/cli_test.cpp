@@ -1,0 +1,387 @@
+// The `inversevis` program as a user runs it: exit statuses, the one-line error contract, and
+// that bad input never leaves an output (or a temporary) behind.
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+namespace {
+
+namespace fs = std::filesystem;
+using test::CliResult;
+using test::runCli;
+using test::sharedMesh;
+using test::TempDir;
+using test::writeFile;
+
+/// One triangle: 3 vertices, OBJ numbering from 1.
+constexpr const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+/// A closed tetrahedron 1-2-3-4 plus the zero-area triangle 1-5-2 (vertex 5 lies on edge 1-2),
+/// which reading drops and logs.
+constexpr const char* kTetraWithDegenerateObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
+                                                "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 5 2\n";
+
+/// Shell-quotes a path for runCli.
+std::string quoted(const std::string& path) { return "'" + path + "'"; }
+
+/// Everything inside @a folder (files and sub-folders, recursively), relative to it.
+std::vector<std::string> contents(const std::string& folder)
+{
+    std::vector<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        names.push_back(fs::relative(entry.path(), folder).string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+/// Expects the bad-input contract: status 2, nothing on stdout, exactly one stderr line
+/// "inversevis: error: ..." that contains every one of @a parts.
+void expectBadInput(const CliResult& result, const std::vector<std::string>& parts)
+{
+    EXPECT_EQ(result.status, 2) << result.err;
+    EXPECT_EQ(result.out, "");
+    EXPECT_EQ(result.err.rfind("inversevis: error: ", 0), 0u) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_TRUE(!result.err.empty() && result.err.back() == '\n') << result.err;
+    for (const std::string& part : parts)
+        EXPECT_NE(result.err.find(part), std::string::npos) << "'" << part << "' not in: " << result.err;
+}
+
+/// Writes input files to one folder and points every output at another, which must stay empty
+/// whenever the program rejects its input.
+class Cli : public testing::Test {
+protected:
+    /// Path of input file @a name (written by the test).
+    std::string input(const std::string& name) const { return mInputs.file(name); }
+    /// Path of output file @a name.
+    std::string output(const std::string& name) const { return mOutputs.file(name); }
+
+    /// `sdf MESH --res 48 -o OUT/s.vdb EXTRA`.
+    std::string sdf(const std::string& mesh, const std::string& extra = "") const
+    {
+        return "sdf " + quoted(mesh) + " --res 48 -o " + quoted(output("s.vdb")) + " " + extra;
+    }
+    /// `render MESH --res 32x32 --volume-res 48 -o OUT/x.png EXTRA` (the volume cache goes to OUT too).
+    std::string render(const std::string& mesh, const std::string& extra = "") const
+    {
+        return "render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o " + quoted(output("x.png")) + " " + extra;
+    }
+
+    /// Runs @a arguments, expects the bad-input contract and an untouched output folder.
+    void expectRejected(const std::string& arguments, const std::vector<std::string>& parts) const
+    {
+        SCOPED_TRACE(arguments);
+        expectBadInput(runCli(arguments), parts);
+        EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{});
+    }
+    /// expectRejected for both `sdf` and `render` of @a mesh.
+    void expectMeshRejected(const std::string& mesh, const std::vector<std::string>& parts) const
+    {
+        expectRejected(sdf(mesh), parts);
+        expectRejected(render(mesh), parts);
+    }
+
+    TempDir mInputs;
+    TempDir mOutputs;
+};
+
+// ----------------------------------------------------------------------------------------------
+// Bad mesh files
+// ----------------------------------------------------------------------------------------------
+
+TEST_F(Cli, MissingFile)
+{
+    const std::string path = input("missing.ply");
+    expectMeshRejected(path, {path + ": file not found"});
+    expectBadInput(runCli("info " + quoted(path)), {path + ": file not found"});
+}
+
+TEST_F(Cli, UnreadableFile)
+{
+    expectMeshRejected(mInputs.path(), {mInputs.path() + ": is a directory, not a file"});
+
+    const std::string path = input("locked.obj");
+    writeFile(path, kTriangleObj);
+    ASSERT_EQ(::chmod(path.c_str(), 0), 0);
+    // root reads anything: run the program as "nobody". Real and effective ids both change (the
+    // shell would reset an effective id alone); the saved id stays root so that we can return.
+    const bool root = ::geteuid() == 0;
+    if (root) {
+        ASSERT_EQ(::setresuid(65534, 65534, 0), 0);
+    }
+    const CliResult result = runCli(sdf(path));
+    if (root) {
+        ASSERT_EQ(::setresuid(0, 0, 0), 0);
+    }
+    expectBadInput(result, {path + ": cannot read file (permission denied)"});
+    EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{});
+}
+
+TEST_F(Cli, UnknownFormat)
+{
+    const std::string path = input("points.xyz");
+    writeFile(path, "0 0 0\n1 0 0\n0 1 0\n");
+    expectMeshRejected(path, {path + ": unknown mesh format '.xyz' (expected .obj, .off, .ply, .stl)"});
+}
+
+TEST_F(Cli, TextInAPlyFile)
+{
+    const std::string path = input("notes.ply");
+    writeFile(path, "this is not a mesh\n");
+    expectMeshRejected(path, {path + ": not a valid PLY mesh"});
+}
+
+TEST_F(Cli, RandomBytesInAnStlFile)
+{
+    std::mt19937 rng(11);
+    std::string noise(300, '\0');
+    for (char& c : noise) c = char(rng());
+    const std::string path = input("noise.stl");
+    writeFile(path, noise);
+    expectMeshRejected(path, {path + ": not a valid STL mesh"});
+}
+
+TEST_F(Cli, ZeroTriangles)
+{
+    const std::string path = input("points.obj");
+    writeFile(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    expectMeshRejected(path, {path + ": mesh has no triangles"});
+}
+
+TEST_F(Cli, NonFiniteCoordinates)
+{
+    const std::string obj = input("nan.obj");
+    writeFile(obj, "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+    expectMeshRejected(obj, {obj + ": vertex 2 has a non-finite coordinate"});  // OBJ counts from 1
+    const std::string off = input("inf.off");
+    writeFile(off, "OFF\n3 1 0\n0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n");
+    expectMeshRejected(off, {off + ": vertex 1 has a non-finite coordinate"});
+}
+
+TEST_F(Cli, OutOfRangeIndexInObj)
+{
+    const std::string path = input("bad.obj");
+    writeFile(path, std::string(kTriangleObj) + "f 1 2 9\n");
+    expectMeshRejected(path, {path + ": face 2 references vertex 9 but the mesh has 3 vertices"});
+}
+
+TEST_F(Cli, OutOfRangeIndexInPly)
+{
+    const std::string path = input("bad.ply");
+    writeFile(path, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                    "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    expectMeshRejected(path, {path + ": face 0 references vertex 7 but the mesh has 3 vertices"});
+}
+
+// ----------------------------------------------------------------------------------------------
+// Bad scalars
+// ----------------------------------------------------------------------------------------------
+
+TEST_F(Cli, ScalarFileWithTheWrongCount)
+{
+    const std::string values = input("w.txt");
+    writeFile(values, "1 2 3\n");
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    const std::string problem = values + ": expected 1104 scalar values (one per vertex), found 3";
+    expectRejected(sdf(mesh, "--scalar-file " + quoted(values)), {problem});
+    expectRejected(render(mesh, "--scalar-file " + quoted(values)), {problem});
+}
+
+TEST_F(Cli, ScalarFileWithANonNumber)
+{
+    const std::string mesh = input("t.obj");
+    const std::string values = input("w.txt");
+    writeFile(mesh, kTriangleObj);
+    writeFile(values, "1 2 x\n");
+    expectRejected(sdf(mesh, "--scalar-file " + quoted(values)), {values + ": value 2 'x' is not a number"});
+}
+
+TEST_F(Cli, UnknownScalarNameListsTheNamesThatExist)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    const std::vector<std::string> parts = {
+        mesh + ": no per-vertex scalar 'wss'",
+        "available: pressure_t200, pressure_t400, pressure_t600, pressure_t800, pressure_t1000"};
+    expectRejected(sdf(mesh, "--scalar wss"), parts);
+    expectRejected(render(mesh, "--scalar wss"), parts);
+}
+
+// ----------------------------------------------------------------------------------------------
+// Bad option values
+// ----------------------------------------------------------------------------------------------
+
+TEST_F(Cli, UnknownRenderMethod)
+{
+    expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--method ring"),
+                   {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis)"});
+}
+
+TEST_F(Cli, BadImageResolution)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    expectRejected("render " + quoted(mesh) + " --volume-res 48 --res 10y10 -o " + quoted(output("x.png")),
+                   {"--res '10y10': expected WIDTHxHEIGHT"});
+    expectRejected("sdf " + quoted(mesh) + " --res 10y10 -o " + quoted(output("s.vdb")), {"--res", "10y10"});
+}
+
+TEST_F(Cli, OutOfRangeVolumeResolution)
+{
+    expectRejected("sdf " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) + " --res 8 -o " +
+                       quoted(output("s.vdb")),
+                   {"volume resolution 8 is out of range"});
+}
+
+TEST_F(Cli, UnknownColourMap)
+{
+    expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--colormap jet"),
+                   {"unknown colour map 'jet' (known: viridis, coolwarm, grey)"});
+}
+
+TEST_F(Cli, RangeLoMustBeBelowHi)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    expectRejected(render(mesh, "--range 2 1"), {"invalid range [2, 1]: lo must be less than hi"});
+    expectRejected(render(mesh, "--range 1 1"), {"invalid range [1, 1]: lo must be less than hi"});
+}
+
+TEST_F(Cli, BadCameraFile)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    const std::string text = input("text.json");
+    writeFile(text, "not json\n");
+    expectRejected(render(mesh, "--camera " + quoted(text)), {text + ": bad camera file"});
+    const std::string shape = input("shape.json");
+    writeFile(shape, R"({"eye": [1, 2], "target": [0, 0, 0]})");
+    expectRejected(render(mesh, "--camera " + quoted(shape)), {shape + ": bad camera file ('eye' must be [x, y, z])"});
+}
+
+TEST_F(Cli, BadFlagFailsBeforeTheMeshIsReadAndLogged)
+{
+    // Reading this mesh logs a line (dropped triangle), capping another; neither may precede the error.
+    const std::string path = input("tetra.obj");
+    writeFile(path, kTetraWithDegenerateObj);
+    expectRejected(render(path, "--colormap jet"), {"unknown colour map 'jet'"});
+    expectRejected(render("scene:vessel-tree", "--cap-holes --range 2 1"), {"invalid range [2, 1]"});
+}
+
+TEST_F(Cli, WritingIntoAMissingFolderLeavesNothing)
+{
+    // The render's volume cache would go beside the picture; no folder may be created for it.
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    const std::string picture = output("no-such-folder") + "/x.png";
+    expectRejected("render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o " + quoted(picture),
+                   {picture + ": cannot write (folder '" + output("no-such-folder") + "' does not exist)"});
+    const std::string exr = output("no-such-folder") + "/x.exr";
+    expectRejected(render(mesh, "--exr " + quoted(exr)), {exr + ": cannot write"});
+    const std::string volume = output("no-such-folder") + "/s.vdb";
+    expectRejected("sdf " + quoted(mesh) + " --res 48 -o " + quoted(volume), {volume + ": cannot write"});
+
+    ASSERT_FALSE(fs::exists("/nonexistent"));
+    expectBadInput(runCli("render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o /nonexistent/x.png"),
+                   {"/nonexistent/x.png: cannot write"});
+    EXPECT_FALSE(fs::exists("/nonexistent"));
+}
+
+// ----------------------------------------------------------------------------------------------
+// Reports
+// ----------------------------------------------------------------------------------------------
+
+TEST_F(Cli, InfoJsonReportsCountsAndPressureScalars)
+{
+    const CliResult result = runCli("info " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) + " --json");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json info = nlohmann::json::parse(result.out);
+    EXPECT_EQ(info.at("vertices"), 1104);
+    EXPECT_EQ(info.at("triangles"), 2204);
+    EXPECT_EQ(info.at("boundary_edges"), 0);
+    EXPECT_EQ(info.at("open_mesh"), false);
+    // MANIFEST.md: name, min, max (4 significant digits).
+    const struct {
+        const char* name;
+        double min, max;
+    } expected[] = {{"pressure_t200", 0.2294, 0.7932},
+                    {"pressure_t400", 0.09313, 0.2698},
+                    {"pressure_t600", -0.009525, 0.1407},
+                    {"pressure_t800", -0.0451, 0.08232},
+                    {"pressure_t1000", -0.05931, 0.04502}};
+    const nlohmann::json& scalars = info.at("scalars");
+    ASSERT_EQ(scalars.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) {
+        EXPECT_EQ(scalars[i].at("name"), expected[i].name);
+        EXPECT_NEAR(scalars[i].at("min").get<double>(), expected[i].min, 1e-4) << expected[i].name;
+        EXPECT_NEAR(scalars[i].at("max").get<double>(), expected[i].max, 1e-4) << expected[i].name;
+        EXPECT_EQ(scalars[i].at("nan_count"), 0) << expected[i].name;
+    }
+}
+
+TEST_F(Cli, InfoReportsTheOpenLeftAtrium)
+{
+    const CliResult result = runCli("info " + quoted(sharedMesh("lasc2013_b003_left_atrium.ply")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.out.find("boundary edges  462 (open)"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("triangles       20576"), std::string::npos) << result.out;
+}
+
+TEST_F(Cli, SdfJsonReportsTheVolumeAndReusesItsCache)
+{
+    const std::string arguments = "sdf scene:sphere --res 64 --json -o " + quoted(output("s.vdb"));
+    const CliResult first = runCli(arguments);
+    ASSERT_EQ(first.status, 0) << first.err;
+    const nlohmann::json report = nlohmann::json::parse(first.out);  // exactly one JSON value
+    ASSERT_TRUE(report.is_object());
+    EXPECT_EQ(report.at("cache"), "built");
+    EXPECT_EQ(report.at("resolution"), 64);
+    EXPECT_DOUBLE_EQ(report.at("voxel_size").get<double>(), 5.0 / 64.0);  // box [-2.5,2.5]^3
+    EXPECT_GT(report.at("active_voxels").get<std::int64_t>(), 0);
+    EXPECT_GT(report.at("memory_bytes").get<std::int64_t>(), 0);
+    EXPECT_GE(report.at("seconds").get<double>(), 0.0);
+    EXPECT_EQ(report.at("open_mesh"), false);
+    EXPECT_EQ(report.at("triangles"), 5120);  // icosphere, 4 subdivisions
+    EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{"s.vdb"});
+
+    const CliResult second = runCli(arguments);
+    ASSERT_EQ(second.status, 0) << second.err;
+    EXPECT_EQ(nlohmann::json::parse(second.out).at("cache"), "reused");
+    EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{"s.vdb"});
+}
+
+TEST_F(Cli, SdfOfTheOpenVesselTreeIsUnsignedUnlessCapped)
+{
+    const CliResult open = runCli("sdf scene:vessel-tree --res 64 --json -o " + quoted(output("open.vdb")));
+    ASSERT_EQ(open.status, 0) << open.err;
+    const nlohmann::json openReport = nlohmann::json::parse(open.out);
+    EXPECT_EQ(openReport.at("open_mesh"), true);
+    EXPECT_EQ(openReport.at("unsigned_distance"), true);
+
+    const CliResult capped =
+        runCli("sdf scene:vessel-tree --res 64 --json --cap-holes -o " + quoted(output("capped.vdb")));
+    ASSERT_EQ(capped.status, 0) << capped.err;
+    const nlohmann::json cappedReport = nlohmann::json::parse(capped.out);
+    EXPECT_EQ(cappedReport.at("open_mesh"), false);
+    EXPECT_EQ(cappedReport.at("unsigned_distance"), false);
+}
+
+TEST_F(Cli, DegenerateTrianglesAreDroppedWithACount)
+{
+    const std::string path = input("tetra.obj");
+    writeFile(path, kTetraWithDegenerateObj);
+    const CliResult result = runCli(sdf(path));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find(path + ": dropped 1 degenerate"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace ivis::app
