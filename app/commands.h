@@ -24,4 +24,10 @@ Command addSdfCommand(CLI::App& app);
 /// @brief `inversevis render MESH`: a method's picture to PNG, EXR layers, stats and camera JSON.
 Command addRenderCommand(CLI::App& app);
 
+/// @brief `inversevis optimize MESH`: best viewpoint and parameters by simulated annealing.
+Command addOptimizeCommand(CLI::App& app);
+
+/// @brief `inversevis evaluate MESH...`: the paper's visibility and timing tables.
+Command addEvaluateCommand(CLI::App& app);
+
 }  // namespace ivis::app

@@ -16,7 +16,9 @@ int main(int argc, char** argv)
     app.add_flag("-q,--quiet", quiet, "Print only warnings and errors");
     const std::vector<ivis::app::Command> commands = {ivis::app::addInfoCommand(app),
                                                        ivis::app::addSdfCommand(app),
-                                                       ivis::app::addRenderCommand(app)};
+                                                       ivis::app::addRenderCommand(app),
+                                                       ivis::app::addOptimizeCommand(app),
+                                                       ivis::app::addEvaluateCommand(app)};
     try {
         app.parse(argc, argv);
         if (quiet) ivis::core::setLogLevel(ivis::core::LogLevel::Warning);

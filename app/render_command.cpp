@@ -1,9 +1,9 @@
 // `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera.
 #include "commands.h"
+#include "json_output.h"
 #include "mesh_options.h"
 #include "view_options.h"
 
-#include <ivis/core/atomic_file.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 namespace ivis::app {
@@ -89,12 +88,7 @@ Command addRenderCommand(CLI::App& app)
                                       {"volume_cache", volumePath},
                                       {"output", options->output},
                                       {"camera", cameraPath}};
-        if (!options->statsJson.empty())
-            core::writeAtomically(options->statsJson, [&](const std::string& path) {
-                std::ofstream out(path);
-                out << stats.dump(2) << "\n";
-                if (!out) throw std::runtime_error("write failed");
-            });
+        if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
                       std::to_string(renderOptions.height) + ", " + render::toString(renderOptions.method.method) +
                       ", " + std::to_string(s.seconds) + " s render)");

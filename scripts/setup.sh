@@ -9,6 +9,7 @@ IVIS_PACKAGES=(
   build-essential cmake ccache pkg-config
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
   libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev
+  libglfw3-dev libepoxy-dev libimgui-dev xvfb libgl1-mesa-dri xauth
 )
 
 ivis_missing_packages() {

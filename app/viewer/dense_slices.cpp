@@ -10,28 +10,23 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 namespace ivis::app {
 namespace {
 
-/// World box of voxel centres of a grid's active bounding box grown by one voxel.
+/// World box of the voxel centres of a grid's active bounding box grown by one voxel (the box
+/// render::DenseGrid copies).
 struct WorldBox {
     glm::dvec3 lo{0.0}, hi{0.0};
 };
 
-template <typename GridT>
-WorldBox activeWorldBox(const GridT& grid)
+WorldBox activeWorldBox(const openvdb::FloatGrid& grid)
 {
     openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
     box.expand(1);
     const openvdb::Vec3d lo = grid.indexToWorld(box.min()), hi = grid.indexToWorld(box.max());
     return {{lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()}};
-}
-
-/// The grid the CPU renderer densifies for far samples: the far field, else the fine band.
-const openvdb::FloatGrid& distanceSource(const vdb::SurfaceVolume& volume)
-{
-    return volume.farPhi ? *volume.farPhi : *volume.phi;
 }
 
 /// Dims and first lattice indices of @a box at @a resolution.
@@ -40,38 +35,48 @@ void boxLattice(const WorldBox& box, int resolution, std::array<int, 3>& dims, s
     for (int a = 0; a < 3; ++a) {
         const std::array<int, 2> range = detail::latticeRange(box.lo[a], box.hi[a], resolution);
         first[a] = range[0];
-        dims[a] = std::max(1, range[1] - range[0] + 1);
+        dims[a] = range[1] - range[0] + 1;
     }
 }
 
-template <typename T>
-void shapeBox(DenseBox<T>& out, const WorldBox& box, int resolution, std::array<int, 3>& first)
+std::size_t voxelCount(const WorldBox& box, int resolution, int& largestDim)
 {
+    std::array<int, 3> dims, first;
+    boxLattice(box, resolution, dims, first);
+    largestDim = std::max({largestDim, dims[0], dims[1], dims[2]});
+    return std::size_t(dims[0]) * dims[1] * dims[2];
+}
+
+template <typename T>
+std::array<int, 3> shapeBox(DenseBox<T>& out, const WorldBox& box, int resolution)
+{
+    std::array<int, 3> first;
     boxLattice(box, resolution, out.dims, first);
     const double voxel = 2.0 * vdb::kBoxHalfExtent / resolution;
     for (int a = 0; a < 3; ++a) out.origin[a] = float(-vdb::kBoxHalfExtent + (first[a] + 0.5) * voxel);
     out.values.assign(out.count(), T{});
+    return first;
 }
 
-std::size_t slicesBytes(const WorldBox& far, const WorldBox& band, int resolution, int& largestDim)
-{
-    std::array<int, 3> d1, d2, f;
-    boxLattice(far, resolution, d1, f);
-    boxLattice(band, resolution, d2, f);
-    largestDim = std::max({d1[0], d1[1], d1[2], d2[0], d2[1], d2[2]});
-    return 4 * (std::size_t(d1[0]) * d1[1] * d1[2] + std::size_t(d2[0]) * d2[1] * d2[2]);
-}
-
-/// Progress over the slices of both boxes, reported from any thread.
-class SliceProgress {
+/// Runs @a slice(z, sampler) for every z slice of a box in parallel, reporting progress.
+class SliceRunner {
 public:
-    SliceProgress(core::Interrupter* interrupter, int total) : mInterrupter(interrupter), mTotal(std::max(1, total)) {}
-    /// One slice done; true when the user cancelled.
-    bool step()
+    SliceRunner(core::Interrupter* interrupter, int totalSlices)
+        : mInterrupter(interrupter), mTotal(std::max(1, totalSlices))
     {
-        const int done = ++mDone;
-        if (mInterrupter && mInterrupter->wasInterrupted(int(100.0 * done / mTotal))) mCancelled = true;
-        return mCancelled;
+    }
+    void run(const render::DistanceField& field, int slices,
+             const std::function<void(int, render::DistanceField::Sampler&)>& slice)
+    {
+        tbb::parallel_for(tbb::blocked_range<int>(0, slices), [&](const tbb::blocked_range<int>& zs) {
+            render::DistanceField::Sampler sampler = field.sampler();
+            for (int z = zs.begin(); z != zs.end(); ++z) {
+                if (mCancelled) return;
+                slice(z, sampler);
+                const int done = ++mDone;
+                if (mInterrupter && mInterrupter->wasInterrupted(int(100.0 * done / mTotal))) mCancelled = true;
+            }
+        });
     }
     bool cancelled() const { return mCancelled; }
 
@@ -81,6 +86,12 @@ private:
     std::atomic<int> mDone{0};
     std::atomic<bool> mCancelled{false};
 };
+
+template <typename T>
+std::size_t indexOf(const DenseBox<T>& box, int x, int y, int z)
+{
+    return (std::size_t(z) * box.dims[1] + y) * box.dims[0] + x;
+}
 
 }  // namespace
 
@@ -97,37 +108,39 @@ std::array<int, 2> detail::latticeRange(double lo, double hi, int resolution)
 
 std::string DenseSlices::describe() const
 {
-    char text[512];
+    char text[640];
     const double mib = double(bytes()) / double(1 << 20), budget = double(budgetBytes) / double(1 << 20);
+    const std::string farText = hasFineBand ? ", far field at " + std::to_string(farResolution) : "";
     if (exact())
         std::snprintf(text, sizeof text,
-                      "GPU volume: resolution %d (voxel %.4f), the volume's own; distance %dx%dx%d + triangles "
-                      "%dx%dx%d = %.1f MiB of %.0f MiB",
-                      shownResolution, voxelSize, distance.dims[0], distance.dims[1], distance.dims[2],
-                      triangles.dims[0], triangles.dims[1], triangles.dims[2], mib, budget);
+                      "GPU volume: resolution %d (voxel %.4f), the volume's own%s; %.1f MiB of %.0f MiB", shownResolution,
+                      voxelSize, farText.c_str(), mib, budget);
     else
         std::snprintf(text, sizeof text,
-                      "GPU volume: resolution %d (voxel %.4f), RESAMPLED from %d to fit %.0f MiB; distance %dx%dx%d "
-                      "+ triangles %dx%dx%d = %.1f MiB",
-                      shownResolution, voxelSize, volumeResolution, budget, distance.dims[0], distance.dims[1],
-                      distance.dims[2], triangles.dims[0], triangles.dims[1], triangles.dims[2], mib);
+                      "GPU volume: resolution %d (voxel %.4f), RESAMPLED from %d to fit %.0f MiB%s; %.1f MiB",
+                      shownResolution, voxelSize, volumeResolution, budget, farText.c_str(), mib);
     return text;
 }
 
 int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOptions& options)
 {
     const vdb::SurfaceVolume& volume = scene.volume();
-    const WorldBox far = activeWorldBox(distanceSource(volume)), band = activeWorldBox(*volume.phi);
+    const WorldBox band = activeWorldBox(*volume.phi);
+    int farLargest = 0;
+    std::size_t farCount = 0;
+    if (volume.farPhi) farCount = voxelCount(activeWorldBox(*volume.farPhi), volume.options.farFieldResolution, farLargest);
     int resolution = volume.options.resolution;
     for (;;) {
-        int largest = 0;
-        const std::size_t bytes = slicesBytes(far, band, resolution, largest);
+        int largest = farLargest;
+        // Per band voxel 8 bytes: band phi + triangle, or (without a far field) far copy + triangle.
+        const std::size_t bytes = 4 * farCount + 8 * voxelCount(band, resolution, largest);
         if (bytes <= options.budgetBytes && largest <= options.maxTextureSize) return resolution;
         if (resolution <= 16)
             throw ValueError("the volume textures do not fit " + std::to_string(options.budgetBytes >> 20) +
                              " MiB even at resolution 16");
         // Bytes scale with N^3 and dims with N: jump close to the answer, then creep down.
-        const double scale = std::min(std::cbrt(double(options.budgetBytes) / double(bytes)),
+        const double room = double(options.budgetBytes) - 4.0 * double(farCount);
+        const double scale = std::min(std::cbrt(std::max(room, 1.0) / double(bytes - 4 * farCount)),
                                       double(options.maxTextureSize) / double(largest));
         resolution = std::max(16, std::min(resolution - 1, int(std::floor(resolution * scale * 0.999))));
     }
@@ -143,71 +156,89 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.volumeResolution = volume.options.resolution;
     slices.shownResolution = chooseShownResolution(scene, options);
     slices.voxelSize = float(2.0 * vdb::kBoxHalfExtent / slices.shownResolution);
+    slices.hasFineBand = bool(volume.farPhi);
     slices.reach = field.reach();
-    {
-        render::DistanceField::Sampler sampler = field.sampler();
-        slices.outside = sampler.phi(glm::vec3(1e3f));  // the dense far copy's background
-    }
+    slices.unsignedDistance = field.isUnsigned();
+    const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
+    slices.outside = farSource.background();
+    slices.farResolution = volume.farPhi ? volume.options.farFieldResolution : slices.shownResolution;
+    slices.farVoxelSize = float(2.0 * vdb::kBoxHalfExtent / slices.farResolution);
+    slices.trustBelow = volume.phi->background() + float(farSource.voxelSize()[0]);
     const bool exact = slices.exact();
-    std::array<int, 3> farFirst, bandFirst;
-    shapeBox(slices.distance, activeWorldBox(distanceSource(volume)), slices.shownResolution, farFirst);
-    shapeBox(slices.triangles, activeWorldBox(*volume.phi), slices.shownResolution, bandFirst);
+    const WorldBox bandBox = activeWorldBox(*volume.phi);
+
+    const std::array<int, 3> farFirst = shapeBox(slices.far, activeWorldBox(farSource), slices.farResolution);
+    std::array<int, 3> bandFirst{0, 0, 0};
+    if (slices.hasFineBand) bandFirst = shapeBox(slices.band, bandBox, slices.shownResolution);
+    const std::array<int, 3> triangleFirst = shapeBox(slices.triangles, bandBox, slices.shownResolution);
 
     if (interrupter) interrupter->start("GPU volume");
-    SliceProgress progress(interrupter, slices.distance.dims[2] + slices.triangles.dims[2]);
-    const float voxel = slices.voxelSize;
+    SliceRunner runner(interrupter, slices.far.dims[2] + slices.band.dims[2] + slices.triangles.dims[2]);
 
-    // Distance: the fine voxel where it is active (exactly what the CPU's fine cells interpolate),
-    // else the field's own sample (far field, or background outside every grid).
-    DenseBox<float>& distance = slices.distance;
-    tbb::parallel_for(tbb::blocked_range<int>(0, distance.dims[2]), [&](const tbb::blocked_range<int>& zs) {
-        render::DistanceField::Sampler sampler = field.sampler();
-        auto fine = volume.phi->getConstAccessor();
-        for (int z = zs.begin(); z != zs.end(); ++z) {
-            if (progress.cancelled()) return;
-            for (int y = 0; y < distance.dims[1]; ++y)
-                for (int x = 0; x < distance.dims[0]; ++x) {
-                    const glm::vec3 centre = distance.origin + voxel * glm::vec3(float(x), float(y), float(z));
-                    float value;
-                    const openvdb::Coord ijk(farFirst[0] + x, farFirst[1] + y, farFirst[2] + z);
-                    if (!(exact && fine.probeValue(ijk, value))) value = sampler.phi(centre);
-                    distance.values[(std::size_t(z) * distance.dims[1] + y) * distance.dims[0] + x] = value;
-                }
-            progress.step();
-        }
+    // Far copy: render::DenseGrid's values (the source grid's voxels); resampled only without a far field.
+    DenseBox<float>& far = slices.far;
+    const bool farIsCopy = slices.hasFineBand || exact;
+    runner.run(field, far.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
+        auto accessor = farSource.getConstAccessor();
+        for (int y = 0; y < far.dims[1]; ++y)
+            for (int x = 0; x < far.dims[0]; ++x) {
+                const openvdb::Coord ijk(farFirst[0] + x, farFirst[1] + y, farFirst[2] + z);
+                const glm::vec3 centre = far.origin + slices.farVoxelSize * glm::vec3(float(x), float(y), float(z));
+                far.values[indexOf(far, x, y, z)] = farIsCopy ? accessor.getValue(ijk) : sampler.phi(centre);
+            }
     });
 
-    // Triangles: the grid's own value at its resolution; resampled, the exact closest triangle of
-    // every centre near the surface (landing points lie within half a voxel of it).
-    DenseBox<std::int32_t>& triangles = slices.triangles;
-    const double searchRadius = 2.5 * voxel;
-    // Far-field values are within half a coarse voxel of the exact distance.
-    const double prefilter = searchRadius + field.voxelSize() + vdb::kBoxHalfExtent / volume.options.farFieldResolution;
-    tbb::parallel_for(tbb::blocked_range<int>(0, triangles.dims[2]), [&](const tbb::blocked_range<int>& zs) {
-        render::DistanceField::Sampler sampler = field.sampler();
-        auto ids = volume.triangle->getConstAccessor();
-        for (int z = zs.begin(); z != zs.end(); ++z) {
-            if (progress.cancelled()) return;
-            for (int y = 0; y < triangles.dims[1]; ++y)
-                for (int x = 0; x < triangles.dims[0]; ++x) {
-                    std::int32_t id = -1;
-                    if (exact) {
-                        id = ids.getValue(openvdb::Coord(bandFirst[0] + x, bandFirst[1] + y, bandFirst[2] + z));
-                    } else {
-                        const glm::vec3 centre = triangles.origin + voxel * glm::vec3(float(x), float(y), float(z));
-                        if (std::abs(sampler.phi(centre)) <= prefilter) {
-                            int closest = -1;
-                            scene.bvh().closestPoint(glm::dvec3(centre), searchRadius, closest);
-                            id = closest;
-                        }
-                    }
-                    triangles.values[(std::size_t(z) * triangles.dims[1] + y) * triangles.dims[0] + x] = id;
+    // Fine band: the voxel where it is active; resampled, the field where the fine cell is in the band.
+    DenseBox<float>& band = slices.band;
+    const float fineVoxel = float(volume.voxelSize());
+    const glm::vec3 fineOrigin(float(-vdb::kBoxHalfExtent + 0.5 * volume.voxelSize()));
+    runner.run(field, band.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
+        auto accessor = volume.phi->getConstAccessor();
+        for (int y = 0; y < band.dims[1]; ++y)
+            for (int x = 0; x < band.dims[0]; ++x) {
+                float value = kInactiveBandValue;
+                if (exact) {
+                    if (!accessor.probeValue(openvdb::Coord(bandFirst[0] + x, bandFirst[1] + y, bandFirst[2] + z), value))
+                        value = kInactiveBandValue;
+                } else {
+                    const glm::vec3 centre = band.origin + slices.voxelSize * glm::vec3(float(x), float(y), float(z));
+                    const glm::vec3 q = (centre - fineOrigin) / fineVoxel;
+                    const openvdb::Coord base(int(std::floor(q.x)), int(std::floor(q.y)), int(std::floor(q.z)));
+                    bool inBand = true;
+                    for (int i = 0; i < 8 && inBand; ++i)
+                        inBand = accessor.isValueOn(base.offsetBy(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+                    if (inBand) value = sampler.phi(centre);
                 }
-            progress.step();
-        }
+                band.values[indexOf(band, x, y, z)] = value;
+            }
+    });
+
+    // Triangles: the grid's own value; resampled, the exact closest triangle of every centre near the
+    // surface (landing points lie within half a voxel of it).
+    DenseBox<std::int32_t>& triangles = slices.triangles;
+    const double searchRadius = 2.5 * slices.voxelSize;
+    // Far-field values are within half a coarse voxel of the exact distance.
+    const double prefilter = searchRadius + fineVoxel + 0.5 * slices.farVoxelSize;
+    runner.run(field, triangles.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
+        auto ids = volume.triangle->getConstAccessor();
+        for (int y = 0; y < triangles.dims[1]; ++y)
+            for (int x = 0; x < triangles.dims[0]; ++x) {
+                std::int32_t id = -1;
+                if (exact) {
+                    id = ids.getValue(openvdb::Coord(triangleFirst[0] + x, triangleFirst[1] + y, triangleFirst[2] + z));
+                } else {
+                    const glm::vec3 centre = triangles.origin + slices.voxelSize * glm::vec3(float(x), float(y), float(z));
+                    if (std::abs(sampler.phi(centre)) <= prefilter) {
+                        int closest = -1;
+                        scene.bvh().closestPoint(glm::dvec3(centre), searchRadius, closest);
+                        id = closest;
+                    }
+                }
+                triangles.values[indexOf(triangles, x, y, z)] = id;
+            }
     });
     if (interrupter) interrupter->end();
-    if (progress.cancelled()) throw Cancelled("GPU volume cancelled");
+    if (runner.cancelled()) throw Cancelled("GPU volume cancelled");
     return slices;
 }
 

@@ -1,8 +1,10 @@
 /// @file dense_slices.h
-/// @brief The volume as the viewer uploads it ("dense slices"): a dense distance box over the
-///        region the curved rays fly through and a dense closest-triangle box around the surface,
-///        at the finest resolution that fits a GPU memory budget.
+/// @brief The volume as the viewer uploads it ("dense slices"): the CPU renderer's dense far-field
+///        copy, a dense box of the fine narrow band and a dense closest-triangle box around the
+///        surface, at the finest band resolution that fits a GPU memory budget.
 /// @note Built on the CPU from a RenderScene; the GL side only copies the arrays into 3D textures.
+///       The shaders combine the boxes exactly as render::DistanceField::Sampler does: the far copy
+///       everywhere, the fine band where all eight corners of a fine cell are in the band.
 #pragma once
 
 #include <ivis/core/interrupter.h>
@@ -18,8 +20,11 @@
 
 namespace ivis::app {
 
+/// @brief Value of a band voxel the CPU would not use (inactive in the fine grid).
+inline constexpr float kInactiveBandValue = 1e30f;
+
 /// @brief A dense box of voxels on the lattice of one resolution: voxel i is centred at
-///        -2.5 + (firstIndex + i + 0.5) * voxelSize on each axis; x varies fastest.
+///        @a origin + i * voxel size on each axis; x varies fastest.
 template <typename T>
 struct DenseBox {
     std::array<int, 3> dims{0, 0, 0};
@@ -32,44 +37,53 @@ struct DenseBox {
     std::size_t bytes() const { return count() * sizeof(T); }
 };
 
-/// @brief What the shaders sample: distance and closest triangle, plus how they were made.
+/// @brief What the shaders sample, and how it was made.
 struct DenseSlices {
-    /// phi at voxel centres over the far field's (or, without one, the fine band's) active box plus
-    /// one voxel; trilinear in the shader exactly as render::DenseGrid. Outside: @a outside.
-    DenseBox<float> distance;
-    /// Closest triangle index at voxel centres over the fine band's active box plus one voxel
-    /// (-1 = none), read at the nearest voxel as DistanceField::Sampler::nearestTriangle.
+    /// The CPU's dense far copy (render::DenseGrid of the far field, or of the fine grid when the
+    /// volume has no far field), at farResolution; outside it phi is @a outside.
+    DenseBox<float> far;
+    /// Fine band phi at shownResolution over the band's active box plus one voxel;
+    /// kInactiveBandValue where the CPU would not use the band. Empty when !hasFineBand.
+    DenseBox<float> band;
+    /// Closest triangle at shownResolution over the band's active box plus one voxel (-1 = none),
+    /// read at the nearest voxel as DistanceField::Sampler::nearestTriangle.
     DenseBox<std::int32_t> triangles;
-    float voxelSize = 0.0f;    ///< voxel size of both boxes (normalised units)
-    float outside = 0.0f;      ///< phi outside the distance box (the field's clamp value)
+    bool hasFineBand = false;  ///< the volume has a far field, so the band refines it near the surface
+    float farVoxelSize = 0.0f; ///< voxel size of @a far
+    float voxelSize = 0.0f;    ///< voxel size of @a band and @a triangles
+    float outside = 0.0f;      ///< phi outside @a far (the field's clamp value)
+    float trustBelow = 0.0f;   ///< far values above this never use the band (DistanceField's rule)
     float reach = 0.0f;        ///< exterior distance up to which phi is exact
+    bool unsignedDistance = false;  ///< phi is |distance| (open mesh)
     int volumeResolution = 0;  ///< resolution of the sparse volume
-    int shownResolution = 0;   ///< resolution of the boxes (== volumeResolution unless resampled)
+    int shownResolution = 0;   ///< resolution of band and triangles (== volumeResolution unless resampled)
+    int farResolution = 0;     ///< resolution of @a far
     std::size_t budgetBytes = 0;
 
     /// @brief True when the boxes hold the volume's own voxels (no resampling).
     bool exact() const { return shownResolution == volumeResolution; }
-    /// @brief Bytes of both boxes.
-    std::size_t bytes() const { return distance.bytes() + triangles.bytes(); }
+    /// @brief Bytes of all boxes.
+    std::size_t bytes() const { return far.bytes() + band.bytes() + triangles.bytes(); }
     /// @brief One line for the panel and stdout: what resolution is shown and why.
     std::string describe() const;
 };
 
 /// @brief Limits of the upload.
 struct DenseSliceOptions {
-    std::size_t budgetBytes = std::size_t(512) << 20;  ///< both boxes together
+    std::size_t budgetBytes = std::size_t(512) << 20;  ///< all boxes together
     int maxTextureSize = 2048;                          ///< GL_MAX_3D_TEXTURE_SIZE
 };
 
-/// @brief The largest resolution N' <= the volume's whose two boxes fit the budget and the texture
-///        size limit (the boxes shrink with N'^3).
+/// @brief The largest resolution N' <= the volume's whose boxes fit the budget and the texture
+///        size limit (band and triangle boxes shrink with N'^3; the far copy stays at its own).
 /// @throw ValueError when not even N' = 16 fits
 int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOptions& options);
 
-/// @brief Fills both boxes at chooseShownResolution(). At the volume's own resolution the values are
-///        the grids' voxels (distance: fine voxel when active, else the far field); when resampled,
-///        distance = DistanceField::Sampler::phi at the coarse centres and triangle = the exact
-///        closest triangle (BVH) of each centre within 2.5 coarse voxels of the surface.
+/// @brief Fills the boxes at chooseShownResolution(). At the volume's own resolution every value
+///        is a voxel of the grids, so the shaders interpolate exactly the numbers the CPU does.
+///        Resampled (N' < N): band = DistanceField::Sampler::phi at the coarse centres whose fine
+///        cell lies in the band, triangle = the exact closest triangle (BVH) of each centre within
+///        2.5 coarse voxels of the surface; without a far field the far copy itself is resampled.
 /// @param interrupter progress (percent) and cancel
 /// @throw ValueError (see chooseShownResolution); Cancelled when interrupted
 /// @warning Uses all TBB threads.

@@ -16,7 +16,7 @@
 namespace ivis::app {
 namespace {
 
-constexpr GLuint kDistanceUnit = 1, kTriangleUnit = 2, kColormapUnit = 3;
+constexpr GLuint kFarUnit = 1, kTriangleUnit = 2, kColormapUnit = 3, kBandUnit = 4;
 constexpr int kMaxHullSteps = 4096;  // the CPU's backward hull search is unbounded; 4096 is never reached in practice
 constexpr int kRingMaxSteps = 1000;
 
@@ -86,7 +86,8 @@ GpuRenderer::GpuRenderer()
       mPositions(newName(glGenBuffers)),
       mNormals(newName(glGenBuffers)),
       mIndices(newName(glGenBuffers)),
-      mDistance(newName(glGenTextures)),
+      mFar(newName(glGenTextures)),
+      mBand(newName(glGenTextures)),
       mTriangles(newName(glGenTextures)),
       mColormap(newName(glGenTextures)),
       mTarget(newName(glGenFramebuffers)),
@@ -143,27 +144,37 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
 {
     mHasVolume = false;
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glBindTexture(GL_TEXTURE_3D, mDistance.id());
-    textureParameters(GL_TEXTURE_3D, GL_NEAREST);
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, slices.distance.dims[0], slices.distance.dims[1], slices.distance.dims[2],
-                 0, GL_RED, GL_FLOAT, slices.distance.values.data());
-    checkGl("uploading the distance texture");
-    glBindTexture(GL_TEXTURE_3D, mTriangles.id());
-    textureParameters(GL_TEXTURE_3D, GL_NEAREST);
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_R32I, slices.triangles.dims[0], slices.triangles.dims[1],
-                 slices.triangles.dims[2], 0, GL_RED_INTEGER, GL_INT, slices.triangles.values.data());
-    checkGl("uploading the triangle texture");
+    auto upload = [](const GlTexture& texture, GLint internal, GLenum format, GLenum type, const std::array<int, 3>& dims,
+                     const void* data, const char* what) {
+        glBindTexture(GL_TEXTURE_3D, texture.id());
+        textureParameters(GL_TEXTURE_3D, GL_NEAREST);
+        const bool empty = dims[0] * dims[1] * dims[2] == 0;
+        const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glTexImage3D(GL_TEXTURE_3D, 0, internal, empty ? 1 : dims[0], empty ? 1 : dims[1], empty ? 1 : dims[2], 0,
+                     format, type, empty ? static_cast<const void*>(none) : data);
+        checkGl(what);
+    };
+    upload(mFar, GL_R32F, GL_RED, GL_FLOAT, slices.far.dims, slices.far.values.data(), "uploading the far-field texture");
+    upload(mBand, GL_R32F, GL_RED, GL_FLOAT, slices.band.dims, slices.band.values.data(), "uploading the band texture");
+    upload(mTriangles, GL_R32I, GL_RED_INTEGER, GL_INT, slices.triangles.dims, slices.triangles.values.data(),
+           "uploading the triangle texture");
     glBindTexture(GL_TEXTURE_3D, 0);
 
+    auto dims = [](const std::array<int, 3>& d) { return glm::ivec3(d[0], d[1], d[2]); };
     for (GlProgram* program : {&mMeshProgram, &mIndirectProgram}) {
-        program->set("uDistanceDims", glm::ivec3(slices.distance.dims[0], slices.distance.dims[1], slices.distance.dims[2]));
-        program->set("uDistanceOrigin", slices.distance.origin);
-        program->set("uTriangleDims",
-                     glm::ivec3(slices.triangles.dims[0], slices.triangles.dims[1], slices.triangles.dims[2]));
+        program->set("uFarDims", dims(slices.far.dims));
+        program->set("uFarOrigin", slices.far.origin);
+        program->set("uFarInvVoxel", 1.0f / slices.farVoxelSize);
+        program->set("uOutside", slices.outside);
+        program->set("uHasFineBand", slices.hasFineBand);
+        program->set("uTrustBelow", slices.trustBelow);
+        program->set("uBandDims", dims(slices.band.dims));
+        program->set("uBandOrigin", slices.band.origin);
+        program->set("uTriangleDims", dims(slices.triangles.dims));
         program->set("uTriangleOrigin", slices.triangles.origin);
         program->set("uVoxel", slices.voxelSize);
         program->set("uInvVoxel", 1.0f / slices.voxelSize);
-        program->set("uOutside", slices.outside);
+        program->set("uUnsigned", slices.unsignedDistance);
         program->set("uVolumeReady", true);
     }
     mIndirectProgram.set("uInteriorStep", interiorStep);
@@ -302,8 +313,10 @@ void GpuRenderer::render(const GpuFrame& frame)
     glClearBufferuiv(GL_COLOR, 1, clearRegion);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
 
-    glActiveTexture(GL_TEXTURE0 + kDistanceUnit);
-    glBindTexture(GL_TEXTURE_3D, mDistance.id());
+    glActiveTexture(GL_TEXTURE0 + kFarUnit);
+    glBindTexture(GL_TEXTURE_3D, mFar.id());
+    glActiveTexture(GL_TEXTURE0 + kBandUnit);
+    glBindTexture(GL_TEXTURE_3D, mBand.id());
     glActiveTexture(GL_TEXTURE0 + kTriangleUnit);
     glBindTexture(GL_TEXTURE_3D, mTriangles.id());
     glActiveTexture(GL_TEXTURE0 + kColormapUnit);

@@ -38,7 +38,7 @@ public:
     /// @brief Uploads positions, per-vertex scalar (NaN flagged), @a normals and triangles.
     /// @param field normalised surface; kept by reference (ring layout, hull box) and must outlive this
     void setMesh(const core::SurfaceField& field, const std::vector<glm::vec3>& normals);
-    /// @brief Uploads the distance and triangle boxes. @throw GlError (e.g. GL_OUT_OF_MEMORY)
+    /// @brief Uploads the far, band and triangle boxes. @throw GlError (e.g. GL_OUT_OF_MEMORY)
     /// @param fineVoxelSize the volume's own voxel size (the CPU's hull box uses it)
     /// @param interiorStep largest step trusted where phi < 0 (the interior band width)
     void setVolume(const DenseSlices& slices, float fineVoxelSize, float interiorStep);
@@ -68,7 +68,8 @@ private:
     GlBuffer mPositions;  ///< vec4(position, scalar)
     GlBuffer mNormals;    ///< vec4(normal, NaN flag)
     GlBuffer mIndices;    ///< 3 uint per triangle
-    GlTexture mDistance;
+    GlTexture mFar;
+    GlTexture mBand;
     GlTexture mTriangles;
     GlTexture mColormap;
     GlFramebuffer mTarget;

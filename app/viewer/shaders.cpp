@@ -10,18 +10,26 @@ const char* const kVersion = "#version 430 core\n";
 
 // Shared by both fragment shaders: the volume textures, the mesh buffers, colours and shading.
 const char* const kCommon = R"GLSL(
-// ---- volume: dense distance (R32F) and closest-triangle (R32I) boxes, fetched texel by texel
-layout(binding = 1) uniform sampler3D uDistance;
+// ---- volume (dense_slices.h): the CPU's dense far copy, the fine band and closest triangles, all
+// R32F / R32I 3D textures fetched texel by texel (no filtering: the trilinear cells are the CPU's)
+layout(binding = 1) uniform sampler3D uFar;
 layout(binding = 2) uniform isampler3D uTriangles;
 layout(binding = 3) uniform sampler2D uColormap;  // 256 x 1, linear RGB of core::colormap(name).at(i / 255)
+layout(binding = 4) uniform sampler3D uBand;
 uniform bool uVolumeReady;
-uniform ivec3 uDistanceDims;
-uniform vec3 uDistanceOrigin;   // world centre of distance voxel (0,0,0)
+uniform ivec3 uFarDims;
+uniform vec3 uFarOrigin;        // world centre of far voxel (0,0,0)
+uniform float uFarInvVoxel;
+uniform float uOutside;         // phi outside the far box (the field's clamp value)
+uniform bool uHasFineBand;      // the band refines the far copy near the surface
+uniform float uTrustBelow;      // far values above this never use the band
+uniform ivec3 uBandDims;
+uniform vec3 uBandOrigin;       // world centre of band voxel (0,0,0)
 uniform ivec3 uTriangleDims;
 uniform vec3 uTriangleOrigin;   // world centre of triangle voxel (0,0,0)
-uniform float uVoxel;           // voxel size of both boxes
+uniform float uVoxel;           // voxel size of band and triangles (the fine voxel unless resampled)
 uniform float uInvVoxel;
-uniform float uOutside;         // phi outside the distance box (the field's clamp value)
+uniform bool uUnsigned;         // phi is an unsigned distance (open mesh)
 
 // ---- mesh: the vertex buffers, read again as storage buffers
 layout(std430, binding = 0) readonly buffer VertexPositions { vec4 vertexPosition[]; };  // xyz, w = scalar (NaN -> 0)
@@ -50,36 +58,47 @@ float trilinear(float c[8], vec3 t, out vec3 gradient)
     return y0 + t.z * (y1 - y0);
 }
 
-// render::DenseGrid::locate + the 8 corner values.
-bool distanceCell(vec3 p, out float c[8], out vec3 t)
+// render::DenseGrid::valueAndGradient on the far copy (gradient in world units).
+float farValueAndGradient(vec3 p, out vec3 gradient)
 {
-    vec3 q = (p - uDistanceOrigin) * uInvVoxel;
+    gradient = vec3(0.0);
+    vec3 q = (p - uFarOrigin) * uFarInvVoxel;
     vec3 f = floor(q);
-    if (!(all(greaterThanEqual(f, vec3(0.0))) && all(lessThan(f, vec3(uDistanceDims - 1))))) return false;
+    if (!(all(greaterThanEqual(f, vec3(0.0))) && all(lessThan(f, vec3(uFarDims - 1))))) return uOutside;
     ivec3 b = ivec3(f);
+    float c[8];
+    for (int i = 0; i < 8; ++i) c[i] = texelFetch(uFar, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0).r;
+    float value = trilinear(c, q - f, gradient);
+    gradient *= uFarInvVoxel;
+    return value;
+}
+
+// render::DistanceField::Sampler::fineCell: the 8 band values of p's cell, false unless all are in the band.
+bool bandCell(vec3 p, out float c[8], out vec3 t)
+{
+    vec3 q = (p - uBandOrigin) * uInvVoxel;
+    vec3 f = floor(q);
     t = q - f;
-    c[0] = texelFetch(uDistance, b, 0).r;
-    c[1] = texelFetch(uDistance, b + ivec3(1, 0, 0), 0).r;
-    c[2] = texelFetch(uDistance, b + ivec3(0, 1, 0), 0).r;
-    c[3] = texelFetch(uDistance, b + ivec3(1, 1, 0), 0).r;
-    c[4] = texelFetch(uDistance, b + ivec3(0, 0, 1), 0).r;
-    c[5] = texelFetch(uDistance, b + ivec3(1, 0, 1), 0).r;
-    c[6] = texelFetch(uDistance, b + ivec3(0, 1, 1), 0).r;
-    c[7] = texelFetch(uDistance, b + ivec3(1, 1, 1), 0).r;
+    if (!(all(greaterThanEqual(f, vec3(0.0))) && all(lessThan(f, vec3(uBandDims - 1))))) return false;
+    ivec3 b = ivec3(f);
+    for (int i = 0; i < 8; ++i) {
+        c[i] = texelFetch(uBand, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0).r;
+        if (c[i] > 1e29) return false;  // kInactiveBandValue
+    }
     return true;
 }
 
-// render::DistanceField::Sampler::phiAndGradient (one dense box instead of band + far field).
+// render::DistanceField::Sampler::phiAndGradient: the far copy, refined by the fine band where
+// all eight corners of the fine cell are in the band.
 float phiAndGradient(vec3 p, out vec3 gradient)
 {
+    float far = farValueAndGradient(p, gradient);
+    if (!uHasFineBand || far > uTrustBelow) return far;
     float c[8];
-    vec3 t;
-    if (!distanceCell(p, c, t)) {
-        gradient = vec3(0.0);
-        return uOutside;
-    }
-    float value = trilinear(c, t, gradient);
-    gradient *= uInvVoxel;
+    vec3 t, bandGradient;
+    if (!bandCell(p, c, t)) return far;
+    float value = trilinear(c, t, bandGradient);
+    gradient = bandGradient * uInvVoxel;
     return value;
 }
 
@@ -183,7 +202,8 @@ uniform bool uShadows;
 layout(location = 0) out vec4 oColour;
 layout(location = 1) out uint oRegion;
 
-// render::shadowFactor: soft shadow toward the key light, sphere-traced through phi.
+// render::shadowFactor: soft shadow toward the key light, sphere-traced through phi; on an unsigned
+// field a wall thinner than a step shows up as phi falling then rising within two voxels.
 float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
 {
     const float kSoftness = 8.0;
@@ -191,11 +211,16 @@ float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
     vec3 start = point + 2.0 * uVoxel * normal;
     float lit = 1.0;
     float t = uVoxel;
-    for (int step = 0; step < 256 && t < 6.0; ++step) {
-        float phi = phiAt(start + t * toLight);
+    float previousSlope = 0.0;
+    for (int step = 0; step < 512 && t < 6.0; ++step) {
+        vec3 gradient;
+        float phi = phiAndGradient(start + t * toLight, gradient);
         if (phi < hitDistance) return 0.0;
+        float slope = dot(gradient, toLight);
+        if (phi < 2.0 * uVoxel && previousSlope < 0.0 && slope > 0.0 && uUnsigned) return 0.0;
+        previousSlope = slope;
         lit = min(lit, kSoftness * phi / t);
-        t += max(phi, uVoxel);
+        t += max(phi, 0.5 * uVoxel);
     }
     return clamp(lit, 0.0, 1.0);
 }
@@ -321,11 +346,9 @@ vec3 closestBarycentric(vec3 p, int triangle)
     return vec3(1.0 - v2 - w2, v2, w2);
 }
 
-bool shadeLanding(vec3 p, vec3 arrival, out vec3 colour)
+// Colour of an indirect pixel that shows point @a barycentric of @a triangle, seen along @a arrival.
+vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
 {
-    int triangle = nearestTriangle(p);
-    if (triangle < 0) return false;
-    vec3 barycentric = closestBarycentric(p, triangle);
     float len = length(arrival);
     arrival = len > 0.0 ? arrival / len : uForward;
     vec3 normal = shadingNormal(triangle, barycentric);
@@ -334,8 +357,62 @@ bool shadeLanding(vec3 p, vec3 arrival, out vec3 colour)
     uvec3 v = triangleVertices(triangle);
     float value = barycentric.x * vertexPosition[v.x].w + barycentric.y * vertexPosition[v.y].w +
                   barycentric.z * vertexPosition[v.z].w;
-    colour = albedo(triangle, value) * uIndirectBrightness * (0.7 + 0.3 * facing);
+    return albedo(triangle, value) * uIndirectBrightness * (0.7 + 0.3 * facing);
+}
+
+// As the CPU (ScreenMap::landedAt): the nearest voxel's triangle and the closest point on it.
+bool shadeLanding(vec3 p, vec3 arrival, out vec3 colour)
+{
+    colour = vec3(0.0);
+    int triangle = nearestTriangle(p);
+    if (triangle < 0) return false;
+    colour = shadeIndirect(triangle, closestBarycentric(p, triangle), arrival);
     return true;
+}
+
+// The ring map's CPU reference intersects its straight ray with the exact BVH. Here the ray was
+// sphere-traced to within uEpsilon of the surface at p: intersect it exactly (Moller-Trumbore) with
+// the triangles stored at the 8 voxels around p and take the first hit; when none is hit (grazing
+// rays), take the closest point to p on the closest of them.
+bool shadeRayLanding(vec3 origin, vec3 direction, vec3 p, out vec3 colour)
+{
+    colour = vec3(0.0);
+    vec3 q = floor((p - uTriangleOrigin) * uInvVoxel);
+    int hit = -1, closest = -1;
+    vec3 hitBarycentric = vec3(1.0, 0.0, 0.0), closestBarycentric3 = vec3(1.0, 0.0, 0.0);
+    float hitT = 1e30, closestDistance = 1e30;
+    for (int i = 0; i < 8; ++i) {
+        vec3 corner = q + vec3(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+        if (!(all(greaterThanEqual(corner, vec3(0.0))) && all(lessThan(corner, vec3(uTriangleDims))))) continue;
+        int triangle = texelFetch(uTriangles, ivec3(corner), 0).r;
+        if (triangle < 0 || triangle == hit || triangle == closest) continue;
+        uvec3 v = triangleVertices(triangle);
+        vec3 a = vertexPosition[v.x].xyz, b = vertexPosition[v.y].xyz, c = vertexPosition[v.z].xyz;
+        vec3 e1 = b - a, e2 = c - a, s1 = cross(direction, e2);
+        float det = dot(s1, e1);
+        if (abs(det) > 1e-12) {
+            vec3 ao = origin - a;
+            float u = dot(ao, s1) / det;
+            vec3 s2 = cross(ao, e1);
+            float w = dot(direction, s2) / det, t = dot(e2, s2) / det;
+            if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && t > 0.0 && t < hitT) {
+                hitT = t;
+                hit = triangle;
+                hitBarycentric = vec3(1.0 - u - w, u, w);
+            }
+        }
+        vec3 barycentric = closestBarycentric(p, triangle);
+        vec3 x = barycentric.x * a + barycentric.y * b + barycentric.z * c;
+        float d = dot(p - x, p - x);
+        if (d < closestDistance) {
+            closestDistance = d;
+            closest = triangle;
+            closestBarycentric3 = barycentric;
+        }
+    }
+    if (hit >= 0) colour = shadeIndirect(hit, hitBarycentric, direction);
+    else if (closest >= 0) colour = shadeIndirect(closest, closestBarycentric3, direction);
+    return hit >= 0 || closest >= 0;
 }
 
 // ---- InverseVis (render/src/curved_ray.cpp, ScreenMap::inverseVis)
@@ -497,7 +574,7 @@ bool ring(out vec3 colour)
         vec3 p = uRingOrigin + t * direction;
         if (any(greaterThan(abs(p), vec3(uBoxHalf)))) return false;
         float phi = phiAt(p);
-        if (abs(phi) < uEpsilon) return shadeLanding(p, direction, colour);
+        if (abs(phi) < uEpsilon) return shadeRayLanding(uRingOrigin, direction, p, colour);
         t += phi > 0.0 ? phi : min(-phi, uInteriorStep);
     }
     return false;

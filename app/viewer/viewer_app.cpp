@@ -168,6 +168,8 @@ bool ViewerApp::pollLoader()
     std::printf("inversevis-view: %s\n", mVolumeText.c_str());
     std::fflush(stdout);
     mDirty = true;
+    if (mOptions.optimise == "alpha") startOptimiser(mAlphaOptimiser, "optimise alpha");
+    if (mOptions.optimise == "view") startOptimiser(mViewOptimiser, "optimise view");
     return true;
 }
 
@@ -458,9 +460,30 @@ void ViewerApp::drawPanel()
     if (changed) mDirty = true;
 }
 
+void ViewerApp::writeWindow(const std::string& path)
+{
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(mWindow, &width, &height);
+    std::vector<std::uint8_t> bytes(std::size_t(width) * height * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    checkGl("reading the window back");
+    core::Image image(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::uint8_t* p = bytes.data() + (std::size_t(height - 1 - y) * width + x) * 4;
+            image.at(x, y) = glm::vec4(core::linearFromSrgb(p[0] / 255.0f), core::linearFromSrgb(p[1] / 255.0f),
+                                       core::linearFromSrgb(p[2] / 255.0f), 1.0f);
+        }
+    core::writePng(image, path, false);
+    std::printf("inversevis-view: wrote %s (window %dx%d, %s)\n", path.c_str(), width, height, mStatus.c_str());
+}
+
 int ViewerApp::runInteractive()
 {
-    int lastWidth = 0, lastHeight = 0;
+    int lastWidth = 0, lastHeight = 0, settledFrames = 0;
     while (!glfwWindowShouldClose(mWindow)) {
         const bool busy = mDirty || mLoader || mJob.valid() || mAnimation.started();
         if (busy) glfwPollEvents();
@@ -498,6 +521,11 @@ int ViewerApp::runInteractive()
             glClear(GL_COLOR_BUFFER_BIT);
             mRenderer->blitTo(0, 0, fbWidth, fbHeight);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
+        if (!mOptions.uiScreenshot.empty() && !mLoader && !mJob.valid() && !mAnimation.started() &&
+            ++settledFrames >= mOptions.frames + 1) {
+            writeWindow(mOptions.uiScreenshot);
+            break;
         }
         glfwSwapBuffers(mWindow);
     }

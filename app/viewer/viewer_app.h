@@ -51,6 +51,8 @@ private:
     GpuFrame frame(int width, int height) const;
     void renderFrame(int width, int height);
     void writeScreenshot(const std::string& path, const std::string& regionPath);
+    /// Writes the window's back buffer (scene and panel) to @a path.
+    void writeWindow(const std::string& path);
     int runHeadlessScreenshot();
     int runBenchmark();
     int runInteractive();

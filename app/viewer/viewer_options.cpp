@@ -21,6 +21,11 @@ void ViewerOptions::addTo(CLI::App& app)
     app.add_option("--frames", frames, "Frames rendered before the screenshot")->capture_default_str();
     app.add_option("--region-png", regionPng,
                    "Also write the last frame's regions as grey levels (0 background, 128 direct, 255 indirect)");
+    app.add_option("--ui-screenshot", uiScreenshot,
+                   "Run the window with its panel; once loading and optimising are done and --frames frames "
+                   "drawn, write the window (panel included) to this PNG and exit");
+    app.add_option("--optimise", optimise, "Press 'optimise alpha' or 'optimise view' once the volume is loaded")
+        ->check(CLI::IsMember({"alpha", "view"}));
     app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
     app.add_option("--cache-dir", cacheDir, "Folder for volume caches (default: ~/.cache/inversevis)");
@@ -39,6 +44,8 @@ void ViewerOptions::validate() const
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
+    if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
+        throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");
 }
 
 std::string ViewerOptions::resolvedCacheDir() const

@@ -26,9 +26,9 @@ DistanceField::Sampler::Sampler(const DistanceField& field)
 bool DistanceField::Sampler::fineCell(const glm::vec3& p, float corners[8], glm::vec3& t)
 {
     const glm::vec3 q = (p - glm::vec3(mField.mOrigin)) * mField.mInvVoxelSize;
-    const glm::vec3 f(std::floor(q.x), std::floor(q.y), std::floor(q.z));
-    t = q - f;
-    const openvdb::Coord base(int(f.x), int(f.y), int(f.z));
+    if (!(q.x >= 0.0f && q.y >= 0.0f && q.z >= 0.0f)) return false;  // outside the box: no band there
+    const openvdb::Coord base(int(q.x), int(q.y), int(q.z));            // truncation = floor for q >= 0
+    t = q - glm::vec3(float(base.x()), float(base.y()), float(base.z()));
     const auto* leaf = mPhi.probeConstLeaf(base);
     const bool insideLeaf = leaf && (base.x() & 7) != 7 && (base.y() & 7) != 7 && (base.z() & 7) != 7;
     for (int i = 0; i < 8; ++i) {

@@ -53,6 +53,7 @@ TEST(QuadraticMirror, FlatMirrorFacesTheCameraAtTheDocumentedDepth)
         for (float behind : {1.0f, 0.4f, 2.0f}) {
             const core::CameraFrame frame(camera, 48, 40);
             MirrorParams params;
+            params.w = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
             params.distanceBehind = behind;
             const double depth = cameraDistance(camera) + behind;
             for (int y = 0; y < 40; ++y)

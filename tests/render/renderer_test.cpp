@@ -178,11 +178,9 @@ TEST(Renderer, InverseVisRingSurroundsTheSphere)
     }
 }
 
-// KNOWN BUG (disabled until fixed): on an open mesh (unsigned distance) shadow rays leak through
-// thin walls. shadowFactor steps t += max(phi, voxel) and counts a hit only when phi < 0.5 voxel;
-// near an unsigned wall the trilinear phi at the samples stays around 0.5..1 voxel, so a 1-voxel
-// step jumps across the wall. Seen as light speckles on the inner back walls of "backfaces".
-TEST(Renderer, DISABLED_ShadowRaysDoNotLeakThroughOpenWalls)
+// On an open mesh (unsigned distance) the trilinear phi near a wall stays around 0.5..1 voxel at
+// the samples, so a shadow ray could step across a thin wall; shadowFactor detects the crossing.
+TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)
 {
     const auto& fixture = test::vesselScene();
     const RenderScene& scene = *fixture.scene;

@@ -1,5 +1,5 @@
 /// @file content_hash.h
-/// @brief Stable 64-bit content hashes (FNV-1a) used to key volume caches.
+/// @brief Stable 64-bit content hashes (FNV-1a over 8-byte words) used to key volume caches.
 #pragma once
 
 #include <ivis/core/triangle_mesh.h>
@@ -10,7 +10,7 @@
 
 namespace ivis::core {
 
-/// @brief Incremental FNV-1a 64-bit hash.
+/// @brief Incremental FNV-1a-style 64-bit hash (words of 8 bytes, then single bytes).
 class ContentHash {
 public:
     /// @brief Mixes @a size raw bytes into the hash.

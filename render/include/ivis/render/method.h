@@ -38,7 +38,8 @@ struct RingParams {
 
 /// @brief Quadratic mirror z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y in eye space.
 struct MirrorParams {
-    std::array<float, 5> w{};     ///< w1..w5
+    /// w1..w5; the default is a shallow bowl: a flat mirror shows nothing and has zero gradient.
+    std::array<float, 5> w{0.3f, 0.3f, 0.0f, 0.0f, 0.0f};
     float distanceBehind = 1.0f;  ///< mirror apex behind the object's centre (normalised units)
     int maxSteps = 300;           ///< sphere-tracing steps from the mirror
 };

@@ -1,0 +1,168 @@
+// `inversevis evaluate MESH...`: the paper's Table 1 (visibility at each method's best view, with
+// the front-only visibility) and Table 2 (viewpoint optimisation seconds per resolution).
+#include "commands.h"
+#include "json_output.h"
+#include "mesh_options.h"
+#include "optimization_options.h"
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
+#include <ivis/core/image_io.h>
+#include <ivis/core/log.h>
+#include <ivis/core/surface_source.h>
+#include <ivis/render/renderer.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace ivis::app {
+namespace {
+
+/// Great-circle angle in degrees between two camera directions given by their angles.
+double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
+{
+    auto direction = [](double theta, double phi) {
+        const double t = theta * M_PI / 180.0, p = phi * M_PI / 180.0;
+        return glm::dvec3(std::sin(t) * std::sin(p), std::cos(t), std::sin(t) * std::cos(p));
+    };
+    const double c = glm::dot(direction(theta1, phi1), direction(theta2, phi2));
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+std::string percent(double fraction)
+{
+    char buffer[16];
+    std::snprintf(buffer, sizeof buffer, "%.1f", 100.0 * fraction);
+    return buffer;
+}
+
+}  // namespace
+
+Command addEvaluateCommand(CLI::App& app)
+{
+    struct Options {
+        std::vector<std::string> meshes;
+        std::vector<std::string> methods{"front", "neugebauer", "mirror", "inversevis"};
+        std::vector<int> optResolutions{100};
+        int displayResolution = 1000;
+        int volumeResolution = 200;
+        double fovYDeg = core::kDefaultFovYDeg;
+        OptimizationOptions optimization;
+        std::string json, markdown, pictures, cacheDir = ".";
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand("evaluate", "Visibility and timing tables of the methods (paper Tab. 1, 2)");
+    command->add_option("meshes", options->meshes, "Mesh files or scene:<name>")->required();
+    command->add_option("--methods", options->methods, "Methods to compare")->delimiter(',')->capture_default_str();
+    command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions")->delimiter(',')
+        ->capture_default_str();
+    command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
+        ->capture_default_str();
+    command->add_option("--volume-res", options->volumeResolution, "Volume resolution")->capture_default_str();
+    command->add_option("--fov", options->fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
+    options->optimization.addTo(*command);
+    command->add_option("--json", options->json, "Results as JSON");
+    command->add_option("--markdown", options->markdown, "Results as Markdown tables");
+    command->add_option("--pictures", options->pictures, "Folder for each method's picture at its best view");
+    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches")->capture_default_str();
+
+    return {command, [options] {
+        for (const std::string& m : options->methods) render::parseMethod(m);  // validate names first
+        if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
+        if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
+        nlohmann::json results = nlohmann::json::object();
+        std::ostringstream table1, table2;
+        table1 << "| Surface |";
+        for (const auto& m : options->methods) table1 << " " << m << " |";
+        table1 << "\n|---|";
+        for (std::size_t i = 0; i < options->methods.size(); ++i) table1 << "---|";
+        table1 << "\n";
+        table2 << "| Surface |";
+        for (const auto& m : options->methods)
+            for (int r : options->optResolutions) table2 << " " << m << " " << r << " |";
+        table2 << "\n|---|";
+        for (std::size_t i = 0; i < options->methods.size() * options->optResolutions.size(); ++i) table2 << "---|";
+        table2 << "\n";
+
+        for (const std::string& mesh : options->meshes) {
+            const core::SurfaceField field = core::loadSurface(mesh);
+            vdb::VolumeOptions volumeOptions;
+            volumeOptions.resolution = options->volumeResolution;
+            const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
+                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution));
+            const render::RenderScene scene(field, volume);
+            const core::ScalarRange range = core::scalarRangeFromData(field.values);
+            const std::string stem = core::sourceStem(mesh);
+            table1 << "| " << stem << " |";
+            table2 << "| " << stem << " |";
+            for (const std::string& methodName : options->methods) {
+                render::MethodParams start;
+                start.method = render::parseMethod(methodName);
+                nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
+                render::VisitedView best;
+                for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
+                    const int resolution = options->optResolutions[k];
+                    const render::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
+                    const render::AnnealingResult run = render::annealViewpoint(
+                        evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
+                        options->optimization.ascentOptions());
+                    entry["seconds"][std::to_string(resolution)] = run.seconds;
+                    table2 << " " << std::lround(run.seconds * 10.0) / 10.0 << " |";
+                    if (k == 0) {
+                        best = run.bestView();
+                    } else {
+                        entry["optimum_shift_deg"][std::to_string(resolution)] = angleBetweenViews(
+                            best.thetaDeg, best.phiDeg, run.bestView().thetaDeg, run.bestView().phiDeg);
+                    }
+                }
+                render::EnergyOptions display = options->optimization.energyOptions(options->displayResolution, range);
+                display.kind = render::EnergyKind::Visibility;
+                const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->fovYDeg);
+                const render::EnergyValue value = render::EnergyEvaluator(scene, display).evaluate(camera, best.params);
+                entry["visibility"] = value.energy;
+                entry["front_visibility"] = value.front;
+                entry["theta"] = best.thetaDeg;
+                entry["phi"] = best.phiDeg;
+                entry["params"] = methodParamsJson(best.params);
+                table1 << " " << percent(value.energy) << " (" << percent(value.front) << ") |";
+                if (!options->pictures.empty()) {
+                    render::RenderOptions picture;
+                    picture.width = picture.height = options->displayResolution;
+                    picture.method = best.params;
+                    picture.shading.range = range;
+                    picture.scalarName = field.name;
+                    const std::string path = options->pictures + "/" + stem + "-" + methodName + ".png";
+                    core::writePng(render::renderImage(scene, camera, picture).image, path, false);
+                    entry["picture"] = path;
+                }
+                results[stem][methodName] = entry;
+                core::logInfo(stem + " " + methodName + ": visibility " + percent(value.energy) + "% (front " +
+                              percent(value.front) + "%)");
+            }
+            table1 << "\n";
+            table2 << "\n";
+        }
+        if (!options->json.empty()) writeJsonFile(results, options->json);
+        const std::string markdown = "## Visibility in percent at each method's best view (front-only in brackets)\n\n" +
+                                     table1.str() + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" +
+                                     table2.str();
+        if (!options->markdown.empty())
+            core::writeAtomically(options->markdown, [&](const std::string& path) {
+                std::ofstream out(path);
+                out << markdown;
+                if (!out) throw std::runtime_error("write failed");
+            });
+        std::cout << markdown;
+    }};
+}
+
+}  // namespace ivis::app

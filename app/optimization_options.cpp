@@ -1,0 +1,57 @@
+#include "optimization_options.h"
+
+namespace ivis::app {
+
+void OptimizationOptions::addTo(CLI::App& command)
+{
+    command.add_option("--energy", energy, "Energy to maximise: visibility or scalar")
+        ->check(CLI::IsMember({"visibility", "scalar"}))
+        ->capture_default_str();
+    command.add_option("--gamma", gamma, "Weight of the directly visible part (scalar energy)")->capture_default_str();
+    command.add_option("--visibility-res", visibilityResolution, "Voxels per side of the visibility grid")
+        ->capture_default_str();
+    command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
+    command.add_option("--steps", steps, "Annealing proposals after the start view")->capture_default_str();
+    command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")->capture_default_str();
+    command.add_option("--gradient", gradient, "auto, analytic (InverseVis + scalar) or forward differences")
+        ->check(CLI::IsMember({"auto", "analytic", "forward"}))
+        ->capture_default_str();
+    command.add_option("--ascent-iterations", ascentIterations, "Line searches per view at most")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+}
+
+render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
+{
+    render::EnergyOptions options;
+    options.kind = render::parseEnergyKind(energy);
+    options.gamma = gamma;
+    options.resolution = resolution;
+    options.visibilityResolution = visibilityResolution;
+    options.importanceRange = range;
+    return options;
+}
+
+render::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const
+{
+    render::AnnealingOptions options;
+    options.steps = steps;
+    options.cooling = cooling;
+    options.seed = seed;
+    options.startThetaDeg = thetaDeg;
+    options.startPhiDeg = phiDeg;
+    options.fovYDeg = fovYDeg;
+    return options;
+}
+
+render::AscentOptions OptimizationOptions::ascentOptions() const
+{
+    render::AscentOptions options;
+    options.gradient = gradient == "analytic" ? render::GradientMode::Analytic
+                       : gradient == "forward" ? render::GradientMode::ForwardDifference
+                                               : render::GradientMode::Auto;
+    options.maxIterations = ascentIterations;
+    return options;
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,37 @@
+/// @file optimization_options.h
+/// @brief Command-line options shared by `optimize` and `evaluate`: the energy, the annealing
+///        schedule and the parameter ascent.
+#pragma once
+
+#include <ivis/render/viewpoint_annealing.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace ivis::app {
+
+/// @brief Energy, annealing and ascent settings as given on the command line.
+struct OptimizationOptions {
+    std::string energy = "visibility";
+    float gamma = 1.0f;
+    int visibilityResolution = 200;
+    std::uint64_t seed = 1;
+    int steps = 30;
+    double cooling = 0.9;
+    std::string gradient = "auto";
+    int ascentIterations = 3;
+
+    /// @brief Registers --energy, --gamma, --visibility-res, --seed, --steps, --cooling, --gradient,
+    ///        --ascent-iterations.
+    void addTo(CLI::App& command);
+    /// @brief Energy options at optimisation resolution @a resolution with importance @a range.
+    render::EnergyOptions energyOptions(int resolution, const core::ScalarRange& range) const;
+    /// @brief Annealing options starting at (theta, phi) with field of view @a fovYDeg.
+    render::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
+    /// @brief Ascent options (gradient mode).
+    render::AscentOptions ascentOptions() const;
+};
+
+}  // namespace ivis::app

@@ -1,0 +1,105 @@
+// `inversevis optimize MESH`: the best viewpoint and parameters of a method by simulated annealing.
+#include "commands.h"
+#include "json_output.h"
+#include "mesh_options.h"
+#include "optimization_options.h"
+#include "view_options.h"
+
+#include <ivis/core/image_io.h>
+#include <ivis/core/log.h>
+#include <ivis/core/progress_bar.h>
+#include <ivis/render/annealing_plot.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace ivis::app {
+
+Command addOptimizeCommand(CLI::App& app)
+{
+    struct Options {
+        MeshOptions mesh;
+        ViewOptions view;
+        OptimizationOptions optimization;
+        int optResolution = 100;
+        std::string output = "best.png";
+        std::string json;
+        std::string plot;
+        std::string cacheDir;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command =
+        app.add_subcommand("optimize", "Find the best viewpoint and method parameters (simulated annealing)");
+    options->mesh.addTo(*command, "--volume-res");
+    options->view.addTo(*command);
+    options->optimization.addTo(*command);
+    command->add_option("--opt-res", options->optResolution, "Optimisation resolution (rays per side)")
+        ->capture_default_str();
+    command->add_option("-o,--output", options->output, "Picture of the best view at --res")->capture_default_str();
+    command->add_option("--json", options->json, "Result JSON: best view, parameters, energies, visited views");
+    command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
+    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+
+    return {command, [options] {
+        const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
+        render::RenderOptions renderOptions = options->view.renderOptions(field);
+        const std::filesystem::path output(options->output);
+        const std::string folder = !options->cacheDir.empty()    ? options->cacheDir
+                                   : output.has_parent_path() ? output.parent_path().string()
+                                                              : ".";
+        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
+            field.mesh, volumeOptions, defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution),
+            &progress);
+        const render::RenderScene scene(field, volume);
+
+        const render::EnergyOptions energyOptions =
+            options->optimization.energyOptions(options->optResolution, renderOptions.shading.range);
+        const render::EnergyEvaluator evaluator(scene, energyOptions);
+        const render::AnnealingResult result = render::annealViewpoint(
+            evaluator, renderOptions.method,
+            options->optimization.annealingOptions(options->view.theta, options->view.phi, options->view.fovYDeg),
+            options->optimization.ascentOptions());
+        const render::VisitedView& best = result.bestView();
+
+        // The best view at display resolution: picture and energy.
+        const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->view.fovYDeg);
+        renderOptions.method = best.params;
+        core::writePng(render::renderImage(scene, camera, renderOptions, &progress).image, options->output,
+                       renderOptions.shading.transparentBackground);
+        render::EnergyOptions displayOptions = energyOptions;
+        displayOptions.resolution = renderOptions.height;
+        const render::EnergyValue display = render::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.params);
+        if (!options->plot.empty()) core::writePng(render::plotVisitedViews(result), options->plot, false);
+
+        nlohmann::json visited = nlohmann::json::array();
+        for (const auto& view : result.visited) visited.push_back(visitedViewJson(view));
+        const nlohmann::json json = {
+            {"mesh", options->mesh.source},
+            {"energy", render::toString(energyOptions.kind)},
+            {"opt_res", options->optResolution},
+            {"display_res", renderOptions.height},
+            {"seed", options->optimization.seed},
+            {"seconds", result.seconds},
+            {"evaluations", result.evaluations},
+            {"theta", best.thetaDeg},
+            {"phi", best.phiDeg},
+            {"params", methodParamsJson(best.params)},
+            {"energy_value", best.value.energy},
+            {"front_energy_value", best.value.front},
+            {"display_energy_value", display.energy},
+            {"display_front_energy_value", display.front},
+            {"output", options->output},
+            {"visited", visited}};
+        if (!options->json.empty()) writeJsonFile(json, options->json);
+        core::logInfo(std::string(render::toString(best.params.method)) + ": best view theta " +
+                      std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +
+                      render::toString(energyOptions.kind) + " " + std::to_string(display.energy) + " (front " +
+                      std::to_string(display.front) + ") at " + std::to_string(renderOptions.height) +
+                      " rays per side, " + std::to_string(result.seconds) + " s");
+    }};
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,243 @@
+// inversevis-view against the CPU renderer: the same view of the generated vessel tree rendered by
+// the viewer's shaders (under Xvfb with Mesa's llvmpipe) and by render::renderImage.
+#include "test_support.h"
+
+#include <ivis/core/camera.h>
+#include <ivis/core/image.h>
+#include <ivis/core/image_io.h>
+#include <ivis/core/surface_source.h>
+#include <ivis/render/renderer.h>
+#include <ivis/render/screen_map.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace ivis::test {
+namespace {
+
+#ifdef IVIS_VIEW_PATH
+
+constexpr int kSize = 512;
+
+struct RunResult {
+    int status = -1;
+    std::string output;  ///< stdout and stderr
+};
+
+/// Runs `inversevis-view` with @a arguments, under xvfb-run when @a display.
+RunResult runViewer(const std::string& arguments, bool display, const TempDir& dir)
+{
+    const std::string log = dir.file("viewer.log");
+    const std::string prefix = display ? "xvfb-run -a -s '-screen 0 1280x1024x24' " : "";
+    const std::string command = prefix + "'" + IVIS_VIEW_PATH + "' " + arguments + " >'" + log + "' 2>&1";
+    const int raw = std::system(command.c_str());
+    RunResult result;
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    result.output = text.str();
+    return result;
+}
+
+bool haveXvfbRun() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+/// 8-bit sRGB level of a linear value, as writePng stores it.
+int level(float linear) { return int(std::lround(255.0f * core::srgbFromLinear(std::clamp(linear, 0.0f, 1.0f)))); }
+
+/// Region of a --region-png grey level (0 background, 128 direct, 255 indirect), decoded by readPng.
+int regionOfGrey(float linear)
+{
+    const int g = level(linear);
+    return g < 64 ? 0 : g < 192 ? 1 : 2;
+}
+
+struct Agreement {
+    double regionAgreement = 0.0;   ///< fraction of pixels with the same region
+    double indirectMeanDiff = 0.0;  ///< mean |difference| in 8-bit levels over channels of pixels both call indirect
+    double directMeanDiff = 0.0;    ///< same over pixels both call direct
+    std::size_t bothIndirect = 0;
+    std::size_t cpuIndirect = 0, gpuIndirect = 0;
+};
+
+/// Renders @a method on the CPU and in the viewer at 512x512 (theta 90, phi 0) and compares.
+/// @param volumeResolution volume resolution of both
+/// @param viewerArguments further viewer arguments
+/// @param viewerOutput optional output: what the viewer printed
+Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, const std::string& viewerArguments = "",
+                         std::string* viewerOutput = nullptr)
+{
+    TempDir dir;
+    const std::string source = "scene:vessel-tree";
+    const core::SurfaceField field = core::loadSurface(source);
+    vdb::VolumeOptions volumeOptions;
+    volumeOptions.resolution = volumeResolution;
+    // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
+    const std::string cache = dir.file(core::sourceStem(source) + ".res" + std::to_string(volumeOptions.resolution) + ".vdb");
+    const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, cache);
+    const render::RenderScene scene(field, volume);
+    render::RenderOptions options;
+    options.width = options.height = kSize;
+    options.method.method = render::parseMethod(method);
+    options.shading.range = core::scalarRangeFromData(field.values);
+    options.legend = false;
+    options.outline = false;
+    const render::RenderResult cpu = render::renderImage(scene, core::Camera::fromAngles(90.0, 0.0), options);
+    const std::vector<float>& cpuRegion = cpu.layers.channel("region");
+
+    const std::string shot = dir.file("gpu.png"), region = dir.file("gpu-region.png");
+    const RunResult run = runViewer(source + " --theta 90 --phi 0 --method " + method + " --width 512 --height 512" +
+                                        " --volume-res " + std::to_string(volumeResolution) +
+                                        " --frames 3 --screenshot '" + shot + "' --region-png '" + region +
+                                        "' --cache-dir '" + dir.path() + "' " + viewerArguments,
+                                    true, dir);
+    if (viewerOutput) *viewerOutput = run.output;
+    EXPECT_EQ(run.status, 0) << run.output;
+    if (run.status != 0) return {};
+    EXPECT_NE(run.output.find("reused"), std::string::npos) << "the viewer should reuse the test's volume\n" << run.output;
+    const core::Image gpu = core::readPng(shot), gpuRegion = core::readPng(region);
+    EXPECT_EQ(gpu.width(), kSize);
+    EXPECT_EQ(gpu.height(), kSize);
+    if (gpu.width() != kSize || gpu.height() != kSize || gpuRegion.width() != kSize) return {};
+
+    Agreement a;
+    std::size_t same = 0, bothDirect = 0;
+    double indirectSum = 0.0, directSum = 0.0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const std::size_t i = std::size_t(y) * kSize + x;
+            const int c = int(cpuRegion[i]), g = regionOfGrey(gpuRegion.at(x, y).r);
+            same += c == g;
+            a.cpuIndirect += c == 2;
+            a.gpuIndirect += g == 2;
+            if (c != g || c == 0) continue;
+            double diff = 0.0;
+            for (int k = 0; k < 3; ++k) diff += std::abs(level(cpu.image.at(x, y)[k]) - level(gpu.at(x, y)[k]));
+            (c == 2 ? indirectSum : directSum) += diff / 3.0;
+            (c == 2 ? a.bothIndirect : bothDirect)++;
+        }
+    a.regionAgreement = double(same) / double(kSize * kSize);
+    a.indirectMeanDiff = a.bothIndirect ? indirectSum / double(a.bothIndirect) : 0.0;
+    a.directMeanDiff = bothDirect ? directSum / double(bothDirect) : 0.0;
+    std::cout << "[ viewer   ] " << method << " (volume " << volumeResolution << " " << viewerArguments << "): regions agree on " << 100.0 * a.regionAgreement << "% of pixels; "
+              << "indirect CPU " << a.cpuIndirect << " / GPU " << a.gpuIndirect << " pixels; mean colour difference "
+              << a.indirectMeanDiff << " (indirect), " << a.directMeanDiff << " (direct) 8-bit levels\n";
+    return a;
+}
+
+#endif  // IVIS_VIEW_PATH
+
+}  // namespace
+
+// The acceptance test of issue 5. Bounds: regions >= 97% of pixels (the issue's figure). Colours:
+// the viewer runs the same formulas in float on a dense copy of the same voxels, so colours differ
+// only where a ray's float rounding lands it on a slightly different point (scalar and normal vary
+// smoothly) and by 8-bit rounding (<= 0.5 level); a mean of 3 levels (about 1% of the range) allows
+// for that and still fails for any systematic error (a wrong colour map, light or brightness
+// factor moves the mean by 10+ levels; a different alpha or hull moves the indirect colours by more).
+TEST(Viewer, InverseVisMatchesCpuRenderer)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    const Agreement a = compareWithCpu("inversevis");
+    EXPECT_GE(a.regionAgreement, 0.97);
+    EXPECT_GT(a.bothIndirect, std::size_t(10000));
+    EXPECT_LT(a.indirectMeanDiff, 3.0);
+    EXPECT_LT(a.directMeanDiff, 3.0);
+#endif
+}
+
+TEST(Viewer, MirrorAndRingMatchCpuRenderer)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    for (const char* method : {"mirror", "neugebauer"}) {
+        const Agreement a = compareWithCpu(method);
+        EXPECT_GE(a.regionAgreement, 0.97) << method;
+        EXPECT_GT(a.bothIndirect, std::size_t(5000)) << method;
+        EXPECT_LT(a.indirectMeanDiff, 3.0) << method;
+    }
+#endif
+}
+
+// A volume finer than 200 has a far field: the viewer combines its copy with the fine band as the
+// CPU does. With a budget too small for the band at 400 it resamples, and says so.
+TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    std::string output;
+    const Agreement exact = compareWithCpu("inversevis", 400, "", &output);
+    EXPECT_NE(output.find("resolution 400 (voxel 0.0125), the volume's own, far field at 200"), std::string::npos) << output;
+    EXPECT_GE(exact.regionAgreement, 0.97);
+    EXPECT_LT(exact.indirectMeanDiff, 3.0);
+    // Resampled: the band at a coarser voxel than the CPU's; the same picture within coarser bounds.
+    const Agreement resampled = compareWithCpu("inversevis", 400, "--texture-budget 16", &output);
+    EXPECT_NE(output.find("RESAMPLED from 400"), std::string::npos) << output;
+    EXPECT_GE(resampled.regionAgreement, 0.95);
+    EXPECT_LT(resampled.indirectMeanDiff, 5.0);
+#endif
+}
+
+// The interactive path: the ImGui panel, the background loader, a button pressed by --optimise, the
+// animation toward its result and the window read back with the panel.
+TEST(Viewer, PanelRunsTheStandInOptimiser)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string shot = dir.file("window.png");
+    const RunResult run = runViewer("scene:sphere --optimise alpha --frames 2 --width 640 --height 480 --ui-screenshot '" +
+                                        shot + "' --cache-dir '" + dir.path() + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("stand-in alpha search"), std::string::npos) << run.output;
+    const core::Image window = core::readPng(shot);
+    EXPECT_EQ(window.width(), 640);
+    EXPECT_EQ(window.height(), 480);
+#endif
+}
+
+TEST(Viewer, UnreadableMeshExitsWithStatus2)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    TempDir dir;
+    writeFile(dir.file("broken.obj"), "this is not a mesh\n");
+    for (const std::string& mesh : {dir.file("missing.ply"), dir.file("broken.obj")}) {
+        const RunResult run = runViewer("'" + mesh + "' --screenshot '" + dir.file("x.png") + "'", false, dir);
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
+        EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    }
+    // No display at all: a clear error, not a crash.
+    const RunResult run = runViewer("scene:sphere --screenshot '" + dir.file("x.png") + "' --cache-dir '" + dir.path() + "'",
+                                    false, dir);
+    if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr) {
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
+    }
+#endif
+}
+
+}  // namespace ivis::test
