@@ -109,14 +109,6 @@ float phiAt(vec3 p)
     return phiAndGradient(p, gradient);
 }
 
-// render::DistanceField::Sampler::nearestTriangle: the triangle stored at the nearest voxel.
-int nearestTriangle(vec3 p)
-{
-    vec3 q = floor((p - uTriangleOrigin) * uInvVoxel + 0.5);
-    if (!(all(greaterThanEqual(q, vec3(0.0))) && all(lessThan(q, vec3(uTriangleDims))))) return -1;
-    return texelFetch(uTriangles, ivec3(q), 0).r;
-}
-
 uvec3 triangleVertices(int triangle)
 {
     uint i = 3u * uint(triangle);
@@ -360,59 +352,81 @@ vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
     return albedo(triangle, value) * uIndirectBrightness * (0.7 + 0.3 * facing);
 }
 
-// As the CPU (ScreenMap::landedAt): the nearest voxel's triangle and the closest point on it.
-bool shadeLanding(vec3 p, vec3 arrival, out vec3 colour)
+// ScreenMap::landedAt finds the exact closest surface point of p with a BVH query bounded by the
+// distance to the triangle stored at the nearest voxel. Here: the closest point on the closest of
+// the triangles stored at the 8 voxels around p (the nearest one among them). The exact closest
+// triangle of a point within half a voxel of the surface is, but for near-ties, one of those.
+bool closestStoredPoint(vec3 p, out int best, out vec3 bestBarycentric)
 {
-    colour = vec3(0.0);
-    int triangle = nearestTriangle(p);
-    if (triangle < 0) return false;
-    colour = shadeIndirect(triangle, closestBarycentric(p, triangle), arrival);
-    return true;
-}
-
-// The ring map's CPU reference intersects its straight ray with the exact BVH. Here the ray was
-// sphere-traced to within uEpsilon of the surface at p: intersect it exactly (Moller-Trumbore) with
-// the triangles stored at the 8 voxels around p and take the first hit; when none is hit (grazing
-// rays), take the closest point to p on the closest of them.
-bool shadeRayLanding(vec3 origin, vec3 direction, vec3 p, out vec3 colour)
-{
-    colour = vec3(0.0);
     vec3 q = floor((p - uTriangleOrigin) * uInvVoxel);
-    int hit = -1, closest = -1;
-    vec3 hitBarycentric = vec3(1.0, 0.0, 0.0), closestBarycentric3 = vec3(1.0, 0.0, 0.0);
-    float hitT = 1e30, closestDistance = 1e30;
+    best = -1;
+    bestBarycentric = vec3(1.0, 0.0, 0.0);
+    float bestDistance = 1e30;
     for (int i = 0; i < 8; ++i) {
         vec3 corner = q + vec3(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
         if (!(all(greaterThanEqual(corner, vec3(0.0))) && all(lessThan(corner, vec3(uTriangleDims))))) continue;
         int triangle = texelFetch(uTriangles, ivec3(corner), 0).r;
-        if (triangle < 0 || triangle == hit || triangle == closest) continue;
+        if (triangle < 0 || triangle == best) continue;
+        vec3 barycentric = closestBarycentric(p, triangle);
+        uvec3 v = triangleVertices(triangle);
+        vec3 x = barycentric.x * vertexPosition[v.x].xyz + barycentric.y * vertexPosition[v.y].xyz +
+                 barycentric.z * vertexPosition[v.z].xyz;
+        float d = dot(p - x, p - x);
+        if (d < bestDistance || (d == bestDistance && triangle < best)) {  // ties to the lower index, as the BVH
+            bestDistance = d;
+            best = triangle;
+            bestBarycentric = barycentric;
+        }
+    }
+    return best >= 0;
+}
+
+bool shadeLanding(vec3 p, vec3 arrival, out vec3 colour)
+{
+    colour = vec3(0.0);
+    int triangle;
+    vec3 barycentric;
+    if (!closestStoredPoint(p, triangle, barycentric)) return false;
+    colour = shadeIndirect(triangle, barycentric, arrival);
+    return true;
+}
+
+// The ring map's CPU reference intersects its straight ray with the BVH. Here the ray was
+// sphere-traced to within uEpsilon of the surface at p: intersect it exactly (Moller-Trumbore) with
+// the triangles stored at the 8 voxels around p and take the first hit; when none is hit (grazing
+// rays), take the closest stored point to p.
+bool shadeRayLanding(vec3 origin, vec3 direction, vec3 p, out vec3 colour)
+{
+    colour = vec3(0.0);
+    vec3 q = floor((p - uTriangleOrigin) * uInvVoxel);
+    int hit = -1;
+    vec3 hitBarycentric = vec3(1.0, 0.0, 0.0);
+    float hitT = 1e30;
+    for (int i = 0; i < 8; ++i) {
+        vec3 corner = q + vec3(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+        if (!(all(greaterThanEqual(corner, vec3(0.0))) && all(lessThan(corner, vec3(uTriangleDims))))) continue;
+        int triangle = texelFetch(uTriangles, ivec3(corner), 0).r;
+        if (triangle < 0 || triangle == hit) continue;
         uvec3 v = triangleVertices(triangle);
         vec3 a = vertexPosition[v.x].xyz, b = vertexPosition[v.y].xyz, c = vertexPosition[v.z].xyz;
         vec3 e1 = b - a, e2 = c - a, s1 = cross(direction, e2);
         float det = dot(s1, e1);
-        if (abs(det) > 1e-12) {
-            vec3 ao = origin - a;
-            float u = dot(ao, s1) / det;
-            vec3 s2 = cross(ao, e1);
-            float w = dot(direction, s2) / det, t = dot(e2, s2) / det;
-            if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && t > 0.0 && t < hitT) {
-                hitT = t;
-                hit = triangle;
-                hitBarycentric = vec3(1.0 - u - w, u, w);
-            }
-        }
-        vec3 barycentric = closestBarycentric(p, triangle);
-        vec3 x = barycentric.x * a + barycentric.y * b + barycentric.z * c;
-        float d = dot(p - x, p - x);
-        if (d < closestDistance) {
-            closestDistance = d;
-            closest = triangle;
-            closestBarycentric3 = barycentric;
+        if (abs(det) <= 1e-12) continue;
+        vec3 ao = origin - a;
+        float u = dot(ao, s1) / det;
+        vec3 s2 = cross(ao, e1);
+        float w = dot(direction, s2) / det, t = dot(e2, s2) / det;
+        if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && t > 0.0 && t < hitT) {
+            hitT = t;
+            hit = triangle;
+            hitBarycentric = vec3(1.0 - u - w, u, w);
         }
     }
-    if (hit >= 0) colour = shadeIndirect(hit, hitBarycentric, direction);
-    else if (closest >= 0) colour = shadeIndirect(closest, closestBarycentric3, direction);
-    return hit >= 0 || closest >= 0;
+    if (hit >= 0) {
+        colour = shadeIndirect(hit, hitBarycentric, direction);
+        return true;
+    }
+    return shadeLanding(p, direction, colour);
 }
 
 // ---- InverseVis (render/src/curved_ray.cpp, ScreenMap::inverseVis)

@@ -1,137 +1,87 @@
 #include "view_optimiser.h"
 
-#include <ivis/core/errors.h>
-#include <ivis/render/screen_map.h>
+#include <ivis/render/energy.h>
+#include <ivis/render/parameter_optimizer.h>
+#include <ivis/render/viewpoint_annealing.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
+#include <chrono>
 #include <cstdio>
-#include <vector>
 
 namespace ivis::app {
 namespace {
 
-constexpr int kCells = 32;
-constexpr int kRays = 64;
-
-/// Cell of a point in the kCells^3 grid over @a box, -1 outside.
-int cellOf(const glm::vec3& p, const core::Bounds3& box)
+double secondsSince(std::chrono::steady_clock::time_point start)
 {
-    int index = 0;
-    for (int a = 2; a >= 0; --a) {
-        const double extent = std::max(box.hi[a] - box.lo[a], 1e-9);
-        const int c = int(std::floor((p[a] - box.lo[a]) / extent * kCells));
-        if (c < 0 || c >= kCells) return -1;
-        index = index * kCells + c;
-    }
-    return index;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void throwIfCancelled(const std::atomic<bool>* cancel)
+std::string describeParams(const render::MethodParams& params)
 {
-    if (cancel && *cancel) throw Cancelled("optimisation cancelled");
+    char text[160];
+    switch (params.method) {
+    case render::Method::InverseVis: std::snprintf(text, sizeof text, "alpha %.3f", params.curved.alpha); break;
+    case render::Method::Mirror:
+        std::snprintf(text, sizeof text, "w %.3f %.3f %.3f %.3f %.3f", params.mirror.w[0], params.mirror.w[1],
+                      params.mirror.w[2], params.mirror.w[3], params.mirror.w[4]);
+        break;
+    default: std::snprintf(text, sizeof text, "no parameters"); break;
+    }
+    return text;
 }
 
 }  // namespace
 
-const char* const kStandInAlphaDescription =
-    "STAND-IN (the paper's gradient ascent of alpha is not implemented yet): tries alpha = 0, 0.1, ..., 2 and "
-    "keeps the one whose 64x64 rays visit the most cells of a 32^3 grid holding mesh vertices (a coarse "
-    "visibility score). InverseVis only.";
-const char* const kStandInViewDescription =
-    "STAND-IN (the paper's simulated annealing is not implemented yet): tries the views on the radius-2.5 sphere "
-    "at theta = 30..150 and phi = 0..330 degrees in 30-degree steps, at the current alpha, and keeps the one "
-    "whose 64x64 rays visit the most cells of a 32^3 grid holding mesh vertices.";
-
-double coarseVisibility(const render::RenderScene& scene, const ViewState& view, int size,
-                        const std::atomic<bool>* cancel)
+ViewOptimiser parameterOptimiser(const OptimiserSettings& settings)
 {
-    const core::Bounds3 box = core::bounds(scene.mesh());
-    std::vector<std::uint8_t> marked(std::size_t(kCells) * kCells * kCells, 0);
-    for (const glm::vec3& p : scene.mesh().positions)
-        if (const int c = cellOf(p, box); c >= 0) marked[std::size_t(c)] = 1;
-    const core::CameraFrame frame(view.camera, size, size);
-    const render::ScreenMap screen(scene, frame, view.method);
-    std::vector<std::atomic<std::uint8_t>> visited(marked.size());
-    for (auto& v : visited) v.store(0, std::memory_order_relaxed);
-    tbb::parallel_for(tbb::blocked_range<int>(0, size), [&](const tbb::blocked_range<int>& rows) {
-        if (cancel && *cancel) return;
-        render::DistanceField::Sampler sampler = scene.distance().sampler();
-        for (int y = rows.begin(); y != rows.end(); ++y)
-            for (int x = 0; x < size; ++x) {
-                const render::PixelMapping m = screen.map(x + 0.5, y + 0.5, sampler);
-                if (m.region == render::Region::Background) continue;
-                if (const int c = cellOf(m.point.position, box); c >= 0) visited[std::size_t(c)].store(1, std::memory_order_relaxed);
-            }
-    });
-    throwIfCancelled(cancel);
-    std::size_t markedCount = 0, visitedCount = 0;
-    for (std::size_t i = 0; i < marked.size(); ++i) {
-        markedCount += marked[i];
-        visitedCount += marked[i] && visited[i].load(std::memory_order_relaxed);
-    }
-    return markedCount ? double(visitedCount) / double(markedCount) : 0.0;
-}
-
-ViewOptimiser standInAlphaSearch()
-{
-    return [](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel) {
+    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>&) {
+        const auto begin = std::chrono::steady_clock::now();
+        const render::EnergyEvaluator evaluator(
+            scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
+        const render::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const render::AscentResult ascent =
+            render::optimizeParameters(evaluator, start.camera, start.method, settings.optimization.ascentOptions());
         OptimiserResult result;
-        result.state = start;
-        result.energyBefore = result.energyAfter = coarseVisibility(scene, start, kRays, &cancel);
-        result.evaluations = 1;
-        if (start.method.method != render::Method::InverseVis) {
-            result.summary = "alpha search applies to InverseVis only; nothing changed";
-            return result;
-        }
-        for (int i = 0; i <= 20; ++i) {
-            ViewState trial = start;
-            trial.method.curved.alpha = 0.1f * float(i);
-            const double energy = coarseVisibility(scene, trial, kRays, &cancel);
-            ++result.evaluations;
-            if (energy > result.energyAfter + 1e-12) {
-                result.energyAfter = energy;
-                result.state = trial;
-            }
-        }
-        char text[256];
-        std::snprintf(text, sizeof text, "stand-in alpha search: alpha %.2f -> %.2f, coarse visibility %.1f%% -> %.1f%%",
-                      start.method.curved.alpha, result.state.method.curved.alpha, 100.0 * result.energyBefore,
-                      100.0 * result.energyAfter);
+        result.state = {start.camera, ascent.params};
+        result.energyBefore = before.energy;
+        result.energyAfter = ascent.value.energy;
+        result.evaluations = ascent.evaluations + 1;
+        result.seconds = secondsSince(begin);
+        char text[320];
+        std::snprintf(text, sizeof text, "optimised %s: %s -> %s, %s energy %.4f -> %.4f (%d evaluations, %.1f s)",
+                      render::toString(start.method.method), describeParams(start.method).c_str(),
+                      describeParams(ascent.params).c_str(), settings.optimization.energy.c_str(), result.energyBefore,
+                      result.energyAfter, result.evaluations, result.seconds);
         result.summary = text;
         return result;
     };
 }
 
-ViewOptimiser standInViewSearch()
+ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
 {
-    return [](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel) {
+    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>&) {
+        const auto begin = std::chrono::steady_clock::now();
+        const render::EnergyEvaluator evaluator(
+            scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
+        const glm::dvec2 angles = start.camera.angles();
+        const render::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const render::AnnealingResult annealing = render::annealViewpoint(
+            evaluator, start.method, settings.optimization.annealingOptions(angles.x, angles.y, start.camera.fovYDeg),
+            settings.optimization.ascentOptions());
+        const render::VisitedView& best = annealing.bestView();
         OptimiserResult result;
-        result.state = start;
-        result.energyBefore = result.energyAfter = coarseVisibility(scene, start, kRays, &cancel);
-        result.evaluations = 1;
-        for (int theta = 30; theta <= 150; theta += 30)
-            for (int phi = 0; phi < 360; phi += 30) {
-                ViewState trial = start;
-                trial.camera = core::Camera::fromAngles(theta, phi, core::kCameraDistance, start.camera.fovYDeg);
-                trial.camera.orthographic = start.camera.orthographic;
-                trial.camera.orthoHalfHeight = start.camera.orthoHalfHeight;
-                const double energy = coarseVisibility(scene, trial, kRays, &cancel);
-                ++result.evaluations;
-                if (energy > result.energyAfter + 1e-12) {
-                    result.energyAfter = energy;
-                    result.state = trial;
-                }
-            }
-        const glm::dvec2 from = start.camera.angles(), to = result.state.camera.angles();
-        char text[256];
+        result.state.camera = render::viewCamera(best.thetaDeg, best.phiDeg, start.camera.fovYDeg);
+        result.state.method = best.params;
+        result.energyBefore = before.energy;
+        result.energyAfter = best.value.energy;
+        result.evaluations = annealing.evaluations + 1;
+        result.seconds = secondsSince(begin);
+        char text[320];
         std::snprintf(text, sizeof text,
-                      "stand-in view search: theta/phi %.0f/%.0f -> %.0f/%.0f, coarse visibility %.1f%% -> %.1f%%", from.x,
-                      from.y, to.x, to.y, 100.0 * result.energyBefore, 100.0 * result.energyAfter);
+                      "annealed view: theta/phi %.1f/%.1f -> %.1f/%.1f, %s, %s energy %.4f -> %.4f (%zu views, %d "
+                      "evaluations, %.1f s)",
+                      angles.x, angles.y, best.thetaDeg, best.phiDeg, describeParams(best.params).c_str(),
+                      settings.optimization.energy.c_str(), result.energyBefore, result.energyAfter,
+                      annealing.visited.size(), result.evaluations, result.seconds);
         result.summary = text;
         return result;
     };

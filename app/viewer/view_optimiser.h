@@ -1,12 +1,13 @@
 /// @file view_optimiser.h
-/// @brief The interface through which the viewer's "optimise alpha" and "optimise view" buttons
-///        call a CPU optimiser in a background thread, and the stand-ins used until the real one
-///        (METHOD.md: gradient ascent of alpha, simulated annealing of the view) exists.
-/// @note The stand-ins are coarse grid searches of a coarse visibility score; they are NOT the
-///       paper's optimisers and say so in their summaries.
+/// @brief How the viewer's "optimise" buttons call the CPU optimisers in a background thread: a
+///        function object from the scene and the current view to new parameters, and the two
+///        implementations on render::optimizeParameters and render::annealViewpoint.
 #pragma once
 
+#include "../optimization_options.h"
+
 #include <ivis/core/camera.h>
+#include <ivis/core/colormap.h>
 #include <ivis/render/method.h>
 #include <ivis/render/render_scene.h>
 
@@ -25,36 +26,33 @@ struct ViewState {
 /// @brief An optimiser's answer.
 struct OptimiserResult {
     ViewState state;             ///< the view and parameters to move to
-    double energyBefore = 0.0;   ///< score of the view it started from
-    double energyAfter = 0.0;    ///< score of the returned view
+    double energyBefore = 0.0;   ///< energy of the view it started from
+    double energyAfter = 0.0;    ///< energy of the returned view
     int evaluations = 0;         ///< energies computed
-    std::string summary;         ///< one line for the panel
+    double seconds = 0.0;
+    std::string summary;         ///< one line for the panel and stdout
 };
 
-/// @brief A CPU optimiser: called on a background thread with the scene and the current view;
-///        must return promptly once @a cancel becomes true (throwing Cancelled is fine).
+/// @brief A CPU optimiser, called on a background thread with the scene and the current view.
+///        @a cancel is set when the window closes; an optimiser that cannot stop early ignores it.
 /// @warning It must not touch OpenGL; the scene is shared read-only with the UI thread.
 using ViewOptimiser =
     std::function<OptimiserResult(const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel)>;
 
-/// @brief Coarse visibility score of a view, a stand-in for METHOD.md's visibility energy: the
-///        fraction of the cells of a 32^3 grid over the mesh's bounds holding a mesh vertex in which
-///        at least one of @a size x @a size pixel rays (direct or indirect, render::ScreenMap) lands.
-/// @throw Cancelled when @a cancel becomes true
-double coarseVisibility(const render::RenderScene& scene, const ViewState& view, int size,
-                        const std::atomic<bool>* cancel = nullptr);
+/// @brief Settings of both optimisers (the CLI's `optimize` flags plus the optimisation resolution).
+struct OptimiserSettings {
+    OptimizationOptions optimization;  ///< energy, annealing schedule, ascent
+    int resolution = 100;              ///< rays per image side while optimising (paper: 100 or 1000)
+    core::ScalarRange importanceRange; ///< scalar values mapped to importance 0 and 1 (scalar energy)
+};
 
-/// @brief Stand-in for the alpha optimiser: evaluates coarseVisibility (64 x 64 rays) at alpha =
-///        0, 0.1, ..., 2 and keeps the best (InverseVis only; other methods are returned unchanged).
-ViewOptimiser standInAlphaSearch();
+/// @brief "optimise alpha": render::optimizeParameters (gradient ascent with golden-section line
+///        searches) of the current method's parameters (InverseVis alpha, mirror w1..w5) at the
+///        current camera. The ring map has no parameters: it is only evaluated.
+ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 
-/// @brief Stand-in for the viewpoint optimiser: evaluates coarseVisibility (64 x 64 rays) on the
-///        radius-2.5 sphere at theta = 30..150 and phi = 0..330 in 30-degree steps, at the current
-///        alpha (no per-view alpha search), and keeps the best.
-ViewOptimiser standInViewSearch();
-
-/// @brief What the stand-ins do, for tooltips and docs.
-extern const char* const kStandInAlphaDescription;
-extern const char* const kStandInViewDescription;
+/// @brief "optimise view": render::annealViewpoint from the current camera's angles on the radius
+///        2.5 sphere, the parameters optimised at every proposal; returns the best view.
+ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings);
 
 }  // namespace ivis::app

@@ -59,15 +59,16 @@ void tooltip(const char* text)
 
 ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field)
     : mOptions(options),
-      mField(std::make_unique<core::SurfaceField>(std::move(field))),
-      mAlphaOptimiser(standInAlphaSearch()),
-      mViewOptimiser(standInViewSearch())
+      mField(std::make_unique<core::SurfaceField>(std::move(field)))
 {
     mOptions.view.resolution = std::to_string(options.width) + "x" + std::to_string(options.height);
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
     mMethod = render.method;
     mShading = render.shading;
     mDataRange = core::scalarRangeFromData(mField->values);
+    mOptimiser.optimization = mOptions.optimization;
+    mOptimiser.resolution = mOptions.optResolution;
+    mOptions.optimization.energyOptions(mOptions.optResolution, mShading.range);  // validates --energy
     mOrbit = OrbitCamera::fromCamera(mOptions.view.camera(), !mOptions.view.cameraFile.empty());
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
@@ -76,15 +77,13 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field)
 ViewerApp::~ViewerApp()
 {
     mCancelJob = true;
-    if (mJob.valid()) mJob.wait();
+    if (mJob.valid() && mJob.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+        std::printf("inversevis-view: waiting for the running optimisation to finish (it cannot be interrupted)\n");
+        std::fflush(stdout);
+        mJob.wait();
+    }
     mLoader.reset();  // cancels and joins
     closeWindow();
-}
-
-void ViewerApp::setOptimisers(ViewOptimiser alpha, ViewOptimiser view)
-{
-    mAlphaOptimiser = std::move(alpha);
-    mViewOptimiser = std::move(view);
 }
 
 void ViewerApp::openWindow()
@@ -168,8 +167,8 @@ bool ViewerApp::pollLoader()
     std::printf("inversevis-view: %s\n", mVolumeText.c_str());
     std::fflush(stdout);
     mDirty = true;
-    if (mOptions.optimise == "alpha") startOptimiser(mAlphaOptimiser, "optimise alpha");
-    if (mOptions.optimise == "view") startOptimiser(mViewOptimiser, "optimise view");
+    if (mOptions.optimise == "alpha") startOptimiser(false);
+    if (mOptions.optimise == "view") startOptimiser(true);
     return true;
 }
 
@@ -273,12 +272,15 @@ int ViewerApp::runBenchmark()
     return 0;
 }
 
-void ViewerApp::startOptimiser(const ViewOptimiser& optimiser, const char* name)
+void ViewerApp::startOptimiser(bool view)
 {
-    if (!mLoaded || mJob.valid() || !optimiser) return;
+    if (!mLoaded || mJob.valid()) return;
     mCancelJob = false;
-    mJobName = name;
-    mStatus = std::string(name) + ": running on the CPU...";
+    mOptimiser.importanceRange = mShading.range;
+    const ViewOptimiser optimiser = view ? viewpointOptimiser(mOptimiser) : parameterOptimiser(mOptimiser);
+    mJobName = view ? "optimise view" : "optimise " + std::string(render::toString(mMethod.method));
+    mStatus = mJobName + ": running on the CPU...";
+    mJobStart = now();
     ViewState state{mOrbit.camera(), mMethod};
     const render::RenderScene* scene = mLoaded->scene.get();
     mJob = std::async(std::launch::async, [optimiser, scene, state, this] { return optimiser(*scene, state, mCancelJob); });
@@ -289,7 +291,9 @@ void ViewerApp::pollOptimiser(double time)
     if (!mJob.valid() || mJob.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
     try {
         const OptimiserResult result = mJob.get();
-        mStatus = result.summary + " (" + std::to_string(result.evaluations) + " evaluations)";
+        mStatus = result.summary;
+        std::printf("inversevis-view: %s\n", mStatus.c_str());
+        std::fflush(stdout);
         const float alpha = mMethod.curved.alpha;
         render::MethodParams target = result.state.method;
         target.method = mMethod.method;
@@ -424,18 +428,40 @@ void ViewerApp::drawPanel()
     ImGui::Separator();
 
     const bool busy = mJob.valid() || !mLoaded;
-    ImGui::BeginDisabled(busy || mMethod.method != render::Method::InverseVis);
-    if (ImGui::Button("optimise alpha")) startOptimiser(mAlphaOptimiser, "optimise alpha");
+    {
+        const std::vector<std::string> energies = {"visibility", "scalar"};
+        const bool scalar = mOptimiser.optimization.energy == "scalar";
+        if (ImGui::BeginCombo("energy", mOptimiser.optimization.energy.c_str())) {
+            for (const std::string& name : energies)
+                if ((name != "scalar" || mField->hasScalar()) &&
+                    ImGui::Selectable(name.c_str(), name == mOptimiser.optimization.energy))
+                    mOptimiser.optimization.energy = name;
+            ImGui::EndCombo();
+        }
+        tooltip(scalar ? "scalar: sum of the normalised scalar over the pixels that show the surface (METHOD.md)"
+                       : "visibility: fraction of the surface voxels some ray lands in (METHOD.md, the paper's Table 1)");
+        ImGui::SliderInt("opt. rays", &mOptimiser.resolution, 16, 400);
+        tooltip("rays per image side while optimising (paper: 100 or 1000)");
+        ImGui::SliderInt("anneal steps", &mOptimiser.optimization.steps, 1, 100);
+        tooltip("proposals of the simulated annealing after the start view");
+    }
+    const bool hasParameters = mMethod.method == render::Method::InverseVis || mMethod.method == render::Method::Mirror;
+    ImGui::BeginDisabled(busy || !hasParameters);
+    if (ImGui::Button(mMethod.method == render::Method::Mirror ? "optimise w" : "optimise alpha")) startOptimiser(false);
     ImGui::EndDisabled();
-    tooltip(kStandInAlphaDescription);
+    tooltip("CPU, in the background: render::optimizeParameters, gradient ascent of the method's parameters "
+            "(InverseVis alpha, mirror w1..w5) with golden-section line searches on the true energy, at this view; "
+            "alpha then eases to the result");
     ImGui::SameLine();
     ImGui::BeginDisabled(busy);
-    if (ImGui::Button("optimise view")) startOptimiser(mViewOptimiser, "optimise view");
+    if (ImGui::Button("optimise view")) startOptimiser(true);
     ImGui::EndDisabled();
-    tooltip(kStandInViewDescription);
+    tooltip("CPU, in the background: render::annealViewpoint, simulated annealing of the camera on the radius-2.5 "
+            "sphere from this view, the parameters optimised at every proposal; the camera then eases to the best "
+            "view. It cannot be interrupted.");
     if (mJob.valid()) {
         ImGui::SameLine();
-        if (ImGui::SmallButton("cancel")) mCancelJob = true;
+        ImGui::Text("running %.0f s", now() - mJobStart);
     }
     ImGui::SameLine();
     if (ImGui::Button("screenshot (P)")) {

@@ -38,9 +38,6 @@ public:
     /// @throw GlError when no OpenGL 4.3 core context can be had; InputError / ValueError from loading
     int run();
 
-    /// @brief Replaces the stand-in optimisers (e.g. by the real CPU optimiser once it exists).
-    void setOptimisers(ViewOptimiser alpha, ViewOptimiser view);
-
 private:
     void openWindow();
     void closeWindow();
@@ -58,7 +55,8 @@ private:
     int runInteractive();
     void drawPanel();
     void handleInput();
-    void startOptimiser(const ViewOptimiser& optimiser, const char* name);
+    /// Runs the viewpoint (@a view) or the parameter optimiser in the background.
+    void startOptimiser(bool view);
     void pollOptimiser(double now);
 
     ViewerOptions mOptions;
@@ -67,8 +65,7 @@ private:
     render::ShadingOptions mShading;
     core::ScalarRange mDataRange;
     OrbitCamera mOrbit;
-    ViewOptimiser mAlphaOptimiser;
-    ViewOptimiser mViewOptimiser;
+    OptimiserSettings mOptimiser;
 
     GLFWwindow* mWindow = nullptr;
     bool mGlfwReady = false;
@@ -82,6 +79,7 @@ private:
     std::future<OptimiserResult> mJob;
     std::atomic<bool> mCancelJob{false};
     std::string mJobName;
+    double mJobStart = 0.0;
     std::string mStatus;
     CameraAnimation mAnimation;
 

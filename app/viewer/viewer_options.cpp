@@ -12,6 +12,9 @@ void ViewerOptions::addTo(CLI::App& app)
 {
     mesh.addTo(app, "--volume-res");
     view.addTo(app);
+    optimization.addTo(app);
+    app.add_option("--opt-res", optResolution, "Optimisation resolution (rays per side) of the optimise buttons")
+        ->capture_default_str();
     // Flags of `inversevis render` that have no meaning in a window.
     for (const char* name : {"--res", "--spp", "--no-legend", "--no-outline", "--transparent"})
         app.remove_option(app.get_option(name));
@@ -41,6 +44,8 @@ void ViewerOptions::validate() const
     if (frames < 1 || frames > 100000) throw ValueError("--frames " + std::to_string(frames) + " must be at least 1");
     if (benchmarkFrames < 2 || benchmarkFrames > 100000)
         throw ValueError("--benchmark-frames " + std::to_string(benchmarkFrames) + " must be at least 2");
+    if (optResolution < 8 || optResolution > 2000)
+        throw ValueError("--opt-res " + std::to_string(optResolution) + " is out of range (8 to 2000)");
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "../mesh_options.h"
+#include "../optimization_options.h"
 #include "../view_options.h"
 
 #include <CLI/CLI.hpp>
@@ -19,13 +20,15 @@ namespace ivis::app {
 struct ViewerOptions {
     MeshOptions mesh;           ///< MESH, --scalar, --volume-res, ... (as the CLI)
     ViewOptions view;           ///< --theta, --phi, --method, --alpha, --colormap, --range, ...
+    OptimizationOptions optimization;  ///< --energy, --steps, --seed, ... (as `inversevis optimize`)
+    int optResolution = 100;    ///< rays per side while optimising (--opt-res)
     int width = 1024;           ///< window (and headless image) width in pixels
     int height = 768;           ///< window (and headless image) height in pixels
     std::string screenshot;     ///< headless: write the last frame here and exit
     int frames = 3;             ///< headless: frames rendered before the screenshot
     std::string regionPng;      ///< debug: region of the last frame as grey (0 background, 128 direct, 255 indirect)
     std::string uiScreenshot;   ///< debug: run the window with its panel, write it (panel included) once settled, exit
-    std::string optimise;       ///< "alpha" or "view": press that button as soon as the volume is loaded
+    std::string optimise;       ///< "alpha" (the method's parameters) or "view": press that button once loaded
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
     std::string cacheDir;       ///< volume cache folder ("" = $XDG_CACHE_HOME or ~/.cache/inversevis)

@@ -96,7 +96,7 @@ ColorBarLayout drawColorBar(Image& image, const Colormap& map, const ScalarRange
 {
     validate(options);
     const int side = std::min(image.width(), image.height());
-    const int scale = options.textScale > 0 ? options.textScale : std::max(1, int(std::lround(side / 320.0)));
+    const int scale = options.textScale > 0 ? options.textScale : std::max(1, side / 500);
     const int pad = 4 * scale + 2;
     const int margin = std::max(2, side / 40);
     const int stroke = std::max(1, scale / 2);
@@ -118,7 +118,7 @@ ColorBarLayout drawColorBar(Image& image, const Colormap& map, const ScalarRange
     const int titleHeight = lines.empty() ? 0 : static_cast<int>(lines.size()) * lineHeight + scale;
 
     const int backingHeight = 2 * pad + titleHeight + 2 * capHalf + frameHeight;
-    const int backingTop = (image.height() - backingHeight) / 2;
+    const int backingTop = std::max(0, image.height() - margin - backingHeight);  // lower right corner
     const int backingRight = image.width() - margin;
     const PixelRect backing{backingRight - (contentWidth + 2 * pad), backingTop, backingRight,
                             backingTop + backingHeight};

@@ -196,9 +196,10 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
 #endif
 }
 
-// The interactive path: the ImGui panel, the background loader, a button pressed by --optimise, the
-// animation toward its result and the window read back with the panel.
-TEST(Viewer, PanelRunsTheStandInOptimiser)
+// The interactive path: the ImGui panel, the background loader, the "optimise alpha" button pressed
+// by --optimise (render::optimizeParameters on a background thread), the animation toward its result
+// and the window read back with the panel.
+TEST(Viewer, PanelRunsTheParameterOptimiser)
 {
 #ifndef IVIS_VIEW_PATH
     GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
@@ -206,11 +207,12 @@ TEST(Viewer, PanelRunsTheStandInOptimiser)
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string shot = dir.file("window.png");
-    const RunResult run = runViewer("scene:sphere --optimise alpha --frames 2 --width 640 --height 480 --ui-screenshot '" +
+    const RunResult run = runViewer("scene:sphere --optimise alpha --energy scalar --opt-res 48 --frames 2 --width 640 --height 480 --ui-screenshot '" +
                                         shot + "' --cache-dir '" + dir.path() + "'",
                                     true, dir);
     ASSERT_EQ(run.status, 0) << run.output;
-    EXPECT_NE(run.output.find("stand-in alpha search"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("optimised inversevis: alpha 0.500 -> alpha "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("scalar energy"), std::string::npos) << run.output;
     const core::Image window = core::readPng(shot);
     EXPECT_EQ(window.width(), 640);
     EXPECT_EQ(window.height(), 480);

@@ -49,9 +49,9 @@ TEST_P(ColorBarSize, ChangesPixelsOnlyInItsRegionAtTheRight)
     EXPECT_GT(changed, (b.x1 - b.x0) * (b.y1 - b.y0) * 9 / 10);  // the backing covers its rectangle
     EXPECT_GT(ink, 50);                                           // dark text, ticks and frame
 
-    // The gradient is about half the image high, hi at the top, lo at the bottom.
+    // The gradient is the default fraction of the image high, hi at the top, lo at the bottom.
     const PixelRect& g = layout.gradient;
-    EXPECT_NEAR(g.y1 - g.y0, height / 2, height / 20 + 4);
+    EXPECT_NEAR(g.y1 - g.y0, ColorBarOptions{}.heightFraction * height, height / 20 + 4);
     EXPECT_GE(g.x1 - g.x0, 6);
     const int x = (g.x0 + g.x1) / 2;
     const float twoRows = 2.0f / float(g.y1 - g.y0);  // colour change over two rows bounds the error

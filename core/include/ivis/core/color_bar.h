@@ -26,9 +26,9 @@ struct PixelRect {
 
 /// @brief How the colour bar is sized.
 struct ColorBarOptions {
-    float heightFraction = 0.5f;  ///< gradient height / image height, in [0.05, 0.8]
-    int textScale = 0;            ///< font scale factor (text_raster.h); 0 = 1 per 320 pixels of
-                                  ///< the image's smaller side, rounded, at least 1
+    float heightFraction = 0.35f;  ///< gradient height / image height, in [0.05, 0.8]
+    int textScale = 0;            ///< font scale factor (text_raster.h); 0 = 1 per 500 pixels of
+                                  ///< the image's smaller side (rounded down), at least 1
     float backingOpacity = 0.85f; ///< how much the light backing hides the image under it, in [0,1]
 };
 
@@ -42,7 +42,7 @@ struct ColorBarLayout {
 ///        tells them apart: "0.0931", "1.2e+03"); a single label when lo == hi.
 std::vector<std::string> colorBarLabels(const ScalarRange& range);
 
-/// @brief Draws the colour bar: a light backing, right-aligned and vertically centred, holding the
+/// @brief Draws the colour bar: a light backing, in the lower right corner, holding the
 ///        title line ("title [units]"; units on a second line when that is much wider than the
 ///        bar and its labels; no line when both are empty), the gradient of @a map with a thin frame, and ticks labelled by
 ///        colorBarLabels on its right; text and frame in dark grey.
