@@ -28,10 +28,7 @@ int main(int argc, char** argv)
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
         std::cerr << "inversevis: error: " << e.what() << "\n";
         return 2;
-    } catch (const ivis::InputError& e) {
-        std::cerr << "inversevis: error: " << e.what() << "\n";
-        return 2;
-    } catch (const ivis::ValueError& e) {
+    } catch (const ivis::UserError& e) {
         std::cerr << "inversevis: error: " << e.what() << "\n";
         return 2;
     } catch (const ivis::Cancelled& e) {

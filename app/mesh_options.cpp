@@ -34,6 +34,13 @@ vdb::VolumeOptions MeshOptions::volumeOptions() const
     return options;
 }
 
+std::string volumeCacheFolder(const std::string& output, const std::string& cacheDir)
+{
+    if (!cacheDir.empty()) return cacheDir;
+    const std::filesystem::path path(output);
+    return path.has_parent_path() ? path.parent_path().string() : ".";
+}
+
 std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution)
 {
     const std::string name = core::sourceStem(source) + ".res" + std::to_string(resolution) + ".vdb";

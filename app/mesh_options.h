@@ -25,6 +25,9 @@ struct MeshOptions {
     vdb::VolumeOptions volumeOptions() const;
 };
 
+/// @brief Folder for volume caches: @a cacheDir when given, else the folder of @a output, else ".".
+std::string volumeCacheFolder(const std::string& output, const std::string& cacheDir);
+
 /// @brief Default cache file for a source and resolution inside @a folder: "<stem>.res<N>.vdb".
 std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution);
 

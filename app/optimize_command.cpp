@@ -11,7 +11,6 @@
 #include <ivis/render/annealing_plot.h>
 #include <ivis/vdb/volume_cache.h>
 
-#include <filesystem>
 #include <memory>
 
 namespace ivis::app {
@@ -45,10 +44,7 @@ Command addOptimizeCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
-        const std::filesystem::path output(options->output);
-        const std::string folder = !options->cacheDir.empty()    ? options->cacheDir
-                                   : output.has_parent_path() ? output.parent_path().string()
-                                                              : ".";
+        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
             field.mesh, volumeOptions, defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution),

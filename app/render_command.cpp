@@ -12,7 +12,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <memory>
 
 namespace ivis::app {
@@ -48,10 +47,7 @@ Command addRenderCommand(CLI::App& app)
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
 
-        const std::filesystem::path output(options->output);
-        const std::string folder = !options->cacheDir.empty()            ? options->cacheDir
-                                   : output.has_parent_path() ? output.parent_path().string()
-                                                              : ".";
+        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
         const std::string volumePath = defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);

@@ -22,10 +22,12 @@ void ContentHash::add(const void* data, std::size_t size)
     }
 }
 
-std::string ContentHash::hex() const
+std::string ContentHash::hex() const { return toHex(mState); }
+
+std::string toHex(std::uint64_t value)
 {
     char buffer[17];
-    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(mState));
+    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(value));
     return buffer;
 }
 

@@ -140,12 +140,13 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
 
 }  // namespace
 
-// The acceptance test of issue 5. Bounds: regions >= 97% of pixels (the issue's figure). Colours:
-// the viewer runs the same formulas in float on a dense copy of the same voxels, so colours differ
-// only where a ray's float rounding lands it on a slightly different point (scalar and normal vary
-// smoothly) and by 8-bit rounding (<= 0.5 level); a mean of 3 levels (about 1% of the range) allows
-// for that and still fails for any systematic error (a wrong colour map, light or brightness
-// factor moves the mean by 10+ levels; a different alpha or hull moves the indirect colours by more).
+// The acceptance test of issue 5. Regions: >= 97% of pixels (the issue's figure; measured 99.999%).
+// Colours, as mean |difference| in 8-bit sRGB levels over the pixels both call indirect (or direct):
+// the viewer interpolates the same voxels with the same formulas, in float where the CPU mixes
+// float and double, so a curved ray may land a hair away from the CPU's, and 8-bit rounding adds
+// up to half a level. Measured: 0.14 (indirect) and 0.002 (direct). The bound of 1 level is 7x that
+// and still fails for any systematic error: a wrong colour map, light, brightness factor or landing
+// rule moves the mean by 10 levels or more.
 TEST(Viewer, InverseVisMatchesCpuRenderer)
 {
 #ifndef IVIS_VIEW_PATH
@@ -155,8 +156,8 @@ TEST(Viewer, InverseVisMatchesCpuRenderer)
     const Agreement a = compareWithCpu("inversevis");
     EXPECT_GE(a.regionAgreement, 0.97);
     EXPECT_GT(a.bothIndirect, std::size_t(10000));
-    EXPECT_LT(a.indirectMeanDiff, 3.0);
-    EXPECT_LT(a.directMeanDiff, 3.0);
+    EXPECT_LT(a.indirectMeanDiff, 1.0);
+    EXPECT_LT(a.directMeanDiff, 0.5);
 #endif
 }
 
@@ -166,12 +167,17 @@ TEST(Viewer, MirrorAndRingMatchCpuRenderer)
     GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
 #else
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
-    for (const char* method : {"mirror", "neugebauer"}) {
-        const Agreement a = compareWithCpu(method);
-        EXPECT_GE(a.regionAgreement, 0.97) << method;
-        EXPECT_GT(a.bothIndirect, std::size_t(5000)) << method;
-        EXPECT_LT(a.indirectMeanDiff, 3.0) << method;
-    }
+    // Mirror: the same sphere tracing as the CPU (measured 0.13 levels). Ring map: the CPU intersects
+    // the BVH, the viewer sphere-traces and then intersects the triangles stored around the landing
+    // point, so grazing rays may differ (measured 0.9 levels, 99.88% of regions).
+    const Agreement mirror = compareWithCpu("mirror");
+    EXPECT_GE(mirror.regionAgreement, 0.97);
+    EXPECT_GT(mirror.bothIndirect, std::size_t(5000));
+    EXPECT_LT(mirror.indirectMeanDiff, 1.0);
+    const Agreement ring = compareWithCpu("neugebauer");
+    EXPECT_GE(ring.regionAgreement, 0.97);
+    EXPECT_GT(ring.bothIndirect, std::size_t(5000));
+    EXPECT_LT(ring.indirectMeanDiff, 3.0);
 #endif
 }
 
@@ -187,8 +193,9 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
     const Agreement exact = compareWithCpu("inversevis", 400, "", &output);
     EXPECT_NE(output.find("resolution 400 (voxel 0.0125), the volume's own, far field at 200"), std::string::npos) << output;
     EXPECT_GE(exact.regionAgreement, 0.97);
-    EXPECT_LT(exact.indirectMeanDiff, 3.0);
-    // Resampled: the band at a coarser voxel than the CPU's; the same picture within coarser bounds.
+    EXPECT_LT(exact.indirectMeanDiff, 1.0);
+    // Resampled: the band at a coarser voxel than the CPU's (0.0140 instead of 0.0125); the same
+    // regions, colours within a looser bound (measured 1.7 levels).
     const Agreement resampled = compareWithCpu("inversevis", 400, "--texture-budget 16", &output);
     EXPECT_NE(output.find("RESAMPLED from 400"), std::string::npos) << output;
     EXPECT_GE(resampled.regionAgreement, 0.95);

@@ -80,13 +80,6 @@ CacheKey readKey(const openvdb::MetaMap& meta, const std::string& path)
     }
 }
 
-std::string hexHash(std::uint64_t value)
-{
-    char buffer[17];
-    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(value));
-    return buffer;
-}
-
 /// Opens a volume file and reads only its metadata.
 CacheKey readCacheKey(const std::string& path)
 {
@@ -109,7 +102,7 @@ std::string staleReason(const CacheKey& key, const core::TriangleMesh& mesh, con
 {
     if (key.version != kVolumeFormatVersion)
         return "format version " + std::to_string(key.version) + ", expected " + std::to_string(kVolumeFormatVersion);
-    if (key.meshHash != hexHash(core::meshHash(mesh))) return "built from another mesh";
+    if (key.meshHash != core::toHex(core::meshHash(mesh))) return "built from another mesh";
     if (key.resolution != options.resolution)
         return "resolution " + std::to_string(key.resolution) + ", requested " + std::to_string(options.resolution);
     if (key.bandVoxels != options.bandVoxels) return "another band width";
@@ -147,7 +140,7 @@ void writeVolume(const SurfaceVolume& volume, const std::string& path)
     IVIS_CHECK(volume.phi && volume.triangle && volume.barycentric);
     openvdb::MetaMap meta;
     meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kVolumeFormatVersion));
-    meta.insertMeta(kMeshHashKey, openvdb::StringMetadata(hexHash(volume.meshHash)));
+    meta.insertMeta(kMeshHashKey, openvdb::StringMetadata(core::toHex(volume.meshHash)));
     meta.insertMeta(kResolutionKey, openvdb::Int32Metadata(volume.options.resolution));
     meta.insertMeta(kBandKey, openvdb::FloatMetadata(volume.options.bandVoxels));
     meta.insertMeta(kReachKey, openvdb::DoubleMetadata(volume.options.farFieldReach));

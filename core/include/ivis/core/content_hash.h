@@ -27,6 +27,9 @@ private:
     std::uint64_t mState = 0xcbf29ce484222325ull;
 };
 
+/// @brief A 64-bit value as 16 lowercase hex digits.
+std::string toHex(std::uint64_t value);
+
 /// @brief Hash of the mesh geometry (positions, triangles, cap count): equal meshes, equal hash.
 std::uint64_t meshHash(const TriangleMesh& mesh);
 

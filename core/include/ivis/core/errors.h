@@ -8,16 +8,22 @@
 
 namespace ivis {
 
-/// @brief Bad user input (a file, a flag value); the message names the file or value.
-class InputError : public std::runtime_error {
+/// @brief Base of the errors a user can fix (programs report them and exit with status 2).
+class UserError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
-/// @brief A value outside its allowed range (a resolution, a parameter).
-class ValueError : public std::runtime_error {
+/// @brief Bad user input (a file, a flag value); the message names the file or value.
+class InputError : public UserError {
 public:
-    using std::runtime_error::runtime_error;
+    using UserError::UserError;
+};
+
+/// @brief A value outside its allowed range (a resolution, a parameter).
+class ValueError : public UserError {
+public:
+    using UserError::UserError;
 };
 
 /// @brief A long operation was cancelled through its interrupter.
