@@ -198,6 +198,18 @@ void ViewerApp::renderFrame(int width, int height)
     mLastFrameMs = timedMs([&] { mRenderer->render(f); });
 }
 
+void ViewerApp::takeNumberedScreenshot()
+{
+    const std::string path =
+        "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mScreenshots) + ".png";
+    try {
+        writeScreenshot(path, "");
+        mStatus = "wrote " + path;
+    } catch (const std::exception& e) {
+        mStatus = e.what();
+    }
+}
+
 void ViewerApp::writeScreenshot(const std::string& path, const std::string& regionPath)
 {
     core::writePng(mRenderer->readColour(), path, false);
@@ -327,16 +339,7 @@ void ViewerApp::handleInput()
         }
     }
     if (!io.WantCaptureKeyboard) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) {
-            const std::string path =
-                "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mScreenshots) + ".png";
-            try {
-                writeScreenshot(path, "");
-                mStatus = "wrote " + path;
-            } catch (const std::exception& e) {
-                mStatus = e.what();
-            }
-        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) takeNumberedScreenshot();
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
     }
 }
@@ -464,16 +467,7 @@ void ViewerApp::drawPanel()
         ImGui::Text("running %.0f s", now() - mJobStart);
     }
     ImGui::SameLine();
-    if (ImGui::Button("screenshot (P)")) {
-        const std::string path =
-            "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mScreenshots) + ".png";
-        try {
-            writeScreenshot(path, "");
-            mStatus = "wrote " + path;
-        } catch (const std::exception& e) {
-            mStatus = e.what();
-        }
-    }
+    if (ImGui::Button("screenshot (P)")) takeNumberedScreenshot();
     if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
     ImGui::Separator();
     ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,

@@ -48,6 +48,8 @@ private:
     GpuFrame frame(int width, int height) const;
     void renderFrame(int width, int height);
     void writeScreenshot(const std::string& path, const std::string& regionPath);
+    /// Writes inversevis-view-<mesh>-<n>.png and reports it (or the error) in the panel.
+    void takeNumberedScreenshot();
     /// Writes the window's back buffer (scene and panel) to @a path.
     void writeWindow(const std::string& path);
     int runHeadlessScreenshot();
