@@ -87,6 +87,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"front_energy_value", best.value.front},
             {"display_energy_value", display.energy},
             {"display_front_energy_value", display.front},
+            {"mean_importance", best.value.meanImportance},
             {"output", options->output},
             {"visited", visited}};
         if (!options->json.empty()) writeJsonFile(json, options->json);

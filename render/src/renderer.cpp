@@ -51,8 +51,6 @@ void drawOutline(core::Image& image, const std::vector<float>& region, int radiu
 
 }  // namespace
 
-const char* const* layerNames() { return kLayerNames; }
-
 RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, const RenderOptions& options,
                          core::Interrupter* interrupter)
 {

@@ -78,7 +78,6 @@ public:
     float importance(const SurfacePoint& point) const;
 
     const EnergyOptions& options() const { return mOptions; }
-    const RenderScene& scene() const { return mScene; }
     /// @brief The visibility grid (null for the scalar kind).
     const VisibilityGrid* visibilityGrid() const { return mVisibility.get(); }
 

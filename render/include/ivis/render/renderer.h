@@ -56,7 +56,4 @@ struct RenderResult {
 RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, const RenderOptions& options,
                          core::Interrupter* interrupter = nullptr);
 
-/// @brief Names of the per-pixel layers, in the order renderImage adds them.
-const char* const* layerNames();
-
 }  // namespace ivis::render

@@ -42,11 +42,14 @@ public:
     bool curvedRayStart(double x, double y, DistanceField::Sampler& sampler, glm::vec3& seed,
                         glm::vec3& velocityPerAlpha) const;
 
+    /// @brief Indirect mapping for a point that reached the surface (phi < eps): its exact closest
+    ///        surface point (BVH search bounded by the triangle stored at its nearest fine voxel).
+    PixelMapping landedAt(const glm::vec3& p, const glm::vec3& arrival, int steps,
+                          DistanceField::Sampler& sampler) const;
+
     /// @brief The ring layout (meaningful for Method::Neugebauer).
     const RingLayout& rings() const { return mRings; }
-    const core::CameraFrame& frame() const { return mFrame; }
     const MethodParams& params() const { return mParams; }
-    const RenderScene& scene() const { return mScene; }
 
 private:
     PixelMapping inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
@@ -54,13 +57,6 @@ private:
                      glm::vec3& velocityPerAlpha) const;
     PixelMapping mirror(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
     PixelMapping ring(const glm::dvec2& pixel) const;
-public:
-    /// @brief Indirect mapping for a point that reached the surface (phi < eps): its exact closest
-    ///        surface point (BVH search bounded by the triangle stored at its nearest fine voxel).
-    PixelMapping landedAt(const glm::vec3& p, const glm::vec3& arrival, int steps,
-                          DistanceField::Sampler& sampler) const;
-
-private:
     const RenderScene& mScene;
     core::CameraFrame mFrame;
     MethodParams mParams;
