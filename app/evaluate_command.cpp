@@ -81,9 +81,9 @@ Command addEvaluateCommand(CLI::App& app)
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         nlohmann::json results = nlohmann::json::object();
         std::ostringstream table1, table2;
-        table1 << "| Surface |";
+        table1 << "| Surface | ceiling |";
         for (const auto& m : options->methods) table1 << " " << m << " |";
-        table1 << "\n|---|";
+        table1 << "\n|---|---|";
         for (std::size_t i = 0; i < options->methods.size(); ++i) table1 << "---|";
         table1 << "\n";
         table2 << "| Surface |";
@@ -102,7 +102,13 @@ Command addEvaluateCommand(CLI::App& app)
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);
             const std::string stem = core::sourceStem(mesh);
-            table1 << "| " << stem << " |";
+            render::EnergyOptions displayOptions = options->optimization.energyOptions(options->displayResolution, range);
+            displayOptions.kind = render::EnergyKind::Visibility;
+            const render::EnergyEvaluator display(scene, displayOptions);
+            const render::VisibilityGrid& grid = *display.visibilityGrid();
+            const double ceiling = double(grid.reachableCount(field.mesh)) / double(std::max<std::size_t>(1, grid.markedCount()));
+            results[stem]["visibility_ceiling"] = ceiling;
+            table1 << "| " << stem << " | " << percent(ceiling) << " |";
             table2 << "| " << stem << " |";
             for (const std::string& methodName : options->methods) {
                 render::MethodParams start;
@@ -124,10 +130,8 @@ Command addEvaluateCommand(CLI::App& app)
                             best.thetaDeg, best.phiDeg, run.bestView().thetaDeg, run.bestView().phiDeg);
                     }
                 }
-                render::EnergyOptions display = options->optimization.energyOptions(options->displayResolution, range);
-                display.kind = render::EnergyKind::Visibility;
                 const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->fovYDeg);
-                const render::EnergyValue value = render::EnergyEvaluator(scene, display).evaluate(camera, best.params);
+                const render::EnergyValue value = display.evaluate(camera, best.params);
                 entry["visibility"] = value.energy;
                 entry["front_visibility"] = value.front;
                 entry["theta"] = best.thetaDeg;
@@ -152,7 +156,8 @@ Command addEvaluateCommand(CLI::App& app)
             table2 << "\n";
         }
         if (!options->json.empty()) writeJsonFile(results, options->json);
-        const std::string markdown = "## Visibility in percent at each method's best view (front-only in brackets)\n\n" +
+        const std::string markdown = "## Visibility in percent at each method's best view (front-only in brackets)\n\n"
+                                     "ceiling: the marked voxels the surface itself passes through (no method visits more)\n\n" +
                                      table1.str() + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" +
                                      table2.str();
         if (!options->markdown.empty())

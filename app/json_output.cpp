@@ -16,6 +16,11 @@ nlohmann::json methodParamsJson(const render::MethodParams& params)
         json["hull_offset"] = params.curved.hullOffset;
         json["step"] = params.curved.stepSize;
         break;
+    case render::Method::InverseVisAdaptive:
+        json["alpha_profile"] = params.profile.coefficients;
+        json["hull_offset"] = params.curved.hullOffset;
+        json["step"] = params.curved.stepSize;
+        break;
     case render::Method::Mirror:
         json["mirror_w"] = params.mirror.w;
         json["mirror_distance_behind"] = params.mirror.distanceBehind;

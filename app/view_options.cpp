@@ -16,8 +16,12 @@ void ViewOptions::addTo(CLI::App& command)
         ->check(CLI::ExistingFile);
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
-    command.add_option("--method", method, "front, backfaces, neugebauer, mirror or inversevis")->capture_default_str();
+    command.add_option("--method", method, "front, backfaces, neugebauer, mirror, inversevis or inversevis-adaptive")
+        ->capture_default_str();
     command.add_option("--alpha", alpha, "InverseVis initial velocity scale")->capture_default_str();
+    command.add_option("--alpha-profile", alphaProfile,
+                       "inversevis-adaptive: alpha(c) = a0 + a1 c + a2 c^2 across the ring (default 0 3 3)")
+        ->expected(3);
     command.add_option("--hull-offset", hullOffset, "InverseVis hull distance phi0 (normalised units)")
         ->capture_default_str();
     command.add_option("--step", stepSize, "InverseVis symplectic Euler step h")->capture_default_str();
@@ -55,6 +59,7 @@ render::RenderOptions ViewOptions::renderOptions() const
     options.method.method = render::parseMethod(method);
     options.method.curved.alpha = alpha;
     options.method.curved.hullOffset = hullOffset;
+    for (std::size_t i = 0; i < alphaProfile.size(); ++i) options.method.profile.coefficients[i] = alphaProfile[i];
     options.method.curved.stepSize = stepSize;
     options.method.curved.maxSteps = maxSteps;
     if (!(hullOffset > 0.0f) || !(stepSize > 0.0f) || maxSteps < 1)

@@ -24,6 +24,7 @@ struct ViewOptions {
     int samplesPerPixel = 1;
     std::string method = "inversevis";
     float alpha = 0.5f;
+    std::vector<float> alphaProfile;
     float hullOffset = 0.4f;
     float stepSize = 0.1f;
     int maxSteps = 1000;

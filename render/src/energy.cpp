@@ -6,16 +6,17 @@
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
 namespace ivis::render {
 namespace {
 
-/// Per-thread sums of an energy evaluation.
+/// Sums of an energy evaluation over a block of pixels.
 struct Tally {
     double direct = 0.0, indirect = 0.0;
-    std::size_t pixelsDirect = 0, pixelsIndirect = 0;
+    std::size_t pixelsIndirect = 0;
     std::vector<std::uint64_t> directKeys, allKeys;
 };
 
@@ -63,37 +64,48 @@ float EnergyEvaluator::importance(const SurfacePoint& point) const
 
 EnergyValue EnergyEvaluator::evaluate(const core::Camera& camera, const MethodParams& params) const
 {
-    const int n = mOptions.resolution;
-    const core::CameraFrame frame(camera, n, n);
-    const ScreenMap screen(mScene, frame, params);
-    std::vector<Tally> rows(static_cast<std::size_t>(n));
-    tbb::parallel_for(0, n, [&](int y) {
+    return evaluate(ViewSamples(mScene, camera, mOptions.resolution, params), params);
+}
+
+EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodParams& params) const
+{
+    if (!samples.compatibleWith(params)) throw ValueError("view samples prepared for other method parameters");
+    const ScreenMap screen(mScene, samples.frame(), params);
+    const bool curved = params.curvedRays();
+    const std::vector<MissedPixel>& missed = samples.missed();
+    // Fixed blocks summed in block order: the result does not depend on the thread count.
+    const std::size_t blockSize = 64, blocks = (missed.size() + blockSize - 1) / blockSize;
+    std::vector<Tally> tallies(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
         DistanceField::Sampler sampler = mScene.distance().sampler();
-        Tally& tally = rows[std::size_t(y)];
-        for (int x = 0; x < n; ++x) {
-            const PixelMapping m = screen.map(x + 0.5, y + 0.5, sampler);
-            if (m.region == Region::Background) continue;
-            const bool direct = m.region == Region::Direct;
-            (direct ? tally.pixelsDirect : tally.pixelsIndirect)++;
-            if (mVisibility) {
-                const std::uint64_t key = mVisibility->keyOf(m.point.position);
-                tally.allKeys.push_back(key);
-                if (direct) tally.directKeys.push_back(key);
-            } else {
-                (direct ? tally.direct : tally.indirect) += importance(m.point);
-            }
+        Tally& tally = tallies[b];
+        for (std::size_t i = b * blockSize; i < std::min(missed.size(), (b + 1) * blockSize); ++i) {
+            const MissedPixel& pixel = missed[i];
+            const PixelMapping m = curved ? screen.curvedRay(pixel.start, sampler) : screen.map(pixel.x, pixel.y, sampler);
+            if (m.region != Region::Indirect) continue;
+            ++tally.pixelsIndirect;
+            if (mVisibility)
+                tally.allKeys.push_back(mVisibility->keyOf(m.point.position));
+            else
+                tally.indirect += importance(m.point);
         }
     });
     EnergyValue value;
     Tally total;
-    for (Tally& row : rows) {  // in row order: the result does not depend on the thread count
-        total.direct += row.direct;
-        total.indirect += row.indirect;
-        value.pixelsDirect += row.pixelsDirect;
-        value.pixelsIndirect += row.pixelsIndirect;
-        total.allKeys.insert(total.allKeys.end(), row.allKeys.begin(), row.allKeys.end());
-        total.directKeys.insert(total.directKeys.end(), row.directKeys.begin(), row.directKeys.end());
+    value.pixelsDirect = samples.direct().size();
+    for (const SurfacePoint& point : samples.direct()) {
+        if (mVisibility)
+            total.directKeys.push_back(mVisibility->keyOf(point.position));
+        else
+            total.direct += importance(point);
     }
+    total.allKeys = total.directKeys;
+    for (Tally& tally : tallies) {
+        total.indirect += tally.indirect;
+        value.pixelsIndirect += tally.pixelsIndirect;
+        total.allKeys.insert(total.allKeys.end(), tally.allKeys.begin(), tally.allKeys.end());
+    }
+    const int n = samples.frame().width();
     if (mVisibility) {
         const double marked = double(std::max<std::size_t>(1, mVisibility->markedCount()));
         value.energy = double(mVisibility->countMarked(total.allKeys)) / marked;
@@ -113,10 +125,16 @@ PixelAlphaDerivative EnergyEvaluator::pixelAlphaDerivative(const ScreenMap& scre
 {
     PixelAlphaDerivative result;
     const MethodParams& params = screen.params();
-    glm::vec3 seed, velocityPerAlpha;
-    if (!screen.curvedRayStart(x, y, sampler, seed, velocityPerAlpha)) return result;
+    CurvedRayStart start;
+    if (!screen.curvedRayStart(x, y, sampler, start)) return result;
+    result.alignment = start.alignment;
+    // The tangent follows the launch that lands; its alpha is the pixel's alpha halved per relaunch.
+    float alpha;
+    if (!screen.traceFrom(start, sampler, alpha).landed) return result;
+    const float pixelAlpha = screen.alphaOf(start);
+    const double relaunchScale = pixelAlpha > 0.0f ? double(alpha / pixelAlpha) : 1.0;
     const CurvedRayTangent ray = integrateCurvedRayTangent(
-        sampler, seed, params.curved.alpha * velocityPerAlpha, velocityPerAlpha, params.curved,
+        sampler, start.seed, alpha * start.velocityPerAlpha, start.velocityPerAlpha, params.curved,
         landingEpsilon(params.curved, mScene.distance()), 0.999f * mScene.distance().reach());
     if (!ray.end.landed) return result;
     const PixelMapping landed = screen.landedAt(ray.end.position, ray.end.velocity, ray.end.steps, sampler);
@@ -136,25 +154,44 @@ PixelAlphaDerivative EnergyEvaluator::pixelAlphaDerivative(const ScreenMap& scre
         const float v = mScene.field().values[t[c]];
         s[c] = std::isnan(v) ? 0.0f : mOptions.importanceRange.normalized(v);
     }
-    result.dImportance = double(glm::dot(surfaceGradient(mesh, landed.point.triangle, s), result.dPoint));
+    result.dImportance = relaunchScale * double(glm::dot(surfaceGradient(mesh, landed.point.triangle, s), result.dPoint));
     return result;
 }
 
-double EnergyEvaluator::alphaDerivative(const core::Camera& camera, const MethodParams& params) const
+std::vector<double> EnergyEvaluator::curvedRayGradient(const core::Camera& camera, const MethodParams& params) const
 {
     if (mOptions.kind != EnergyKind::Scalar)
         throw ValueError("the visibility energy has no analytic derivative; use forward differences");
+    if (!params.curvedRays())
+        throw ValueError(std::string("the analytic gradient needs curved rays, not the method ") + toString(params.method));
+    const bool adaptive = params.method == Method::InverseVisAdaptive;
+    const std::size_t count = adaptive ? params.profile.coefficients.size() : 1;
     const int n = mOptions.resolution;
     const core::CameraFrame frame(camera, n, n);
     const ScreenMap screen(mScene, frame, params);
-    std::vector<double> rows(std::size_t(n), 0.0);
+    std::vector<std::vector<double>> rows(std::size_t(n), std::vector<double>(count, 0.0));
     tbb::parallel_for(0, n, [&](int y) {
         DistanceField::Sampler sampler = mScene.distance().sampler();
-        for (int x = 0; x < n; ++x) rows[std::size_t(y)] += pixelAlphaDerivative(screen, x + 0.5, y + 0.5, sampler).dImportance;
+        for (int x = 0; x < n; ++x) {
+            const PixelAlphaDerivative d = pixelAlphaDerivative(screen, x + 0.5, y + 0.5, sampler);
+            if (!d.landed) continue;
+            if (!adaptive) {
+                rows[std::size_t(y)][0] += d.dImportance;
+                continue;
+            }
+            // alpha = a0 + a1 c + a2 c^2 moves with a_k by c^k, unless the profile is clamped there.
+            const AlphaProfile& profile = params.profile;
+            const float raw = profile.at(d.alignment);
+            if (raw <= 0.0f || raw >= profile.maxAlpha) continue;
+            double power = 1.0;
+            for (std::size_t k = 0; k < count; ++k, power *= d.alignment) rows[std::size_t(y)][k] += d.dImportance * power;
+        }
     });
-    double total = 0.0;
-    for (double row : rows) total += row;  // in row order: independent of the thread count
-    return total * 4.0 / (double(n) * n);
+    std::vector<double> total(count, 0.0);
+    for (const auto& row : rows)  // in row order: independent of the thread count
+        for (std::size_t k = 0; k < count; ++k) total[k] += row[k];
+    for (double& t : total) t *= 4.0 / (double(n) * n);
+    return total;
 }
 
 }  // namespace ivis::render

@@ -4,7 +4,10 @@
 
 namespace ivis::render {
 
-std::vector<std::string> methodNames() { return {"front", "backfaces", "neugebauer", "mirror", "inversevis"}; }
+std::vector<std::string> methodNames()
+{
+    return {"front", "backfaces", "neugebauer", "mirror", "inversevis", "inversevis-adaptive"};
+}
 
 const char* toString(Method method)
 {
@@ -14,6 +17,7 @@ const char* toString(Method method)
     case Method::Neugebauer: return "neugebauer";
     case Method::Mirror: return "mirror";
     case Method::InverseVis: return "inversevis";
+    case Method::InverseVisAdaptive: return "inversevis-adaptive";
     }
     return "unknown";
 }

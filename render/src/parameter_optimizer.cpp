@@ -11,16 +11,27 @@ namespace {
 /// The free parameters of a method as a vector, and back.
 std::vector<double> parameterVector(const MethodParams& params)
 {
-    if (params.method == Method::InverseVis) return {params.curved.alpha};
-    if (params.method == Method::Mirror) return {params.mirror.w.begin(), params.mirror.w.end()};
-    return {};
+    const auto& a = params.profile.coefficients;
+    switch (params.method) {
+    case Method::InverseVis: return {params.curved.alpha};
+    case Method::InverseVisAdaptive: return {a.begin(), a.end()};
+    case Method::Mirror: return {params.mirror.w.begin(), params.mirror.w.end()};
+    default: return {};
+    }
 }
 
-MethodParams withParameters(MethodParams params, const std::vector<double>& x, double maxAlpha)
+MethodParams withParameters(MethodParams params, const std::vector<double>& x, const AscentOptions& options)
 {
-    if (params.method == Method::InverseVis) params.curved.alpha = float(std::clamp(x[0], 0.0, maxAlpha));
-    if (params.method == Method::Mirror)
+    switch (params.method) {
+    case Method::InverseVis: params.curved.alpha = float(std::clamp(x[0], 0.0, options.maxAlpha)); break;
+    case Method::InverseVisAdaptive:
+        for (std::size_t i = 0; i < params.profile.coefficients.size(); ++i) params.profile.coefficients[i] = float(x[i]);
+        break;
+    case Method::Mirror:
         for (std::size_t i = 0; i < params.mirror.w.size(); ++i) params.mirror.w[i] = float(x[i]);
+        break;
+    default: break;
+    }
     return params;
 }
 
@@ -58,46 +69,58 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
 {
     AscentResult result;
     result.params = start;
-    result.value = evaluator.evaluate(camera, start);
+    const ViewSamples samples(evaluator.scene(), camera, evaluator.options().resolution, start);
+    result.value = evaluator.evaluate(samples, start);
     result.evaluations = 1;
     result.energyTrace.push_back(result.value.energy);
     std::vector<double> x = parameterVector(start);
     if (x.empty()) return result;
 
-    const bool analytic = start.method == Method::InverseVis && evaluator.options().kind == EnergyKind::Scalar &&
-                          options.gradient != GradientMode::ForwardDifference;
+    const bool scalar = evaluator.options().kind == EnergyKind::Scalar;
+    const bool analytic = start.curvedRays() && scalar && options.gradient != GradientMode::ForwardDifference;
     if (options.gradient == GradientMode::Analytic && !analytic)
-        throw ValueError("the analytic gradient exists only for InverseVis with the scalar energy");
+        throw ValueError("the analytic gradient exists only for the curved-ray methods with the scalar energy");
+    auto paramsAt = [&](const std::vector<double>& point) { return withParameters(start, point, options); };
     auto energyAt = [&](const std::vector<double>& point) {
         ++result.evaluations;
-        return evaluator.evaluate(camera, withParameters(start, point, options.maxAlpha));
+        return evaluator.evaluate(samples, paramsAt(point));
     };
+    // The adaptive method's ascent follows the unit gradient: its visibility gradient is far
+    // smaller than its parameters' useful steps.
+    const bool unitDirection = start.method == Method::InverseVisAdaptive;
+    const double maxStep = unitDirection ? options.maxProfileStep : options.maxStep;
 
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
-        std::vector<double> gradient(x.size());
+        std::vector<double> gradient(x.size(), 0.0);
         if (analytic) {
-            gradient[0] = evaluator.alphaDerivative(camera, withParameters(start, x, options.maxAlpha));
+            gradient = evaluator.curvedRayGradient(camera, paramsAt(x));
             ++result.evaluations;
-        } else {
-            for (std::size_t i = 0; i < x.size(); ++i) {
-                std::vector<double> shifted = x;
-                shifted[i] += options.differenceStep;
-                gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
-            }
+        }
+        for (std::size_t i = 0; !analytic && i < x.size(); ++i) {
+            std::vector<double> shifted = x;
+            shifted[i] += options.differenceStep;
+            gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
+        }
+        if (unitDirection) {
+            double norm = 0.0;
+            for (double g : gradient) norm += g * g;
+            norm = std::sqrt(norm);
+            if (!(norm > 0.0)) break;
+            for (double& g : gradient) g /= norm;
         }
         auto along = [&](double t) {
             std::vector<double> point = x;
             for (std::size_t i = 0; i < x.size(); ++i) point[i] += t * gradient[i];
             return point;
         };
-        const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0,
-                                               options.maxStep, options.tolerance, &result.evaluations);
+        const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0, maxStep,
+                                               options.tolerance * maxStep / options.maxStep, &result.evaluations);
         const EnergyValue candidate = energyAt(along(t));
         ++result.iterations;
         if (!(candidate.energy > result.value.energy)) break;
         x = along(t);
         result.value = candidate;
-        result.params = withParameters(start, x, options.maxAlpha);
+        result.params = paramsAt(x);
         result.energyTrace.push_back(candidate.energy);
     }
     return result;

@@ -21,23 +21,29 @@ ScreenMap::ScreenMap(const RenderScene& scene, const core::CameraFrame& frame, c
     if (params.method == Method::Neugebauer) mRings = layoutRings(frame, scene.mesh(), params.ring);
 }
 
-PixelMapping ScreenMap::map(double x, double y, DistanceField::Sampler& sampler) const
+PixelMapping ScreenMap::directHit(double x, double y) const
 {
     const core::CameraRay ray = mFrame.ray(x, y);
-    const glm::vec3 origin(ray.origin), direction(ray.direction);
+    const glm::vec3 direction(ray.direction);
     const core::FaceFilter filter = mParams.method == Method::Backfaces ? core::FaceFilter::BackOnly : core::FaceFilter::Any;
-    const core::RayHit hit = mScene.bvh().intersect(origin, direction, 0.0f, 1e30f, filter);
-    if (hit.hit()) {
-        PixelMapping direct;
-        direct.region = Region::Direct;
-        direct.point = pointOnTriangle(mScene.mesh(), hit.triangle, hit.barycentric);
-        direct.depth = glm::length(direct.point.position - glm::vec3(mFrame.camera().eye));
-        direct.arrival = direction;
-        return direct;
-    }
+    const core::RayHit hit = mScene.bvh().intersect(glm::vec3(ray.origin), direction, 0.0f, 1e30f, filter);
+    if (!hit.hit()) return {};
+    PixelMapping direct;
+    direct.region = Region::Direct;
+    direct.point = pointOnTriangle(mScene.mesh(), hit.triangle, hit.barycentric);
+    direct.depth = glm::length(direct.point.position - glm::vec3(mFrame.camera().eye));
+    direct.arrival = direction;
+    return direct;
+}
+
+PixelMapping ScreenMap::map(double x, double y, DistanceField::Sampler& sampler) const
+{
+    const PixelMapping direct = directHit(x, y);
+    if (direct.region == Region::Direct) return direct;
     switch (mParams.method) {
-    case Method::InverseVis: return inverseVis(ray, sampler);
-    case Method::Mirror: return mirror(ray, sampler);
+    case Method::InverseVis:
+    case Method::InverseVisAdaptive: return inverseVis(mFrame.ray(x, y), sampler);
+    case Method::Mirror: return mirror(mFrame.ray(x, y), sampler);
     case Method::Neugebauer: return ring({x, y});
     case Method::Front:
     case Method::Backfaces: break;
@@ -67,32 +73,54 @@ PixelMapping ScreenMap::landedAt(const glm::vec3& p, const glm::vec3& arrival, i
     return result;
 }
 
-bool ScreenMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, glm::vec3& seed,
-                            glm::vec3& velocityPerAlpha) const
+bool ScreenMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
     const glm::vec3 direction(ray.direction);
-    if (!findHullExit(sampler, glm::vec3(ray.origin), direction, mParams.curved.hullOffset, mHullBox, seed))
+    if (!findHullExit(sampler, glm::vec3(ray.origin), direction, mParams.curved.hullOffset, mHullBox, start.seed))
         return false;
     glm::vec3 gradient;
-    sampler.phiAndGradient(seed, gradient);
-    velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
+    sampler.phiAndGradient(start.seed, gradient);
+    start.velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
+    const float length = glm::length(gradient);
+    start.alignment = length > 0.0f ? glm::dot(direction, gradient) / length : 0.0f;
     return true;
 }
 
-bool ScreenMap::curvedRayStart(double x, double y, DistanceField::Sampler& sampler, glm::vec3& seed,
-                               glm::vec3& velocityPerAlpha) const
+bool ScreenMap::curvedRayStart(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
     const core::CameraRay ray = mFrame.ray(x, y);
     if (mScene.bvh().intersect(glm::vec3(ray.origin), glm::vec3(ray.direction)).hit()) return false;
-    return seedFromRay(ray, sampler, seed, velocityPerAlpha);
+    return seedFromRay(ray, sampler, start);
+}
+
+float ScreenMap::alphaOf(const CurvedRayStart& start) const
+{
+    return mParams.method == Method::InverseVisAdaptive ? mParams.profile.at(start.alignment) : mParams.curved.alpha;
 }
 
 PixelMapping ScreenMap::inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const
 {
-    glm::vec3 seed, velocityPerAlpha;
-    if (!seedFromRay(ray, sampler, seed, velocityPerAlpha)) return {};
-    const glm::vec3 v0 = mParams.curved.alpha * velocityPerAlpha;
-    const CurvedRayEnd end = traceCurvedRay(sampler, seed, v0, mParams.curved, mEpsilon);
+    CurvedRayStart start;
+    if (!seedFromRay(ray, sampler, start)) return {};
+    return curvedRay(start, sampler);
+}
+
+CurvedRayEnd ScreenMap::traceFrom(const CurvedRayStart& start, DistanceField::Sampler& sampler, float& alpha) const
+{
+    alpha = alphaOf(start);
+    const int retries = mParams.method == Method::InverseVisAdaptive ? mParams.profile.retries : 0;
+    for (int attempt = 0;; ++attempt) {
+        const CurvedRayEnd end =
+            traceCurvedRay(sampler, start.seed, alpha * start.velocityPerAlpha, mParams.curved, mEpsilon);
+        if (end.landed || attempt == retries || alpha == 0.0f) return end;
+        alpha *= 0.5f;
+    }
+}
+
+PixelMapping ScreenMap::curvedRay(const CurvedRayStart& start, DistanceField::Sampler& sampler) const
+{
+    float alpha;
+    const CurvedRayEnd end = traceFrom(start, sampler, alpha);
     if (!end.landed) {
         PixelMapping missed;
         missed.launched = true;

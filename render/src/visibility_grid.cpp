@@ -4,6 +4,7 @@
 #include <ivis/vdb/surface_volume.h>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -64,6 +65,26 @@ std::uint64_t VisibilityGrid::keyOf(const glm::vec3& p) const
         index[a] = std::uint64_t(i);
     }
     return (index[2] * mResolution + index[1]) * mResolution + index[0];
+}
+
+std::size_t VisibilityGrid::reachableCount(const core::TriangleMesh& mesh) const
+{
+    std::vector<std::vector<std::uint64_t>> perTriangle(mesh.triangles.size());
+    const double spacing = mVoxelSize / 8.0;
+    tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
+        const glm::vec3 a = mesh.positions[mesh.triangles[t][0]], b = mesh.positions[mesh.triangles[t][1]],
+                        c = mesh.positions[mesh.triangles[t][2]];
+        const double longest = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
+        const int n = std::max(1, int(std::ceil(longest / spacing)));
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j)
+                perTriangle[t].push_back(keyOf(a + (float(i) / n) * (b - a) + (float(j) / n) * (c - a)));
+        std::sort(perTriangle[t].begin(), perTriangle[t].end());
+        perTriangle[t].erase(std::unique(perTriangle[t].begin(), perTriangle[t].end()), perTriangle[t].end());
+    });
+    std::vector<std::uint64_t> keys;
+    for (const auto& triangleKeys : perTriangle) keys.insert(keys.end(), triangleKeys.begin(), triangleKeys.end());
+    return countMarked(keys);
 }
 
 std::size_t VisibilityGrid::countMarked(std::vector<std::uint64_t>& keys) const

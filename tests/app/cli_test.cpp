@@ -226,7 +226,7 @@ TEST_F(Cli, UnknownScalarNameListsTheNamesThatExist)
 TEST_F(Cli, UnknownRenderMethod)
 {
     expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--method ring"),
-                   {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis)"});
+                   {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis, inversevis-adaptive)"});
 }
 
 TEST_F(Cli, BadImageResolution)

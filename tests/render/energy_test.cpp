@@ -37,7 +37,7 @@ TEST(Energy, AlphaDerivativeMatchesFiniteDifferencesOnSphere)
     const EnergyEvaluator evaluator(*fixture.scene, scalarOptions(fixture.field));
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     for (float alpha : {0.3f, 0.6f, 1.0f}) {
-        const double analytic = evaluator.alphaDerivative(camera, withAlpha(alpha));
+        const double analytic = evaluator.curvedRayGradient(camera, withAlpha(alpha))[0];
         const float delta = 0.01f;
         const double numeric = (evaluator.evaluate(camera, withAlpha(alpha + delta)).energy -
                                 evaluator.evaluate(camera, withAlpha(alpha - delta)).energy) /

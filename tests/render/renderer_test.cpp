@@ -30,7 +30,8 @@
 namespace ivis::render {
 namespace {
 
-const Method kMethods[] = {Method::Front, Method::Backfaces, Method::Neugebauer, Method::Mirror, Method::InverseVis};
+const Method kMethods[] = {Method::Front,  Method::Backfaces,  Method::Neugebauer,
+                           Method::Mirror, Method::InverseVis, Method::InverseVisAdaptive};
 
 /// Options used by these tests: small image, the data's range, a curved mirror (a flat one shows
 /// little of the back).
@@ -276,6 +277,7 @@ TEST(RegressionImage, Backfaces) { checkRegression(Method::Backfaces); }
 TEST(RegressionImage, Neugebauer) { checkRegression(Method::Neugebauer); }
 TEST(RegressionImage, Mirror) { checkRegression(Method::Mirror); }
 TEST(RegressionImage, InverseVis) { checkRegression(Method::InverseVis); }
+TEST(RegressionImage, InverseVisAdaptive) { checkRegression(Method::InverseVisAdaptive); }
 
 }  // namespace
 }  // namespace ivis::render

@@ -18,12 +18,14 @@ enum class Method {
     Backfaces,   ///< only faces turned away from the camera (paper Fig. 1b)
     Neugebauer,  ///< ring map of Neugebauer et al. 2009 plus a back-side disc on the left
     Mirror,      ///< quadratic height-field mirror behind the object
-    InverseVis   ///< curved rays from the hull onto the hidden surface
+    InverseVis,  ///< curved rays from the hull onto the hidden surface
+    InverseVisAdaptive  ///< InverseVis with alpha varying across the ring (not in the paper)
 };
 
 /// @brief Method from its command-line name; throws InputError listing the names.
 Method parseMethod(const std::string& name);
-/// @brief Command-line name of a method ("front", "backfaces", "neugebauer", "mirror", "inversevis").
+/// @brief Command-line name of a method ("front", "backfaces", "neugebauer", "mirror", "inversevis",
+///        "inversevis-adaptive").
 const char* toString(Method method);
 /// @brief All method names, in enum order.
 std::vector<std::string> methodNames();
@@ -44,12 +46,33 @@ struct MirrorParams {
     int maxSteps = 300;           ///< sphere-tracing steps from the mirror
 };
 
+/// @brief Alpha of the adaptive InverseVis as a function of where a pixel lies across the ring:
+///        alpha(c) = a0 + a1 c + a2 c^2, clamped to [0, maxAlpha], with c = r . grad phi / |grad phi|
+///        at the hull seed (0 where the view ray grazes the hull, growing toward the silhouette).
+struct AlphaProfile {
+    /// a0, a1, a2; the default bends the rays near the silhouette furthest round the back.
+    std::array<float, 3> coefficients{0.0f, 3.0f, 3.0f};
+    float maxAlpha = 4.0f;  ///< above ~4 the curved rays escape
+    int retries = 2;        ///< a ray that does not land is relaunched with half its alpha this often
+
+    /// @brief alpha for the seed alignment @a c.
+    float at(float c) const
+    {
+        const float alpha = coefficients[0] + c * (coefficients[1] + c * coefficients[2]);
+        return alpha < 0.0f ? 0.0f : alpha > maxAlpha ? maxAlpha : alpha;
+    }
+};
+
 /// @brief A method and every parameter it reads.
 struct MethodParams {
     Method method = Method::InverseVis;
     CurvedRayParams curved;
+    AlphaProfile profile;  ///< read by InverseVisAdaptive instead of curved.alpha
     RingParams ring;
     MirrorParams mirror;
+
+    /// @brief True for the methods that trace curved rays from the hull.
+    bool curvedRays() const { return method == Method::InverseVis || method == Method::InverseVisAdaptive; }
 };
 
 }  // namespace ivis::render

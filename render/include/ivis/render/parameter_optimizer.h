@@ -1,7 +1,6 @@
 /// @file parameter_optimizer.h
 /// @brief Gradient ascent of a method's parameters for one view (METHOD.md, "Optimising alpha"):
-///        InverseVis alpha, the mirror's w1..w5; the ring map has none (its radii follow the
-///        silhouette).
+///        InverseVis alpha, the mirror's w1..w5, the adaptive InverseVis's alpha profile; the ring map has none (its radii follow the silhouette).
 /// @note Each ascent step is x <- x + t g, t from a golden-section search on [0, 0.25] that
 ///       evaluates the TRUE energy, until the bracket is shorter than 0.01; the ascent stops when a
 ///       line search does not raise the energy.
@@ -29,6 +28,7 @@ struct AscentOptions {
     double tolerance = 0.01;        ///< line search stops below this bracket length
     int maxIterations = 20;
     double maxAlpha = 10.0;         ///< alpha is kept in [0, maxAlpha] (rays escape above ~4)
+    double maxProfileStep = 1.0;    ///< adaptive InverseVis: line search along the unit gradient on [0, this]
 };
 
 /// @brief Outcome of one optimisation.

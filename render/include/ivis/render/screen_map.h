@@ -27,6 +27,13 @@ struct PixelMapping {
     glm::vec3 arrival{};    ///< unit direction along which the point is seen (toward the surface)
 };
 
+/// @brief Start of one pixel's curved ray (InverseVis and its adaptive variant).
+struct CurvedRayStart {
+    glm::vec3 seed{};              ///< farthest crossing of the view ray with the hull
+    glm::vec3 velocityPerAlpha{};  ///< v0 / alpha: the view direction's part tangential to the hull
+    float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
+};
+
 /// @brief P for one camera, image size and method.
 class ScreenMap {
 public:
@@ -36,11 +43,24 @@ public:
     /// @brief The surface point shown at continuous pixel position (x, y).
     PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const;
 
-    /// @brief InverseVis start of the curved ray of pixel position (x, y): the hull seed and the
-    ///        initial velocity per unit alpha (v0 = alpha * velocityPerAlpha).
+    /// @brief The direct part of map(): the surface point the view ray of (x, y) hits, or background.
+    PixelMapping directHit(double x, double y) const;
+
+    /// @brief Start of the curved ray of pixel position (x, y): the hull seed and the initial
+    ///        velocity per unit alpha (v0 = alpha * velocityPerAlpha).
     /// @return false when the view ray hits the surface or misses the hull
-    bool curvedRayStart(double x, double y, DistanceField::Sampler& sampler, glm::vec3& seed,
-                        glm::vec3& velocityPerAlpha) const;
+    bool curvedRayStart(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+
+    /// @brief The alpha of a curved ray: the global alpha, or the adaptive profile's alpha(c).
+    float alphaOf(const CurvedRayStart& start) const;
+
+    /// @brief Traces the curved ray of @a start with alphaOf(start); the adaptive method relaunches a
+    ///        ray that does not land with half its alpha, up to AlphaProfile::retries times.
+    /// @param[out] alpha the alpha of the last launch
+    CurvedRayEnd traceFrom(const CurvedRayStart& start, DistanceField::Sampler& sampler, float& alpha) const;
+
+    /// @brief The surface point a curved ray from @a start lands on (a launched miss if none).
+    PixelMapping curvedRay(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
 
     /// @brief Indirect mapping for a point that reached the surface (phi < eps): its exact closest
     ///        surface point (BVH search bounded by the triangle stored at its nearest fine voxel).
@@ -53,8 +73,7 @@ public:
 
 private:
     PixelMapping inverseVis(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
-    bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, glm::vec3& seed,
-                     glm::vec3& velocityPerAlpha) const;
+    bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
     PixelMapping mirror(const core::CameraRay& ray, DistanceField::Sampler& sampler) const;
     PixelMapping ring(const glm::dvec2& pixel) const;
     const RenderScene& mScene;

@@ -30,6 +30,10 @@ public:
     std::uint64_t keyOf(const glm::vec3& p) const;
     /// @brief Number of marked voxels among @a keys (sorted and deduplicated in place).
     std::size_t countMarked(std::vector<std::uint64_t>& keys) const;
+    /// @brief Number of marked voxels the surface passes through, found by sampling every triangle
+    ///        at an eighth of a voxel (edges included). Landing points lie on the surface, so no
+    ///        method visits more: reachableCount / markedCount is the measure's ceiling.
+    std::size_t reachableCount(const core::TriangleMesh& mesh) const;
     /// @brief Number of marked voxels.
     std::size_t markedCount() const { return mMarked.size(); }
     int resolution() const { return mResolution; }
