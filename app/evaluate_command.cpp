@@ -51,7 +51,7 @@ Command addEvaluateCommand(CLI::App& app)
 {
     struct Options {
         std::vector<std::string> meshes;
-        std::vector<std::string> methods{"front", "neugebauer", "mirror", "inversevis"};
+        std::vector<std::string> methods{"front", "neugebauer", "mirror", "inversevis", "inversevis-adaptive"};
         std::vector<int> optResolutions{100};
         int displayResolution = 1000;
         int volumeResolution = 200;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -381,6 +382,53 @@ TEST_F(Cli, DegenerateTrianglesAreDroppedWithACount)
     const CliResult result = runCli(sdf(path));
     ASSERT_EQ(result.status, 0) << result.err;
     EXPECT_NE(result.err.find(path + ": dropped 1 degenerate"), std::string::npos) << result.err;
+}
+
+TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
+{
+    const CliResult result = runCli("optimize scene:sphere --volume-res 64 --method inversevis-adaptive --opt-res 24 "
+                                    "--steps 3 --res 48x48 --cache-dir " + quoted(output("")) + " -o " +
+                                    quoted(output("best.png")) + " --json " + quoted(output("best.json")) +
+                                    " --plot " + quoted(output("views.png")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("best.json")));
+    ASSERT_EQ(report.at("visited").size(), 4u);  // the start view and 3 proposals
+    double best = 0.0;
+    for (const auto& view : report.at("visited")) best = std::max(best, view.at("energy").get<double>());
+    EXPECT_EQ(report.at("energy_value").get<double>(), best);
+    EXPECT_EQ(report.at("params").at("method"), "inversevis-adaptive");
+    EXPECT_EQ(report.at("params").at("alpha_profile").size(), 3u);
+    EXPECT_GT(report.at("display_energy_value").get<double>(), report.at("display_front_energy_value").get<double>());
+    for (const char* file : {"best.png", "views.png"}) EXPECT_TRUE(fs::exists(output(file))) << file;
+}
+
+TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
+{
+    const CliResult result = runCli("evaluate scene:sphere --volume-res 64 --methods front,inversevis "
+                                    "--opt-res 16,24 --steps 2 --display-res 64 --cache-dir " + quoted(output("")) +
+                                    " --json " + quoted(output("e.json")) + " --markdown " + quoted(output("e.md")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("e.json"))).at("sphere");
+    const double ceiling = report.at("visibility_ceiling").get<double>();
+    EXPECT_GT(ceiling, 0.5);
+    EXPECT_LT(ceiling, 0.9);
+    for (const char* method : {"front", "inversevis"}) {
+        const nlohmann::json& entry = report.at(method);
+        EXPECT_LE(entry.at("visibility").get<double>(), ceiling) << method;
+        EXPECT_LE(entry.at("front_visibility").get<double>(), entry.at("visibility").get<double>()) << method;
+        EXPECT_EQ(entry.at("seconds").size(), 2u) << method;
+        EXPECT_TRUE(entry.at("optimum_shift_deg").contains("24")) << method;
+        for (const char* key : {"theta", "phi", "params"}) EXPECT_TRUE(entry.contains(key)) << method << " " << key;
+    }
+    EXPECT_GT(report.at("inversevis").at("visibility").get<double>(), report.at("front").at("visibility").get<double>());
+    EXPECT_NE(result.out.find("| sphere |"), std::string::npos) << result.out;
+    EXPECT_TRUE(fs::exists(output("e.md")));
+}
+
+TEST_F(Cli, EvaluateRejectsAnUnknownMethodBeforeWork)
+{
+    expectRejected("evaluate scene:sphere --methods front,ring --json " + quoted(output("e.json")),
+                   {"unknown method 'ring'"});
 }
 
 }  // namespace
