@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ivis::app {
@@ -253,8 +254,7 @@ void GpuRenderer::render(const GpuFrame& frame)
     mMeshProgram.set("uAmbient", shading.ambient);
     mMeshProgram.set("uShadows", shading.shadows);
 
-    const bool indirect = mHasVolume && (method.method == render::Method::InverseVis ||
-                                         method.method == render::Method::Mirror ||
+    const bool indirect = mHasVolume && (method.curvedRays() || method.method == render::Method::Mirror ||
                                          method.method == render::Method::Neugebauer);
     if (indirect) {
         GlProgram& p = mIndirectProgram;
@@ -269,6 +269,10 @@ void GpuRenderer::render(const GpuFrame& frame)
         const render::CurvedRayParams& curved = method.curved;
         p.set("uEpsilon", curved.landingEpsilon > 0.0f ? curved.landingEpsilon : 0.5f * mTextureVoxelSize);
         p.set("uAlpha", curved.alpha);
+        const std::array<float, 3>& a = method.profile.coefficients;
+        p.set("uAlphaProfile", glm::vec3(a[0], a[1], a[2]));
+        p.set("uMaxAlpha", method.profile.maxAlpha);
+        p.set("uRetries", method.profile.retries);
         p.set("uStepSize", curved.stepSize);
         p.set("uHullOffset", curved.hullOffset);
         p.set("uEscape", 0.999f * mReach);

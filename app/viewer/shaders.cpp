@@ -251,11 +251,14 @@ uniform vec3 uRight;
 uniform vec3 uUp;
 uniform vec3 uForward;
 uniform bool uOrtho;
-uniform int uMethod;            // 2 neugebauer, 3 mirror, 4 inversevis (render::Method)
+uniform int uMethod;            // 2 neugebauer, 3 mirror, 4 inversevis, 5 inversevis-adaptive (render::Method)
 uniform float uIndirectBrightness;
 uniform float uEpsilon;         // landing threshold: phi < this
 // ---- InverseVis (render::CurvedRayParams)
 uniform float uAlpha;
+uniform vec3 uAlphaProfile;     // inversevis-adaptive: a0, a1, a2 (render::AlphaProfile)
+uniform float uMaxAlpha;        // inversevis-adaptive: the profile's clamp
+uniform int uRetries;           // inversevis-adaptive: relaunches at half alpha of a ray that does not land
 uniform float uStepSize;
 uniform float uHullOffset;
 uniform float uEscape;          // 0.999 * reach
@@ -478,15 +481,44 @@ bool findHullExit(vec3 origin, vec3 direction, out vec3 seed)
     return false;
 }
 
-// render::initialVelocity: alpha times the part of the view direction tangential to the hull.
-vec3 initialVelocity(vec3 gradient, vec3 viewDirection)
+// ScreenMap::alphaOf: uAlpha, or for the adaptive method AlphaProfile::at of the seed's alignment
+// c = r . g / |g| (ScreenMap::seedFromRay).
+float alphaAt(vec3 gradient, vec3 viewDirection)
 {
+    if (uMethod != 5) return uAlpha;
     float len = length(gradient);
-    if (!(len > 0.0)) return uAlpha * viewDirection;
-    vec3 g = gradient / len;
-    return uAlpha * cross(g, cross(viewDirection, g));
+    float c = len > 0.0 ? dot(viewDirection, gradient) / len : 0.0;
+    return clamp(uAlphaProfile.x + c * (uAlphaProfile.y + c * uAlphaProfile.z), 0.0, uMaxAlpha);
 }
 
+// render::initialVelocity: alpha times the part of the view direction tangential to the hull.
+vec3 initialVelocity(vec3 gradient, vec3 viewDirection, float alpha)
+{
+    float len = length(gradient);
+    if (!(len > 0.0)) return alpha * viewDirection;
+    vec3 g = gradient / len;
+    return alpha * cross(g, cross(viewDirection, g));
+}
+
+// render::integrateCurvedRay from @a p with velocity @a v: symplectic Euler, h = uStepSize; true
+// when it lands (phi < uEpsilon), with p and v there.
+bool integrateCurvedRay(inout vec3 p, inout vec3 v)
+{
+    vec3 gradient;
+    for (int step = 0; step < uMaxSteps; ++step) {
+        float phi = phiAndGradient(p, gradient);
+        if (phi < uEpsilon) return true;
+        if (phi >= uEscape) return false;
+        v -= uStepSize * gradient;
+        float speed = length(v);
+        vec3 heading = speed > 0.0 ? v / speed : -gradient;
+        p += uStepSize * phi * heading;
+    }
+    return false;
+}
+
+// ScreenMap::inverseVis and ScreenMap::traceFrom: the adaptive method relaunches a ray that does
+// not land with half its alpha, up to uRetries times.
 bool inverseVis(vec3 origin, vec3 direction, out vec3 colour)
 {
     vec3 seed;
@@ -494,16 +526,13 @@ bool inverseVis(vec3 origin, vec3 direction, out vec3 colour)
     if (!findHullExit(origin, direction, seed)) return false;
     vec3 gradient;
     phiAndGradient(seed, gradient);
-    vec3 p = seed, v = initialVelocity(gradient, direction);
-    // render::integrateCurvedRay: symplectic Euler, h = uStepSize.
-    for (int step = 0; step < uMaxSteps; ++step) {
-        float phi = phiAndGradient(p, gradient);
-        if (phi < uEpsilon) return shadeLanding(p, v, colour);
-        if (phi >= uEscape) return false;
-        v -= uStepSize * gradient;
-        float speed = length(v);
-        vec3 heading = speed > 0.0 ? v / speed : -gradient;
-        p += uStepSize * phi * heading;
+    float alpha = alphaAt(gradient, direction);
+    int retries = uMethod == 5 ? uRetries : 0;
+    for (int attempt = 0; attempt <= retries; ++attempt) {
+        vec3 p = seed, v = initialVelocity(gradient, direction, alpha);
+        if (integrateCurvedRay(p, v)) return shadeLanding(p, v, colour);
+        if (alpha == 0.0) break;
+        alpha *= 0.5;
     }
     return false;
 }
@@ -600,7 +629,7 @@ void main()
     vec3 origin, direction, colour;
     cameraRay(origin, direction);
     bool landed = false;
-    if (uMethod == 4) landed = inverseVis(origin, direction, colour);
+    if (uMethod == 4 || uMethod == 5) landed = inverseVis(origin, direction, colour);
     else if (uMethod == 3) landed = mirror(origin, direction, colour);
     else if (uMethod == 2) landed = ring(colour);
     if (!landed) discard;  // background: the cleared colour and region 0 stay

@@ -1,6 +1,7 @@
 /// @file shaders.h
 /// @brief GLSL 4.30 sources of the viewer's two passes: the mesh (direct part, with shadows) and
-///        the full-screen indirect pass (InverseVis curved rays, the quadratic mirror, the ring map).
+///        the full-screen indirect pass (InverseVis curved rays, fixed or adaptive alpha, the quadratic
+///        mirror, the ring map).
 /// @note Each function of the shaders mirrors one CPU function of render/ (named in comments in the
 ///       source) so that the GPU picture equals render::renderImage's up to float rounding.
 #pragma once

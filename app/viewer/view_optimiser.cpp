@@ -20,6 +20,10 @@ std::string describeParams(const render::MethodParams& params)
     char text[160];
     switch (params.method) {
     case render::Method::InverseVis: std::snprintf(text, sizeof text, "alpha %.3f", params.curved.alpha); break;
+    case render::Method::InverseVisAdaptive:
+        std::snprintf(text, sizeof text, "profile %.3f %.3f %.3f", params.profile.coefficients[0],
+                      params.profile.coefficients[1], params.profile.coefficients[2]);
+        break;
     case render::Method::Mirror:
         std::snprintf(text, sizeof text, "w %.3f %.3f %.3f %.3f %.3f", params.mirror.w[0], params.mirror.w[1],
                       params.mirror.w[2], params.mirror.w[3], params.mirror.w[4]);

@@ -47,8 +47,9 @@ struct OptimiserSettings {
 };
 
 /// @brief "optimise alpha": render::optimizeParameters (gradient ascent with golden-section line
-///        searches) of the current method's parameters (InverseVis alpha, mirror w1..w5) at the
-///        current camera. The ring map has no parameters: it is only evaluated.
+///        searches) of the current method's parameters (InverseVis alpha, the adaptive InverseVis's
+///        profile a0..a2, mirror w1..w5) at the current camera. The ring map has no parameters: it
+///        is only evaluated.
 ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 
 /// @brief "optimise view": render::annealViewpoint from the current camera's angles on the radius

@@ -55,6 +55,40 @@ void tooltip(const char* text)
     }
 }
 
+/// Sliders of the curved rays' hull offset (below the volume's @a reach), step and max steps; true when changed.
+bool curvedRaySliders(render::CurvedRayParams& curved, float reach)
+{
+    bool changed = ImGui::SliderFloat("hull offset", &curved.hullOffset, 0.05f, 0.98f * reach, "%.3f");
+    tooltip("phi0: the hull {phi = phi0} the curved rays start from; below the volume's reach");
+    changed |= ImGui::SliderFloat("step h", &curved.stepSize, 0.01f, 0.5f, "%.3f");
+    changed |= ImGui::SliderInt("max steps", &curved.maxSteps, 10, 4000);
+    return changed;
+}
+
+/// Sliders of the adaptive InverseVis's profile coefficients a0, a1, a2; true when changed.
+bool profileSliders(render::AlphaProfile& profile)
+{
+    char help[200];
+    std::snprintf(help, sizeof help,
+                  "alpha(c) = a0 + a1 c + a2 c^2, clamped to [0, %.1f]; c = r . grad phi / |grad phi| at the hull "
+                  "seed (0 where the view ray grazes the hull, growing toward the silhouette)",
+                  profile.maxAlpha);
+    bool changed = false;
+    for (int i = 0; i < 3; ++i) {
+        const std::string label = "a" + std::to_string(i);
+        changed |= ImGui::SliderFloat(label.c_str(), &profile.coefficients[std::size_t(i)], -2.0f, 6.0f, "%.3f");
+        tooltip(help);
+    }
+    return changed;
+}
+
+/// Label of the parameter optimiser's button for @a method.
+const char* optimiseLabel(render::Method method)
+{
+    if (method == render::Method::Mirror) return "optimise w";
+    return method == render::Method::InverseVisAdaptive ? "optimise profile" : "optimise alpha";
+}
+
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field)
@@ -378,10 +412,11 @@ void ViewerApp::drawPanel()
     switch (mMethod.method) {
     case render::Method::InverseVis:
         changed |= ImGui::SliderFloat("alpha", &mMethod.curved.alpha, 0.0f, 4.0f, "%.3f");
-        changed |= ImGui::SliderFloat("hull offset", &mMethod.curved.hullOffset, 0.05f, 0.98f * reach, "%.3f");
-        tooltip("phi0: the hull {phi = phi0} the curved rays start from; below the volume's reach");
-        changed |= ImGui::SliderFloat("step h", &mMethod.curved.stepSize, 0.01f, 0.5f, "%.3f");
-        changed |= ImGui::SliderInt("max steps", &mMethod.curved.maxSteps, 10, 4000);
+        changed |= curvedRaySliders(mMethod.curved, reach);
+        break;
+    case render::Method::InverseVisAdaptive:
+        changed |= profileSliders(mMethod.profile);
+        changed |= curvedRaySliders(mMethod.curved, reach);
         break;
     case render::Method::Mirror:
         for (int i = 0; i < 5; ++i) {
@@ -448,13 +483,13 @@ void ViewerApp::drawPanel()
         ImGui::SliderInt("anneal steps", &mOptimiser.optimization.steps, 1, 100);
         tooltip("proposals of the simulated annealing after the start view");
     }
-    const bool hasParameters = mMethod.method == render::Method::InverseVis || mMethod.method == render::Method::Mirror;
+    const bool hasParameters = mMethod.curvedRays() || mMethod.method == render::Method::Mirror;
     ImGui::BeginDisabled(busy || !hasParameters);
-    if (ImGui::Button(mMethod.method == render::Method::Mirror ? "optimise w" : "optimise alpha")) startOptimiser(false);
+    if (ImGui::Button(optimiseLabel(mMethod.method))) startOptimiser(false);
     ImGui::EndDisabled();
     tooltip("CPU, in the background: render::optimizeParameters, gradient ascent of the method's parameters "
-            "(InverseVis alpha, mirror w1..w5) with golden-section line searches on the true energy, at this view; "
-            "alpha then eases to the result");
+            "(InverseVis alpha, the adaptive profile a0..a2, mirror w1..w5) with golden-section line searches on the "
+            "true energy, at this view; alpha then eases to the result, the profile and w are set at once");
     ImGui::SameLine();
     ImGui::BeginDisabled(busy);
     if (ImGui::Button("optimise view")) startOptimiser(true);

@@ -158,6 +158,13 @@ TEST(Viewer, InverseVisMatchesCpuRenderer)
     EXPECT_GT(a.bothIndirect, std::size_t(10000));
     EXPECT_LT(a.indirectMeanDiff, 1.0);
     EXPECT_LT(a.directMeanDiff, 0.5);
+    // The adaptive method: the same curved rays, alpha from the default profile at each seed and a
+    // ray that misses relaunched at half its alpha (measured 0.16 levels).
+    const Agreement adaptive = compareWithCpu("inversevis-adaptive");
+    EXPECT_GE(adaptive.regionAgreement, 0.97);
+    EXPECT_GT(adaptive.bothIndirect, std::size_t(10000));
+    EXPECT_LT(adaptive.indirectMeanDiff, 1.0);
+    EXPECT_LT(adaptive.directMeanDiff, 0.5);
 #endif
 }
 
