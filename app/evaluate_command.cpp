@@ -54,6 +54,7 @@ Command addEvaluateCommand(CLI::App& app)
         std::vector<std::string> methods{"front", "neugebauer", "mirror", "inversevis", "inversevis-adaptive"};
         std::vector<int> optResolutions{100};
         int displayResolution = 1000;
+        int pictureResolution = 0;
         int volumeResolution = 200;
         double fovYDeg = core::kDefaultFovYDeg;
         OptimizationOptions optimization;
@@ -73,6 +74,8 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--json", options->json, "Results as JSON");
     command->add_option("--markdown", options->markdown, "Results as Markdown tables");
     command->add_option("--pictures", options->pictures, "Folder for each method's picture at its best view");
+    command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
+        ->check(CLI::Range(16, 8192));
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches")->capture_default_str();
 
     return {command, [options] {
@@ -102,7 +105,7 @@ Command addEvaluateCommand(CLI::App& app)
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);
             const std::string stem = core::sourceStem(mesh);
-            render::EnergyOptions displayOptions = options->optimization.energyOptions(options->displayResolution, range);
+            render::EnergyOptions displayOptions = options->optimization.measureOptions(options->displayResolution, range);
             displayOptions.kind = render::EnergyKind::Visibility;
             const render::EnergyEvaluator display(scene, displayOptions);
             const render::VisibilityGrid& grid = *display.visibilityGrid();
@@ -140,7 +143,8 @@ Command addEvaluateCommand(CLI::App& app)
                 table1 << " " << percent(value.energy) << " (" << percent(value.front) << ") |";
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;
-                    picture.width = picture.height = options->displayResolution;
+                    picture.width = picture.height =
+                        options->pictureResolution > 0 ? options->pictureResolution : options->displayResolution;
                     picture.method = best.params;
                     picture.shading.range = range;
                     picture.scalarName = field.name;

@@ -1,5 +1,7 @@
 #include "optimization_options.h"
 
+#include <algorithm>
+
 namespace ivis::app {
 
 void OptimizationOptions::addTo(CLI::App& command)
@@ -8,8 +10,10 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->check(CLI::IsMember({"visibility", "scalar"}))
         ->capture_default_str();
     command.add_option("--gamma", gamma, "Weight of the directly visible part (scalar energy)")->capture_default_str();
-    command.add_option("--visibility-res", visibilityResolution, "Voxels per side of the visibility grid")
+    command.add_option("--visibility-res", visibilityResolution, "Voxels per side of the reported visibility measure's grid")
         ->capture_default_str();
+    command.add_option("--opt-visibility-res", optVisibilityResolution,
+                       "Voxels per side of the optimised visibility grid (default: opt-res / 2, at most --visibility-res)");
     command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
     command.add_option("--steps", steps, "Annealing proposals after the start view")->capture_default_str();
     command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")->capture_default_str();
@@ -27,8 +31,16 @@ render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const c
     options.kind = render::parseEnergyKind(energy);
     options.gamma = gamma;
     options.resolution = resolution;
-    options.visibilityResolution = visibilityResolution;
+    options.visibilityResolution = optVisibilityResolution > 0 ? optVisibilityResolution
+                                                               : std::clamp(resolution / 2, 8, visibilityResolution);
     options.importanceRange = range;
+    return options;
+}
+
+render::EnergyOptions OptimizationOptions::measureOptions(int resolution, const core::ScalarRange& range) const
+{
+    render::EnergyOptions options = energyOptions(resolution, range);
+    options.visibilityResolution = visibilityResolution;
     return options;
 }
 

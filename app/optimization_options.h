@@ -16,18 +16,25 @@ namespace ivis::app {
 struct OptimizationOptions {
     std::string energy = "visibility";
     float gamma = 1.0f;
-    int visibilityResolution = 200;
+    int visibilityResolution = 200;     ///< grid of the reported visibility measure (the paper's)
+    int optVisibilityResolution = 0;    ///< grid of the optimised energy; 0: see energyOptions()
     std::uint64_t seed = 1;
     int steps = 30;
     double cooling = 0.9;
     std::string gradient = "auto";
     int ascentIterations = 3;
 
-    /// @brief Registers --energy, --gamma, --visibility-res, --seed, --steps, --cooling, --gradient,
-    ///        --ascent-iterations.
+    /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
+    ///        --cooling, --gradient, --ascent-iterations.
     void addTo(CLI::App& command);
-    /// @brief Energy options at optimisation resolution @a resolution with importance @a range.
+    /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
+    ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
+    ///        most --visibility-res: a grid with more marked voxels than rays rewards spreading the
+    ///        rays anywhere rather than covering the surface (docs/optimisation.md).
     render::EnergyOptions energyOptions(int resolution, const core::ScalarRange& range) const;
+    /// @brief The reported measure at @a resolution rays per side: the visibility grid is
+    ///        --visibility-res (the paper's 200), whatever the optimisation used.
+    render::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at (theta, phi) with field of view @a fovYDeg.
     render::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
     /// @brief Ascent options (gradient mode).

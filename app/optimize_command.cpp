@@ -65,8 +65,8 @@ Command addOptimizeCommand(CLI::App& app)
         renderOptions.method = best.params;
         core::writePng(render::renderImage(scene, camera, renderOptions, &progress).image, options->output,
                        renderOptions.shading.transparentBackground);
-        render::EnergyOptions displayOptions = energyOptions;
-        displayOptions.resolution = renderOptions.height;
+        const render::EnergyOptions displayOptions =
+            options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
         const render::EnergyValue display = render::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.params);
         if (!options->plot.empty()) core::writePng(render::plotVisitedViews(result), options->plot, false);
 

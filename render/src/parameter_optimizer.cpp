@@ -89,6 +89,7 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
     // smaller than its parameters' useful steps.
     const bool unitDirection = start.method == Method::InverseVisAdaptive;
     const double maxStep = unitDirection ? options.maxProfileStep : options.maxStep;
+    const double tolerance = unitDirection ? options.profileTolerance : options.tolerance;
 
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         std::vector<double> gradient(x.size(), 0.0);
@@ -114,7 +115,7 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
             return point;
         };
         const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0, maxStep,
-                                               options.tolerance * maxStep / options.maxStep, &result.evaluations);
+                                               tolerance, &result.evaluations);
         const EnergyValue candidate = energyAt(along(t));
         ++result.iterations;
         if (!(candidate.energy > result.value.energy)) break;

@@ -29,6 +29,7 @@ struct AscentOptions {
     int maxIterations = 20;
     double maxAlpha = 10.0;         ///< alpha is kept in [0, maxAlpha] (rays escape above ~4)
     double maxProfileStep = 1.0;    ///< adaptive InverseVis: line search along the unit gradient on [0, this]
+    double profileTolerance = 0.1;  ///< adaptive InverseVis: its line search's final bracket
 };
 
 /// @brief Outcome of one optimisation.
