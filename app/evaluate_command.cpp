@@ -126,11 +126,18 @@ Command addEvaluateCommand(CLI::App& app)
                         options->optimization.ascentOptions());
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
                     table2 << " " << std::lround(run.seconds * 10.0) / 10.0 << " |";
+                    const render::VisitedView& optimum = run.bestView();
+                    const render::EnergyValue measured =
+                        display.evaluate(render::viewCamera(optimum.thetaDeg, optimum.phiDeg, options->fovYDeg), optimum.params);
+                    entry["by_resolution"][std::to_string(resolution)] = {{"theta", optimum.thetaDeg},
+                                                                          {"phi", optimum.phiDeg},
+                                                                          {"params", methodParamsJson(optimum.params)},
+                                                                          {"visibility", measured.energy}};
                     if (k == 0) {
-                        best = run.bestView();
+                        best = optimum;
                     } else {
-                        entry["optimum_shift_deg"][std::to_string(resolution)] = angleBetweenViews(
-                            best.thetaDeg, best.phiDeg, run.bestView().thetaDeg, run.bestView().phiDeg);
+                        entry["optimum_shift_deg"][std::to_string(resolution)] =
+                            angleBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
                     }
                 }
                 const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->fovYDeg);

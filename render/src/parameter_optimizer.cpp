@@ -76,8 +76,8 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
     std::vector<double> x = parameterVector(start);
     if (x.empty()) return result;
 
-    const bool scalar = evaluator.options().kind == EnergyKind::Scalar;
-    const bool analytic = start.curvedRays() && scalar && options.gradient != GradientMode::ForwardDifference;
+    const bool analytic = start.curvedRays() && evaluator.options().kind == EnergyKind::Scalar &&
+                          options.gradient != GradientMode::ForwardDifference;
     if (options.gradient == GradientMode::Analytic && !analytic)
         throw ValueError("the analytic gradient exists only for the curved-ray methods with the scalar energy");
     auto paramsAt = [&](const std::vector<double>& point) { return withParameters(start, point, options); };
@@ -96,11 +96,12 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
         if (analytic) {
             gradient = evaluator.curvedRayGradient(camera, paramsAt(x));
             ++result.evaluations;
-        }
-        for (std::size_t i = 0; !analytic && i < x.size(); ++i) {
-            std::vector<double> shifted = x;
-            shifted[i] += options.differenceStep;
-            gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
+        } else {
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                std::vector<double> shifted = x;
+                shifted[i] += options.differenceStep;
+                gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
+            }
         }
         if (unitDirection) {
             double norm = 0.0;

@@ -418,6 +418,12 @@ TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
         EXPECT_LE(entry.at("front_visibility").get<double>(), entry.at("visibility").get<double>()) << method;
         EXPECT_EQ(entry.at("seconds").size(), 2u) << method;
         EXPECT_TRUE(entry.at("optimum_shift_deg").contains("24")) << method;
+        for (const char* resolution : {"16", "24"}) {
+            const nlohmann::json& optimum = entry.at("by_resolution").at(resolution);
+            EXPECT_LE(optimum.at("visibility").get<double>(), ceiling) << method << " " << resolution;
+            EXPECT_TRUE(optimum.contains("theta") && optimum.contains("phi") && optimum.contains("params"));
+        }
+        EXPECT_EQ(entry.at("by_resolution").at("16").at("visibility"), entry.at("visibility")) << method;
         for (const char* key : {"theta", "phi", "params"}) EXPECT_TRUE(entry.contains(key)) << method << " " << key;
     }
     EXPECT_GT(report.at("inversevis").at("visibility").get<double>(), report.at("front").at("visibility").get<double>());

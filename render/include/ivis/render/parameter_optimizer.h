@@ -1,9 +1,12 @@
 /// @file parameter_optimizer.h
 /// @brief Gradient ascent of a method's parameters for one view (METHOD.md, "Optimising alpha"):
-///        InverseVis alpha, the mirror's w1..w5, the adaptive InverseVis's alpha profile; the ring map has none (its radii follow the silhouette).
+///        InverseVis alpha, the mirror's w1..w5, the adaptive InverseVis's alpha profile; the ring
+///        map has none (its radii follow the silhouette).
 /// @note Each ascent step is x <- x + t g, t from a golden-section search on [0, 0.25] that
 ///       evaluates the TRUE energy, until the bracket is shorter than 0.01; the ascent stops when a
-///       line search does not raise the energy.
+///       line search does not raise the energy. The adaptive profile steps along the unit
+///       gradient, t in [0, 1], bracket 0.1. Each view's direct hits and hull seeds are computed
+///       once (ViewSamples).
 #pragma once
 
 #include <ivis/render/energy.h>
