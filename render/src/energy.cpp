@@ -80,7 +80,8 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPa
         Tally& tally = tallies[b];
         for (std::size_t i = b * blockSize; i < std::min(missed.size(), (b + 1) * blockSize); ++i) {
             const MissedPixel& pixel = missed[i];
-            const PixelMapping m = curved ? screen.curvedRay(pixel.start, sampler) : screen.map(pixel.x, pixel.y, sampler);
+            const PixelMapping m =
+                curved ? screen.curvedRay(pixel.start, sampler) : screen.indirect(pixel.x, pixel.y, sampler);
             if (m.region != Region::Indirect) continue;
             ++tally.pixelsIndirect;
             if (mVisibility)

@@ -39,7 +39,11 @@ PixelMapping ScreenMap::directHit(double x, double y) const
 PixelMapping ScreenMap::map(double x, double y, DistanceField::Sampler& sampler) const
 {
     const PixelMapping direct = directHit(x, y);
-    if (direct.region == Region::Direct) return direct;
+    return direct.region == Region::Direct ? direct : indirect(x, y, sampler);
+}
+
+PixelMapping ScreenMap::indirect(double x, double y, DistanceField::Sampler& sampler) const
+{
     switch (mParams.method) {
     case Method::InverseVis:
     case Method::InverseVisAdaptive: return inverseVis(mFrame.ray(x, y), sampler);

@@ -45,6 +45,9 @@ public:
 
     /// @brief The direct part of map(): the surface point the view ray of (x, y) hits, or background.
     PixelMapping directHit(double x, double y) const;
+    /// @brief The indirect part of map(), for a pixel whose view ray misses the surface: what the
+    ///        method's indirect ray shows there.
+    PixelMapping indirect(double x, double y, DistanceField::Sampler& sampler) const;
 
     /// @brief Start of the curved ray of pixel position (x, y): the hull seed and the initial
     ///        velocity per unit alpha (v0 = alpha * velocityPerAlpha).
