@@ -121,10 +121,13 @@ Command addEvaluateCommand(CLI::App& app)
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];
                     const render::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
+                    const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const render::AnnealingResult run = render::annealViewpoint(
                         evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
-                        options->optimization.ascentOptions());
+                        options->optimization.ascentOptions(), ascentEvaluator.get());
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
+                    entry["ascent_res"][std::to_string(resolution)] =
+                        ascentEvaluator ? options->optimization.ascentResolution : resolution;
                     table2 << " " << std::lround(run.seconds * 10.0) / 10.0 << " |";
                     const render::VisitedView& optimum = run.bestView();
                     const render::EnergyValue measured =

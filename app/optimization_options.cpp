@@ -23,6 +23,10 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--ascent-iterations", ascentIterations, "Line searches per view at most")
         ->check(CLI::Range(1, 100))
         ->capture_default_str();
+    command.add_option("--ascent-res", ascentResolution,
+                       "Rays per side of each view's parameter ascent when below --opt-res (the view energy stays at "
+                       "--opt-res; the best view's parameters are ascended again there)")
+        ->check(CLI::Range(4, 8192));
 }
 
 render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
@@ -64,6 +68,14 @@ render::AscentOptions OptimizationOptions::ascentOptions() const
                                                : render::GradientMode::Auto;
     options.maxIterations = ascentIterations;
     return options;
+}
+
+std::unique_ptr<render::EnergyEvaluator> OptimizationOptions::ascentEvaluator(const render::RenderScene& scene,
+                                                                              int resolution,
+                                                                              const core::ScalarRange& range) const
+{
+    if (ascentResolution <= 0 || ascentResolution >= resolution) return nullptr;
+    return std::make_unique<render::EnergyEvaluator>(scene, energyOptions(ascentResolution, range));
 }
 
 }  // namespace ivis::app

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace ivis::app {
@@ -23,9 +24,10 @@ struct OptimizationOptions {
     double cooling = 0.9;
     std::string gradient = "auto";
     int ascentIterations = 3;
+    int ascentResolution = 0;           ///< rays per side of the per-view ascent; 0: the optimisation's
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
-    ///        --cooling, --gradient, --ascent-iterations.
+    ///        --cooling, --gradient, --ascent-iterations, --ascent-res.
     void addTo(CLI::App& command);
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
@@ -39,6 +41,10 @@ struct OptimizationOptions {
     render::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
     /// @brief Ascent options (gradient mode).
     render::AscentOptions ascentOptions() const;
+    /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below
+    ///        @a resolution (annealViewpoint's ascentEvaluator), else null.
+    std::unique_ptr<render::EnergyEvaluator> ascentEvaluator(const render::RenderScene& scene, int resolution,
+                                                             const core::ScalarRange& range) const;
 };
 
 }  // namespace ivis::app

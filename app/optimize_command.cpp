@@ -54,10 +54,12 @@ Command addOptimizeCommand(CLI::App& app)
         const render::EnergyOptions energyOptions =
             options->optimization.energyOptions(options->optResolution, renderOptions.shading.range);
         const render::EnergyEvaluator evaluator(scene, energyOptions);
+        const auto ascentEvaluator =
+            options->optimization.ascentEvaluator(scene, options->optResolution, renderOptions.shading.range);
         const render::AnnealingResult result = render::annealViewpoint(
             evaluator, renderOptions.method,
             options->optimization.annealingOptions(options->view.theta, options->view.phi, options->view.fovYDeg),
-            options->optimization.ascentOptions());
+            options->optimization.ascentOptions(), ascentEvaluator.get());
         const render::VisitedView& best = result.bestView();
 
         // The best view at display resolution: picture and energy.
@@ -76,6 +78,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"mesh", options->mesh.source},
             {"energy", render::toString(energyOptions.kind)},
             {"opt_res", options->optResolution},
+            {"ascent_res", ascentEvaluator ? options->optimization.ascentResolution : options->optResolution},
             {"display_res", renderOptions.height},
             {"seed", options->optimization.seed},
             {"seconds", result.seconds},

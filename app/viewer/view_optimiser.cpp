@@ -68,9 +68,11 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
             scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
         const glm::dvec2 angles = start.camera.angles();
         const render::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const auto ascentEvaluator =
+            settings.optimization.ascentEvaluator(scene, settings.resolution, settings.importanceRange);
         const render::AnnealingResult annealing = render::annealViewpoint(
             evaluator, start.method, settings.optimization.annealingOptions(angles.x, angles.y, start.camera.fovYDeg),
-            settings.optimization.ascentOptions());
+            settings.optimization.ascentOptions(), ascentEvaluator.get());
         const render::VisitedView& best = annealing.bestView();
         OptimiserResult result;
         result.state.camera = render::viewCamera(best.thetaDeg, best.phiDeg, start.camera.fovYDeg);

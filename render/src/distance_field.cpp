@@ -44,19 +44,15 @@ bool DistanceField::Sampler::fineCell(const glm::vec3& p, float corners[8], glm:
     return true;
 }
 
-float DistanceField::Sampler::phi(const glm::vec3& p)
+float DistanceField::Sampler::finePhi(const glm::vec3& p, float far)
 {
-    const float far = mField.mFar.value(p);
-    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
     float corners[8];
     glm::vec3 t;
     return fineCell(p, corners, t) ? detail::trilinear(corners, t, nullptr) : far;
 }
 
-float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
+float DistanceField::Sampler::finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient)
 {
-    const float far = mField.mFar.valueAndGradient(p, gradient);
-    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
     float corners[8];
     glm::vec3 t;
     if (!fineCell(p, corners, t)) return far;

@@ -116,7 +116,7 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
             return point;
         };
         const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0, maxStep,
-                                               tolerance, &result.evaluations);
+                                               tolerance);
         const EnergyValue candidate = energyAt(along(t));
         ++result.iterations;
         if (!(candidate.energy > result.value.energy)) break;

@@ -37,7 +37,8 @@ core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg)
 }
 
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodParams& start,
-                                const AnnealingOptions& options, const AscentOptions& ascent)
+                                const AnnealingOptions& options, const AscentOptions& ascent,
+                                const EnergyEvaluator* ascentEvaluator)
 {
     if (options.steps < 0 || !(options.cooling > 0.0 && options.cooling <= 1.0) || !(options.startTemperature > 0.0))
         throw ValueError("annealing needs steps >= 0, 0 < cooling <= 1 and a positive start temperature");
@@ -46,14 +47,19 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
     AnnealingResult result;
 
     auto visit = [&](double theta, double phi, const MethodParams& params) {
+        const core::Camera camera = viewCamera(theta, phi, options.fovYDeg);
         const AscentResult optimised =
-            optimizeParameters(evaluator, viewCamera(theta, phi, options.fovYDeg), params, ascent);
+            optimizeParameters(ascentEvaluator ? *ascentEvaluator : evaluator, camera, params, ascent);
         result.evaluations += optimised.evaluations;
         VisitedView view;
         view.thetaDeg = theta;
         view.phiDeg = phi;
-        view.value = optimised.value;
         view.params = optimised.params;
+        view.value = optimised.value;
+        if (ascentEvaluator) {
+            view.value = evaluator.evaluate(camera, optimised.params);
+            ++result.evaluations;
+        }
         return view;
     };
 
@@ -73,6 +79,14 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
         if (proposal.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
         if (proposal.accepted) current = proposal;
         temperature *= options.cooling;
+    }
+    if (ascentEvaluator) {  // the winner's parameters, ascended on the full energy
+        VisitedView& best = result.visited[result.best];
+        const AscentResult polished =
+            optimizeParameters(evaluator, viewCamera(best.thetaDeg, best.phiDeg, options.fovYDeg), best.params, ascent);
+        result.evaluations += polished.evaluations;
+        best.params = polished.params;
+        best.value = polished.value;
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
     return result;

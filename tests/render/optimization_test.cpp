@@ -1,7 +1,8 @@
 // Optimisation: the golden-section search on analytic functions, the ascent of the method
 // parameters (monotone energy trace, analytic gradient of the adaptive profile against central
 // differences), prepared view samples against fresh evaluations, the adaptive InverseVis against
-// every global alpha, and the annealing's determinism and rules.
+// every global alpha, and the annealing's determinism and rules, with and without a coarser
+// evaluator for the per-view ascent.
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>
@@ -199,6 +200,37 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
         if (view.accepted) current = &view;
     }
     EXPECT_EQ(a.bestView().value.energy, best);
+}
+
+TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscendedThere)
+{
+    const auto& fixture = test::vesselScene();
+    EnergyOptions full, coarse;
+    full.resolution = 48;
+    coarse.resolution = 16;
+    full.visibilityResolution = coarse.visibilityResolution = 64;
+    const EnergyEvaluator evaluator(*fixture.scene, full), ascentEvaluator(*fixture.scene, coarse);
+    AnnealingOptions options;
+    options.steps = 4;
+    const AnnealingResult run = annealViewpoint(evaluator, MethodParams{}, options, {}, &ascentEvaluator);
+    ASSERT_EQ(run.visited.size(), 5u);
+    const MethodParams* current = nullptr;
+    MethodParams start;
+    for (std::size_t i = 0; i < run.visited.size(); ++i) {
+        const VisitedView& view = run.visited[i];
+        const core::Camera camera = viewCamera(view.thetaDeg, view.phiDeg, options.fovYDeg);
+        const MethodParams& from = current ? *current : start;
+        const AscentResult ascended = optimizeParameters(ascentEvaluator, camera, from);
+        const EnergyValue measured = evaluator.evaluate(camera, view.params);
+        EXPECT_EQ(view.value.energy, measured.energy) << "view " << i << " is measured on the full energy";
+        if (i == run.best) {
+            EXPECT_GE(view.value.energy, evaluator.evaluate(camera, ascended.params).energy) << "the winner's ascent";
+        } else {
+            EXPECT_EQ(view.params.curved.alpha, ascended.params.curved.alpha) << "view " << i << " ascends coarsely";
+        }
+        EXPECT_LE(view.value.energy, run.bestView().value.energy);
+        if (i == 0 || view.accepted) current = &view.params;
+    }
 }
 
 }  // namespace

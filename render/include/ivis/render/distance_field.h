@@ -39,6 +39,11 @@ public:
     private:
         /// Fills the 8 fine corner values of the cell containing p; false unless all are active.
         bool fineCell(const glm::vec3& p, float corners[8], glm::vec3& t);
+        /// phi from the fine band at p where its cell is complete, else @a far.
+        float finePhi(const glm::vec3& p, float far);
+        /// phi and gradient from the fine band at p where its cell is complete, else @a far (and
+        /// the far gradient already in @a gradient).
+        float finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient);
 
         const DistanceField& mField;
         openvdb::FloatGrid::ConstAccessor mPhi;
@@ -66,5 +71,21 @@ private:
     float mFineTrustBelow;   ///< far values below this may lie in the fine band
     float mReach;
 };
+
+// Inline: curved rays sample at every step, mostly in the far field.
+
+inline float DistanceField::Sampler::phi(const glm::vec3& p)
+{
+    const float far = mField.mFar.value(p);
+    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
+    return finePhi(p, far);
+}
+
+inline float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
+{
+    const float far = mField.mFar.valueAndGradient(p, gradient);
+    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
+    return finePhiAndGradient(p, far, gradient);
+}
 
 }  // namespace ivis::render

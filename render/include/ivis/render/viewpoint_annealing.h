@@ -49,7 +49,11 @@ struct AnnealingResult {
 core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg);
 
 /// @brief Runs the annealing from the start view with the method of @a start.
+/// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended
+///        on it and only then measured on @a evaluator, and the best view's parameters are
+///        ascended once more on @a evaluator; when null everything uses @a evaluator.
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodParams& start,
-                                const AnnealingOptions& options = {}, const AscentOptions& ascent = {});
+                                const AnnealingOptions& options = {}, const AscentOptions& ascent = {},
+                                const EnergyEvaluator* ascentEvaluator = nullptr);
 
 }  // namespace ivis::render
