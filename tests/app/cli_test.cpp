@@ -405,7 +405,8 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
 TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
 {
     const CliResult result = runCli("evaluate scene:sphere --volume-res 64 --methods front,inversevis "
-                                    "--opt-res 16,24 --steps 2 --display-res 64 --cache-dir " + quoted(output("")) +
+                                    "--opt-res 16,24 --ascent-res 16 --steps 2 --display-res 64 --cache-dir " +
+                                    quoted(output("")) +
                                     " --json " + quoted(output("e.json")) + " --markdown " + quoted(output("e.md")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("e.json"))).at("sphere");
@@ -424,6 +425,8 @@ TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
             EXPECT_TRUE(optimum.contains("theta") && optimum.contains("phi") && optimum.contains("params"));
         }
         EXPECT_EQ(entry.at("by_resolution").at("16").at("visibility"), entry.at("visibility")) << method;
+        // --ascent-res 16 ascends on 16^2 rays below --opt-res 24 only.
+        EXPECT_EQ(entry.at("ascent_res"), nlohmann::json({{"16", 16}, {"24", 16}})) << method;
         for (const char* key : {"theta", "phi", "params"}) EXPECT_TRUE(entry.contains(key)) << method << " " << key;
     }
     EXPECT_GT(report.at("inversevis").at("visibility").get<double>(), report.at("front").at("visibility").get<double>());
@@ -435,6 +438,12 @@ TEST_F(Cli, EvaluateRejectsAnUnknownMethodBeforeWork)
 {
     expectRejected("evaluate scene:sphere --methods front,ring --json " + quoted(output("e.json")),
                    {"unknown method 'ring'"});
+}
+
+TEST_F(Cli, OptimizeRejectsAnAscentResolutionOutOfRange)
+{
+    expectRejected("optimize scene:sphere --ascent-res 2 -o " + quoted(output("best.png")),
+                   {"--ascent-res", "not in range 4 to 8192"});
 }
 
 }  // namespace
