@@ -150,6 +150,7 @@ Command addEvaluateCommand(CLI::App& app)
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
                 entry["params"] = methodParamsJson(best.params);
+                if (start.method == render::Method::InverseVis) entry["alpha_scan"] = options->optimization.alphaScan;
                 table1 << " " << percent(value.energy) << " (" << percent(value.front) << ") |";
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;

@@ -27,6 +27,10 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "Rays per side of each view's parameter ascent when below --opt-res (the view energy stays at "
                        "--opt-res; the best view's parameters are ascended again there)")
         ->check(CLI::Range(4, 8192));
+    command.add_option("--alpha-scan", alphaScan,
+                       "inversevis: try this many alphas evenly on [0, 4] before each ascent and start from the "
+                       "best (beyond the paper; default none)")
+        ->check(CLI::Range(2, 400));
 }
 
 render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
@@ -67,6 +71,7 @@ render::AscentOptions OptimizationOptions::ascentOptions() const
                        : gradient == "forward" ? render::GradientMode::ForwardDifference
                                                : render::GradientMode::Auto;
     options.maxIterations = ascentIterations;
+    options.alphaScanSamples = alphaScan;
     return options;
 }
 

@@ -25,9 +25,10 @@ struct OptimizationOptions {
     std::string gradient = "auto";
     int ascentIterations = 3;
     int ascentResolution = 0;           ///< rays per side of the per-view ascent; 0: the optimisation's
+    int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
-    ///        --cooling, --gradient, --ascent-iterations, --ascent-res.
+    ///        --cooling, --gradient, --ascent-iterations, --ascent-res, --alpha-scan.
     void addTo(CLI::App& command);
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
@@ -39,7 +40,7 @@ struct OptimizationOptions {
     render::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at (theta, phi) with field of view @a fovYDeg.
     render::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
-    /// @brief Ascent options (gradient mode).
+    /// @brief Ascent options (gradient mode, line searches, alpha scan).
     render::AscentOptions ascentOptions() const;
     /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below
     ///        @a resolution (annealViewpoint's ascentEvaluator), else null.

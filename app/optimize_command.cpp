@@ -79,6 +79,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"energy", render::toString(energyOptions.kind)},
             {"opt_res", options->optResolution},
             {"ascent_res", ascentEvaluator ? options->optimization.ascentResolution : options->optResolution},
+            {"alpha_scan", options->optimization.alphaScan},
             {"display_res", renderOptions.height},
             {"seed", options->optimization.seed},
             {"seconds", result.seconds},

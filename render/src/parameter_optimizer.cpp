@@ -91,6 +91,20 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
     const double maxStep = unitDirection ? options.maxProfileStep : options.maxStep;
     const double tolerance = unitDirection ? options.profileTolerance : options.tolerance;
 
+    // InverseVis: start from the best of the start alpha and an even scan of [0, maxScanAlpha].
+    if (start.method == Method::InverseVis && options.alphaScanSamples > 1) {
+        const int samples = options.alphaScanSamples;
+        for (int k = 0; k < samples; ++k) {
+            const std::vector<double> point{options.maxScanAlpha * k / (samples - 1)};
+            const EnergyValue value = energyAt(point);
+            if (!(value.energy > result.value.energy)) continue;
+            x = point;
+            result.value = value;
+            result.params = paramsAt(x);
+        }
+        if (result.value.energy > result.energyTrace.back()) result.energyTrace.push_back(result.value.energy);
+    }
+
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         std::vector<double> gradient(x.size(), 0.0);
         if (analytic) {

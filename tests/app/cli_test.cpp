@@ -430,6 +430,7 @@ TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
         for (const char* key : {"theta", "phi", "params"}) EXPECT_TRUE(entry.contains(key)) << method << " " << key;
     }
     EXPECT_GT(report.at("inversevis").at("visibility").get<double>(), report.at("front").at("visibility").get<double>());
+    EXPECT_EQ(report.at("inversevis").at("alpha_scan"), 0) << "the paper's ascent unless --alpha-scan";
     EXPECT_NE(result.out.find("| sphere |"), std::string::npos) << result.out;
     EXPECT_TRUE(fs::exists(output("e.md")));
 }

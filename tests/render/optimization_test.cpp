@@ -157,6 +157,33 @@ TEST(ParameterAscent, AnalyticGradientIsRefusedForTheVisibilityEnergy)
     EXPECT_THROW(optimizeParameters(evaluator, core::Camera(), MethodParams{}, ascent), ValueError);
 }
 
+TEST(ParameterAscent, AlphaScanEndsAtLeastAsHighAsEveryScannedAlpha)
+{
+    const auto& fixture = test::vesselScene();
+    EnergyOptions energy;
+    energy.resolution = 32;
+    energy.visibilityResolution = 64;
+    const EnergyEvaluator evaluator(*fixture.scene, energy);
+    const core::Camera camera = core::Camera::fromAngles(70.0, 40.0);
+    const int scanSamples = 5;
+    AscentOptions options;
+    options.alphaScanSamples = scanSamples;
+    options.maxIterations = 1;
+    const AscentResult scanned = optimizeParameters(evaluator, camera, MethodParams{}, options);
+    double bestScanned = 0.0;
+    for (int k = 0; k < scanSamples; ++k) {
+        MethodParams params;
+        params.curved.alpha = float(options.maxScanAlpha * k / (scanSamples - 1));
+        bestScanned = std::max(bestScanned, evaluator.evaluate(camera, params).energy);
+    }
+    EXPECT_GE(scanned.value.energy, bestScanned);
+    EXPECT_EQ(scanned.value.energy, evaluator.evaluate(camera, scanned.params).energy);
+    options.alphaScanSamples = 0;
+    const AscentResult plain = optimizeParameters(evaluator, camera, MethodParams{}, options);
+    EXPECT_EQ(scanned.evaluations, plain.evaluations + scanSamples) << "one line search each, plus the scan";
+    EXPECT_GT(scanned.value.energy, plain.value.energy) << "on this view a larger alpha than the ascent reaches shows more";
+}
+
 TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
 {
     const auto& fixture = test::vesselScene();

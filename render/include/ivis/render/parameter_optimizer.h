@@ -6,7 +6,8 @@
 ///       evaluates the TRUE energy, until the bracket is shorter than 0.01; the ascent stops when a
 ///       line search does not raise the energy. The adaptive profile steps along the unit
 ///       gradient, t in [0, 1], bracket 0.1. Each view's direct hits and hull seeds are computed
-///       once (ViewSamples).
+///       once (ViewSamples). Optionally InverseVis first scans alpha (AscentOptions::alphaScanSamples):
+///       the visibility energy has plateaus in alpha where the gradient is zero.
 #pragma once
 
 #include <ivis/render/energy.h>
@@ -33,6 +34,9 @@ struct AscentOptions {
     double maxAlpha = 10.0;         ///< alpha is kept in [0, maxAlpha] (rays escape above ~4)
     double maxProfileStep = 1.0;    ///< adaptive InverseVis: line search along the unit gradient on [0, this]
     double profileTolerance = 0.1;  ///< adaptive InverseVis: its line search's final bracket
+    int alphaScanSamples = 0;       ///< InverseVis: alphas tried evenly on [0, maxScanAlpha] before the
+                                    ///< ascent, which starts from the best (0: none, the paper's)
+    double maxScanAlpha = 4.0;      ///< end of that scan (above ~4 rays escape)
 };
 
 /// @brief Outcome of one optimisation.
