@@ -2,7 +2,6 @@
 
 #include <ivis/core/errors.h>
 
-#include <cmath>
 #include <utility>
 
 namespace ivis::render {
