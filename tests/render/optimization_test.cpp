@@ -26,6 +26,14 @@ EnergyOptions scalarOptions(const core::SurfaceField& field, int resolution)
     return options;
 }
 
+EnergyOptions visibilityOptions(int resolution)
+{
+    EnergyOptions options;
+    options.resolution = resolution;
+    options.visibilityResolution = 64;
+    return options;
+}
+
 MethodParams adaptive(float a0, float a1, float a2)
 {
     MethodParams params;
@@ -160,10 +168,7 @@ TEST(ParameterAscent, AnalyticGradientIsRefusedForTheVisibilityEnergy)
 TEST(ParameterAscent, AlphaScanEndsAtLeastAsHighAsEveryScannedAlpha)
 {
     const auto& fixture = test::vesselScene();
-    EnergyOptions energy;
-    energy.resolution = 32;
-    energy.visibilityResolution = 64;
-    const EnergyEvaluator evaluator(*fixture.scene, energy);
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
     const core::Camera camera = core::Camera::fromAngles(70.0, 40.0);
     const int scanSamples = 5;
     AscentOptions options;
@@ -187,10 +192,7 @@ TEST(ParameterAscent, AlphaScanEndsAtLeastAsHighAsEveryScannedAlpha)
 TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
 {
     const auto& fixture = test::vesselScene();
-    EnergyOptions energy;
-    energy.resolution = 32;
-    energy.visibilityResolution = 64;
-    const EnergyEvaluator evaluator(*fixture.scene, energy);
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
     AnnealingOptions options;
     options.steps = 12;
     MethodParams start;
@@ -232,11 +234,8 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
 TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscendedThere)
 {
     const auto& fixture = test::vesselScene();
-    EnergyOptions full, coarse;
-    full.resolution = 48;
-    coarse.resolution = 16;
-    full.visibilityResolution = coarse.visibilityResolution = 64;
-    const EnergyEvaluator evaluator(*fixture.scene, full), ascentEvaluator(*fixture.scene, coarse);
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(48));
+    const EnergyEvaluator ascentEvaluator(*fixture.scene, visibilityOptions(16));
     AnnealingOptions options;
     options.steps = 4;
     const AnnealingResult run = annealViewpoint(evaluator, MethodParams{}, options, {}, &ascentEvaluator);
