@@ -10,6 +10,8 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/render/method_json.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -79,7 +81,7 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches")->capture_default_str();
 
     return {command, [options] {
-        for (const std::string& m : options->methods) render::parseMethod(m);  // validate names first
+        for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         nlohmann::json results = nlohmann::json::object();
@@ -105,36 +107,36 @@ Command addEvaluateCommand(CLI::App& app)
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);
             const std::string stem = core::sourceStem(mesh);
-            render::EnergyOptions displayOptions = options->optimization.measureOptions(options->displayResolution, range);
-            displayOptions.kind = render::EnergyKind::Visibility;
-            const render::EnergyEvaluator display(scene, displayOptions);
-            const render::VisibilityGrid& grid = *display.visibilityGrid();
+            optimize::EnergyOptions displayOptions = options->optimization.measureOptions(options->displayResolution, range);
+            displayOptions.kind = optimize::EnergyKind::Visibility;
+            const optimize::EnergyEvaluator display(scene, displayOptions);
+            const optimize::VisibilityGrid& grid = *display.visibilityGrid();
             const double ceiling = double(grid.reachableCount(field.mesh)) / double(std::max<std::size_t>(1, grid.markedCount()));
             results[stem]["visibility_ceiling"] = ceiling;
             table1 << "| " << stem << " | " << percent(ceiling) << " |";
             table2 << "| " << stem << " |";
             for (const std::string& methodName : options->methods) {
-                render::MethodParams start;
-                start.method = render::parseMethod(methodName);
+                const render::MethodPtr start = render::makeMethod(methodName);
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
-                render::VisitedView best;
+                optimize::VisitedView best;
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];
-                    const render::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
+                    const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
-                    const render::AnnealingResult run = render::annealViewpoint(
+                    const optimize::AnnealingResult run = optimize::annealViewpoint(
                         evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
                         options->optimization.ascentOptions(), ascentEvaluator.get());
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
                     entry["ascent_res"][std::to_string(resolution)] =
                         ascentEvaluator ? options->optimization.ascentResolution : resolution;
                     table2 << " " << std::lround(run.seconds * 10.0) / 10.0 << " |";
-                    const render::VisitedView& optimum = run.bestView();
-                    const render::EnergyValue measured =
-                        display.evaluate(render::viewCamera(optimum.thetaDeg, optimum.phiDeg, options->fovYDeg), optimum.params);
+                    const optimize::VisitedView& optimum = run.bestView();
+                    const optimize::EnergyValue measured =
+                        display.evaluate(core::Camera::fromAngles(optimum.thetaDeg, optimum.phiDeg, core::kCameraDistance, options->fovYDeg),
+                                     optimum.method);
                     entry["by_resolution"][std::to_string(resolution)] = {{"theta", optimum.thetaDeg},
                                                                           {"phi", optimum.phiDeg},
-                                                                          {"params", methodParamsJson(optimum.params)},
+                                                                          {"params", render::methodToJson(*optimum.method)},
                                                                           {"visibility", measured.energy}};
                     if (k == 0) {
                         best = optimum;
@@ -143,20 +145,20 @@ Command addEvaluateCommand(CLI::App& app)
                             angleBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
                     }
                 }
-                const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->fovYDeg);
-                const render::EnergyValue value = display.evaluate(camera, best.params);
+                const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, options->fovYDeg);
+                const optimize::EnergyValue value = display.evaluate(camera, best.method);
                 entry["visibility"] = value.energy;
                 entry["front_visibility"] = value.front;
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
-                entry["params"] = methodParamsJson(best.params);
-                if (start.method == render::Method::InverseVis) entry["alpha_scan"] = options->optimization.alphaScan;
+                entry["params"] = render::methodToJson(*best.method);
+                if (!start->info().scannedParameter.empty()) entry["alpha_scan"] = options->optimization.alphaScan;
                 table1 << " " << percent(value.energy) << " (" << percent(value.front) << ") |";
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;
                     picture.width = picture.height =
                         options->pictureResolution > 0 ? options->pictureResolution : options->displayResolution;
-                    picture.method = best.params;
+                    picture.method = best.method;
                     picture.shading.range = range;
                     picture.scalarName = field.name;
                     const std::string path = options->pictures + "/" + stem + "-" + methodName + ".png";

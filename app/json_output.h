@@ -2,7 +2,7 @@
 /// @brief JSON forms of the engine's results, and writing a JSON file atomically.
 #pragma once
 
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
 #include <nlohmann/json.hpp>
 
@@ -10,11 +10,8 @@
 
 namespace ivis::app {
 
-/// @brief The parameters of the method (alpha for InverseVis, w1..w5 for the mirror, ...).
-nlohmann::json methodParamsJson(const render::MethodParams& params);
-
 /// @brief One visited view: angles, energy, front-only energy, accepted, parameters.
-nlohmann::json visitedViewJson(const render::VisitedView& view);
+nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
 /// @brief Writes @a json (indented) to @a path through a temporary file.
 /// @throw InputError naming the path when it cannot be written

@@ -33,10 +33,10 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->check(CLI::Range(2, 400));
 }
 
-render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
+optimize::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
 {
-    render::EnergyOptions options;
-    options.kind = render::parseEnergyKind(energy);
+    optimize::EnergyOptions options;
+    options.kind = optimize::parseEnergyKind(energy);
     options.gamma = gamma;
     options.resolution = resolution;
     options.visibilityResolution = optVisibilityResolution > 0 ? optVisibilityResolution
@@ -45,16 +45,16 @@ render::EnergyOptions OptimizationOptions::energyOptions(int resolution, const c
     return options;
 }
 
-render::EnergyOptions OptimizationOptions::measureOptions(int resolution, const core::ScalarRange& range) const
+optimize::EnergyOptions OptimizationOptions::measureOptions(int resolution, const core::ScalarRange& range) const
 {
-    render::EnergyOptions options = energyOptions(resolution, range);
+    optimize::EnergyOptions options = energyOptions(resolution, range);
     options.visibilityResolution = visibilityResolution;
     return options;
 }
 
-render::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const
+optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const
 {
-    render::AnnealingOptions options;
+    optimize::AnnealingOptions options;
     options.steps = steps;
     options.cooling = cooling;
     options.seed = seed;
@@ -64,23 +64,23 @@ render::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, 
     return options;
 }
 
-render::AscentOptions OptimizationOptions::ascentOptions() const
+optimize::AscentOptions OptimizationOptions::ascentOptions() const
 {
-    render::AscentOptions options;
-    options.gradient = gradient == "analytic" ? render::GradientMode::Analytic
-                       : gradient == "forward" ? render::GradientMode::ForwardDifference
-                                               : render::GradientMode::Auto;
+    optimize::AscentOptions options;
+    options.gradient = gradient == "analytic" ? optimize::GradientMode::Analytic
+                       : gradient == "forward" ? optimize::GradientMode::ForwardDifference
+                                               : optimize::GradientMode::Auto;
     options.maxIterations = ascentIterations;
-    options.alphaScanSamples = alphaScan;
+    options.scanSamples = alphaScan;
     return options;
 }
 
-std::unique_ptr<render::EnergyEvaluator> OptimizationOptions::ascentEvaluator(const render::RenderScene& scene,
+std::unique_ptr<optimize::EnergyEvaluator> OptimizationOptions::ascentEvaluator(const render::RenderScene& scene,
                                                                               int resolution,
                                                                               const core::ScalarRange& range) const
 {
     if (ascentResolution <= 0 || ascentResolution >= resolution) return nullptr;
-    return std::make_unique<render::EnergyEvaluator>(scene, energyOptions(ascentResolution, range));
+    return std::make_unique<optimize::EnergyEvaluator>(scene, energyOptions(ascentResolution, range));
 }
 
 }  // namespace ivis::app

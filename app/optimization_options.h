@@ -3,7 +3,7 @@
 ///        schedule and the parameter ascent.
 #pragma once
 
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
 #include <CLI/CLI.hpp>
 
@@ -34,17 +34,17 @@ struct OptimizationOptions {
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
     ///        most --visibility-res: a grid with more marked voxels than rays rewards spreading the
     ///        rays anywhere rather than covering the surface (docs/optimisation.md).
-    render::EnergyOptions energyOptions(int resolution, const core::ScalarRange& range) const;
+    optimize::EnergyOptions energyOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief The reported measure at @a resolution rays per side: the visibility grid is
     ///        --visibility-res (the paper's 200), whatever the optimisation used.
-    render::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
+    optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at (theta, phi) with field of view @a fovYDeg.
-    render::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
+    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).
-    render::AscentOptions ascentOptions() const;
+    optimize::AscentOptions ascentOptions() const;
     /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below
     ///        @a resolution (annealViewpoint's ascentEvaluator), else null.
-    std::unique_ptr<render::EnergyEvaluator> ascentEvaluator(const render::RenderScene& scene, int resolution,
+    std::unique_ptr<optimize::EnergyEvaluator> ascentEvaluator(const render::RenderScene& scene, int resolution,
                                                              const core::ScalarRange& range) const;
 };
 

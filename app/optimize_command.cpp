@@ -8,7 +8,9 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
-#include <ivis/render/annealing_plot.h>
+#include <ivis/core/errors.h>
+#include <ivis/optimize/annealing_plot.h>
+#include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <memory>
@@ -42,6 +44,12 @@ Command addOptimizeCommand(CLI::App& app)
 
     return {command, [options] {
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        const core::Camera start = options->view.camera();
+        if (start.orthographic)
+            throw InputError("--ortho: the viewpoint optimisation places perspective cameras on the radius-2.5 sphere");
+        const glm::dvec2 startAngles =
+            options->view.cameraFile.empty() ? glm::dvec2(options->view.theta, options->view.phi) : start.angles();
+        checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
         const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
@@ -51,32 +59,32 @@ Command addOptimizeCommand(CLI::App& app)
             &progress);
         const render::RenderScene scene(field, volume);
 
-        const render::EnergyOptions energyOptions =
+        const optimize::EnergyOptions energyOptions =
             options->optimization.energyOptions(options->optResolution, renderOptions.shading.range);
-        const render::EnergyEvaluator evaluator(scene, energyOptions);
+        const optimize::EnergyEvaluator evaluator(scene, energyOptions);
         const auto ascentEvaluator =
             options->optimization.ascentEvaluator(scene, options->optResolution, renderOptions.shading.range);
-        const render::AnnealingResult result = render::annealViewpoint(
+        const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
-            options->optimization.annealingOptions(options->view.theta, options->view.phi, options->view.fovYDeg),
-            options->optimization.ascentOptions(), ascentEvaluator.get());
-        const render::VisitedView& best = result.bestView();
+            options->optimization.annealingOptions(startAngles.x, startAngles.y, start.fovYDeg),
+            options->optimization.ascentOptions(), ascentEvaluator.get(), &progress);
+        const optimize::VisitedView& best = result.bestView();
 
         // The best view at display resolution: picture and energy.
-        const core::Camera camera = render::viewCamera(best.thetaDeg, best.phiDeg, options->view.fovYDeg);
-        renderOptions.method = best.params;
+        const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, start.fovYDeg);
+        renderOptions.method = best.method;
         core::writePng(render::renderImage(scene, camera, renderOptions, &progress).image, options->output,
                        renderOptions.shading.transparentBackground);
-        const render::EnergyOptions displayOptions =
+        const optimize::EnergyOptions displayOptions =
             options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
-        const render::EnergyValue display = render::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.params);
-        if (!options->plot.empty()) core::writePng(render::plotVisitedViews(result), options->plot, false);
+        const optimize::EnergyValue display = optimize::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.method);
+        if (!options->plot.empty()) core::writePng(optimize::plotVisitedViews(result), options->plot, false);
 
         nlohmann::json visited = nlohmann::json::array();
         for (const auto& view : result.visited) visited.push_back(visitedViewJson(view));
         const nlohmann::json json = {
             {"mesh", options->mesh.source},
-            {"energy", render::toString(energyOptions.kind)},
+            {"energy", optimize::toString(energyOptions.kind)},
             {"opt_res", options->optResolution},
             {"ascent_res", ascentEvaluator ? options->optimization.ascentResolution : options->optResolution},
             {"alpha_scan", options->optimization.alphaScan},
@@ -86,7 +94,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"evaluations", result.evaluations},
             {"theta", best.thetaDeg},
             {"phi", best.phiDeg},
-            {"params", methodParamsJson(best.params)},
+            {"params", render::methodToJson(*best.method)},
             {"energy_value", best.value.energy},
             {"front_energy_value", best.value.front},
             {"display_energy_value", display.energy},
@@ -95,9 +103,9 @@ Command addOptimizeCommand(CLI::App& app)
             {"output", options->output},
             {"visited", visited}};
         if (!options->json.empty()) writeJsonFile(json, options->json);
-        core::logInfo(std::string(render::toString(best.params.method)) + ": best view theta " +
+        core::logInfo(best.method->name() + ": best view theta " +
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +
-                      render::toString(energyOptions.kind) + " " + std::to_string(display.energy) + " (front " +
+                      optimize::toString(energyOptions.kind) + " " + std::to_string(display.energy) + " (front " +
                       std::to_string(display.front) + ") at " + std::to_string(renderOptions.height) +
                       " rays per side, " + std::to_string(result.seconds) + " s");
     }};

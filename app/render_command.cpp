@@ -7,6 +7,7 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
+#include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -43,7 +44,7 @@ Command addRenderCommand(CLI::App& app)
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera camera = options->view.camera();
-        options->view.renderOptions();
+        checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
 
@@ -63,7 +64,7 @@ Command addRenderCommand(CLI::App& app)
         if (s.nanPixels > 0)
             core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
         const glm::dvec2 angles = camera.angles();
-        const nlohmann::json stats = {{"seconds", s.seconds},
+        nlohmann::json stats = {{"seconds", s.seconds},
                                       {"width", renderOptions.width},
                                       {"height", renderOptions.height},
                                       {"samples_per_pixel", renderOptions.samplesPerPixel},
@@ -74,19 +75,17 @@ Command addRenderCommand(CLI::App& app)
                                       {"rays_landed", s.raysLanded},
                                       {"mean_steps", s.meanSteps()},
                                       {"nan_pixels", s.nanPixels},
-                                      {"method", render::toString(renderOptions.method.method)},
                                       {"theta", angles.x},
                                       {"phi", angles.y},
-                                      {"alpha", renderOptions.method.curved.alpha},
-                                      {"hull_offset", renderOptions.method.curved.hullOffset},
-                                      {"mirror_w", renderOptions.method.mirror.w},
                                       {"volume_resolution", volume.options.resolution},
                                       {"volume_cache", volumePath},
                                       {"output", options->output},
                                       {"camera", cameraPath}};
+        const nlohmann::json method = render::methodToJson(*renderOptions.method);
+        for (const auto& [key, value] : method.items()) stats[key] = value;
         if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
-                      std::to_string(renderOptions.height) + ", " + render::toString(renderOptions.method.method) +
+                      std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
                       ", " + std::to_string(s.seconds) + " s render)");
     }};
 }

@@ -16,20 +16,7 @@ void ViewOptions::addTo(CLI::App& command)
         ->check(CLI::ExistingFile);
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
-    command.add_option("--method", method, "front, backfaces, neugebauer, mirror, inversevis or inversevis-adaptive")
-        ->capture_default_str();
-    command.add_option("--alpha", alpha, "InverseVis initial velocity scale")->capture_default_str();
-    command.add_option("--alpha-profile", alphaProfile,
-                       "inversevis-adaptive: alpha(c) = a0 + a1 c + a2 c^2 across the ring (default 0 3 3)")
-        ->expected(3);
-    command.add_option("--hull-offset", hullOffset, "InverseVis hull distance phi0 (normalised units)")
-        ->capture_default_str();
-    command.add_option("--step", stepSize, "InverseVis symplectic Euler step h")->capture_default_str();
-    command.add_option("--max-steps", maxSteps, "Steps before a curved ray counts as a miss")->capture_default_str();
-    command.add_option("--mirror", mirror, "Mirror coefficients w1 w2 w3 w4 w5")->expected(5);
-    command.add_option("--ring-centre", ringCentre, "Ring map centre x y z (normalised units)")->expected(3);
-    command.add_option("--ring-width", ringWidth, "Ring width r2 - r1 (fraction of the image half-height)")
-        ->capture_default_str();
+    method.addTo(command);
     command.add_option("--colormap", colormap, "viridis, coolwarm or grey")->capture_default_str();
     command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2);
     command.add_option("--units", units, "Units shown on the colour bar");
@@ -56,17 +43,7 @@ render::RenderOptions ViewOptions::renderOptions() const
         options.width < 1 || options.height < 1 || options.width > 32768 || options.height > 32768)
         throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
     options.samplesPerPixel = samplesPerPixel;
-    options.method.method = render::parseMethod(method);
-    options.method.curved.alpha = alpha;
-    options.method.curved.hullOffset = hullOffset;
-    for (std::size_t i = 0; i < alphaProfile.size(); ++i) options.method.profile.coefficients[i] = alphaProfile[i];
-    options.method.curved.stepSize = stepSize;
-    options.method.curved.maxSteps = maxSteps;
-    if (!(hullOffset > 0.0f) || !(stepSize > 0.0f) || maxSteps < 1)
-        throw ValueError("--hull-offset and --step must be positive and --max-steps at least 1");
-    for (std::size_t i = 0; i < mirror.size(); ++i) options.method.mirror.w[i] = mirror[i];
-    if (ringCentre.size() == 3) options.method.ring.centre = {ringCentre[0], ringCentre[1], ringCentre[2]};
-    options.method.ring.ringWidth = ringWidth;
+    options.method = method.create();
     options.shading.colormap = colormap;
     core::colormap(colormap);  // validates the name
     if (range.size() == 2) options.shading.range = core::scalarRangeFromUser(range[0], range[1]);

@@ -4,6 +4,8 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/surface_field.h>
+#include "method_options.h"
+
 #include <ivis/render/renderer.h>
 
 #include <CLI/CLI.hpp>
@@ -22,15 +24,7 @@ struct ViewOptions {
     std::string cameraFile;
     std::string resolution = "1000x1000";
     int samplesPerPixel = 1;
-    std::string method = "inversevis";
-    float alpha = 0.5f;
-    std::vector<float> alphaProfile;
-    float hullOffset = 0.4f;
-    float stepSize = 0.1f;
-    int maxSteps = 1000;
-    std::vector<float> mirror;
-    std::vector<float> ringCentre;
-    float ringWidth = 0.3f;
+    MethodOptions method;
     std::string colormap = "viridis";
     std::vector<double> range;
     std::string units;

@@ -8,6 +8,7 @@
 #include <ivis/core/surface_source.h>
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/renderer.h>
+#include <ivis/render/screen_map.h>
 
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
@@ -34,20 +35,17 @@ struct RaySeed {
 
 /// Seeds of every pixel whose view ray misses the surface but meets the hull, in pixel order.
 std::vector<RaySeed> collectSeeds(const render::RenderScene& scene, const core::CameraFrame& frame,
-                                  const render::CurvedRayParams& params)
+                                  const render::MethodPtr& method)
 {
-    const core::Bounds3 hullBox = render::hullBounds(scene.mesh(), params.hullOffset, scene.distance().voxelSize());
+    const render::ScreenMap screen(scene, frame, method);
+    const render::CurvedRayMap& rays = *screen.curvedRays();
     std::vector<std::vector<RaySeed>> rows(std::size_t(frame.height()));
     tbb::parallel_for(0, frame.height(), [&](int y) {
         auto sampler = scene.distance().sampler();
         for (int x = 0; x < frame.width(); ++x) {
-            const core::CameraRay ray = frame.ray(x + 0.5, y + 0.5);
-            const glm::vec3 origin(ray.origin), direction(ray.direction);
-            if (scene.bvh().intersect(origin, direction).hit()) continue;
-            glm::vec3 seed, gradient;
-            if (!render::findHullExit(sampler, origin, direction, params.hullOffset, hullBox, seed)) continue;
-            sampler.phiAndGradient(seed, gradient);
-            rows[std::size_t(y)].push_back({seed, render::initialVelocity(gradient, direction, params.alpha)});
+            render::CurvedRayStart start;
+            if (rays.start(x + 0.5, y + 0.5, sampler, start))
+                rows[std::size_t(y)].push_back({start.seed, rays.method().launchVelocity(start, 0)});
         }
     });
     std::vector<RaySeed> seeds;
@@ -143,16 +141,16 @@ Benchmark addRenderBenchmark(CLI::App& app)
         const render::RenderScene scene(field, volume);
         const core::Camera camera = core::Camera::fromAngles(options->theta, options->phi);
 
-        renderOptions.method.method = render::Method::Front;
+        renderOptions.method = render::makeMethod("front");
         const render::RenderStats front = render::renderImage(scene, camera, renderOptions).stats;
-        renderOptions.method.method = render::Method::InverseVis;
+        renderOptions.method = render::makeMethod("inversevis");
         const render::RenderStats inverse = render::renderImage(scene, camera, renderOptions).stats;
 
         const core::CameraFrame frame(camera, renderOptions.width, renderOptions.height);
-        const render::CurvedRayParams& params = renderOptions.method.curved;
-        const std::vector<RaySeed> seeds = collectSeeds(scene, frame, params);
+        const render::CurvedRayParams& params = renderOptions.method->curved()->rayParams();
+        const std::vector<RaySeed> seeds = collectSeeds(scene, frame, renderOptions.method);
         const float epsilon = render::landingEpsilon(params, scene.distance());
-        const float escape = 0.999f * scene.distance().reach();
+        const float escape = render::escapeDistance(scene.distance());
 
         start = Clock::now();
         const std::size_t oursSteps =

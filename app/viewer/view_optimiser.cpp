@@ -1,8 +1,8 @@
 #include "view_optimiser.h"
 
-#include <ivis/render/energy.h>
-#include <ivis/render/parameter_optimizer.h>
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/energy.h>
+#include <ivis/optimize/parameter_optimizer.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
 #include <chrono>
 #include <cstdio>

@@ -1,7 +1,5 @@
 #include <ivis/render/distance_field.h>
 
-#include <glm/matrix.hpp>
-
 #include <cmath>
 
 namespace ivis::render {
@@ -58,22 +56,6 @@ float DistanceField::Sampler::finePhiAndGradient(const glm::vec3& p, float far, 
     if (!fineCell(p, corners, t)) return far;
     const float value = detail::trilinear(corners, t, &gradient);
     gradient *= mField.mInvVoxelSize;
-    return value;
-}
-
-float DistanceField::Sampler::phiGradientHessian(const glm::vec3& p, glm::vec3& gradient, glm::mat3& hessian)
-{
-    const float value = phiAndGradient(p, gradient);
-    const bool inFineBand = mField.mHasFineBand && value <= mField.mFineTrustBelow;
-    const float h = inFineBand ? mField.mVoxelSize : mField.mFar.voxelSize();
-    for (int axis = 0; axis < 3; ++axis) {
-        glm::vec3 offset(0.0f), up, down;
-        offset[axis] = h;
-        phiAndGradient(p + offset, up);
-        phiAndGradient(p - offset, down);
-        hessian[axis] = (up - down) / (2.0f * h);
-    }
-    hessian = 0.5f * (hessian + glm::transpose(hessian));
     return value;
 }
 

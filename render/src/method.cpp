@@ -1,35 +1,25 @@
 #include <ivis/render/method.h>
 
-#include <ivis/core/errors.h>
-
 namespace ivis::render {
 
-std::vector<std::string> methodNames()
+std::string ParameterSpec::option() const
 {
-    return {"front", "backfaces", "neugebauer", "mirror", "inversevis", "inversevis-adaptive"};
+    std::string option = "--" + key;
+    for (char& c : option)
+        if (c == '_') c = '-';
+    return option;
 }
 
-const char* toString(Method method)
+const ParameterSpec* MethodInfo::parameter(const std::string& key) const
 {
-    switch (method) {
-    case Method::Front: return "front";
-    case Method::Backfaces: return "backfaces";
-    case Method::Neugebauer: return "neugebauer";
-    case Method::Mirror: return "mirror";
-    case Method::InverseVis: return "inversevis";
-    case Method::InverseVisAdaptive: return "inversevis-adaptive";
-    }
-    return "unknown";
+    for (const ParameterSpec& spec : parameters)
+        if (spec.key == key) return &spec;
+    return nullptr;
 }
 
-Method parseMethod(const std::string& name)
+std::unique_ptr<IndirectMap> Method::indirectMap(const RenderScene& /*scene*/, const core::CameraFrame& /*frame*/) const
 {
-    const std::vector<std::string> names = methodNames();
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return Method(i);
-    std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("unknown method '" + name + "' (known: " + known + ")");
+    return nullptr;
 }
 
 }  // namespace ivis::render

@@ -28,7 +28,6 @@ std::vector<CurvedRayEnd> sweep(float alpha, std::vector<glm::vec3>* seeds = nul
     const auto& fixture = test::sphereScene();
     auto sampler = fixture.scene->distance().sampler();
     CurvedRayParams params;
-    params.alpha = alpha;
     const float eps = landingEpsilon(params, fixture.scene->distance());
     std::vector<CurvedRayEnd> ends;
     const glm::vec3 eye(0.0f, 0.0f, 2.5f);

@@ -4,7 +4,9 @@
 #include "render/scene_fixture.h"
 
 #include <ivis/core/procedural_scenes.h>
-#include <ivis/render/quadratic_mirror.h>
+#include <ivis/render/method_registry.h>
+#include <ivis/render/mirror_method.h>
+#include <ivis/render/ring_map_method.h>
 #include <ivis/render/screen_map.h>
 
 #include <glm/geometric.hpp>
@@ -104,19 +106,17 @@ const View kViews[] = {{90, 0}, {63, 37}, {128, 212}, {20, 300}};
 
 /// Compares the direct pixels of @a method with the exhaustive cast at 96x96 from the first
 /// @a viewCount views.
-void expectDirectPixelsMatchBruteForce(const test::SceneFixture& fixture, Method method, const std::string& name,
+void expectDirectPixelsMatchBruteForce(const test::SceneFixture& fixture, const std::string& method, const std::string& name,
                                        int viewCount = 4)
 {
     const RenderScene& scene = *fixture.scene;
     const core::TriangleMesh& mesh = scene.mesh();
-    const bool backOnly = method == Method::Backfaces;
+    const bool backOnly = method == "backfaces";
     const core::Bounds3 box = core::bounds(mesh);
     for (int v = 0; v < viewCount; ++v) {
         const View& view = kViews[v];
         const core::CameraFrame frame(core::Camera::fromAngles(view.theta, view.phi), 96, 96);
-        MethodParams params;
-        params.method = method;
-        const ScreenMap screen(scene, frame, params);
+        const ScreenMap screen(scene, frame, makeMethod(method));
         auto sampler = scene.distance().sampler();
         int eitherDirect = 0, bothDirect = 0, regionMismatch = 0, triangleMismatch = 0;
         for (int y = 0; y < 96; ++y)
@@ -126,7 +126,7 @@ void expectDirectPixelsMatchBruteForce(const test::SceneFixture& fixture, Method
                 const BruteHit hit = castAll(mesh, ray.origin, ray.direction, backOnly, &box);
                 const bool mapDirect = m.region == Region::Direct, bruteDirect = hit.triangle >= 0;
                 if (!mapDirect && !bruteDirect) {
-                    if (method == Method::Front || method == Method::Backfaces) {
+                    if (method == "front" || method == "backfaces") {
                         EXPECT_EQ(m.region, Region::Background);
                     }
                     continue;
@@ -160,20 +160,20 @@ void expectDirectPixelsMatchBruteForce(const test::SceneFixture& fixture, Method
 
 TEST(ScreenMap, DirectPixelsMatchExhaustiveRayCastOnSpheres)
 {
-    expectDirectPixelsMatchBruteForce(coarseSphere(), Method::Front, "sphere(2)");
-    expectDirectPixelsMatchBruteForce(smallSphere(), Method::Front, "sphere(3)");
+    expectDirectPixelsMatchBruteForce(coarseSphere(), "front", "sphere(2)");
+    expectDirectPixelsMatchBruteForce(smallSphere(), "front", "sphere(3)");
 }
 
 TEST(ScreenMap, DirectPixelsMatchExhaustiveRayCastOnTorus)
 {
-    expectDirectPixelsMatchBruteForce(smallTorus(), Method::Front, "torus");
+    expectDirectPixelsMatchBruteForce(smallTorus(), "front", "torus");
 }
 
 TEST(ScreenMap, DirectPixelsMatchExhaustiveRayCastOnVesselTree)
 {
     // The indirect methods take the same straight-ray path for I+.
-    expectDirectPixelsMatchBruteForce(smallTree(), Method::Front, "tree");
-    expectDirectPixelsMatchBruteForce(smallTree(), Method::InverseVis, "tree/inversevis", 1);
+    expectDirectPixelsMatchBruteForce(smallTree(), "front", "tree");
+    expectDirectPixelsMatchBruteForce(smallTree(), "inversevis", "tree/inversevis", 1);
 }
 
 TEST(ScreenMap, BackfacesShowsOnlyTrianglesFacingAway)
@@ -182,9 +182,7 @@ TEST(ScreenMap, BackfacesShowsOnlyTrianglesFacingAway)
         const RenderScene& scene = *fixture->scene;
         for (const View& view : kViews) {
             const core::CameraFrame frame(core::Camera::fromAngles(view.theta, view.phi), 64, 64);
-            MethodParams params;
-            params.method = Method::Backfaces;
-            const ScreenMap screen(scene, frame, params);
+            const ScreenMap screen(scene, frame, makeMethod("backfaces"));
             auto sampler = scene.distance().sampler();
             int direct = 0;
             for (int y = 0; y < 64; ++y)
@@ -201,8 +199,8 @@ TEST(ScreenMap, BackfacesShowsOnlyTrianglesFacingAway)
         }
     }
     // And the back face shown is the FIRST one along the ray.
-    expectDirectPixelsMatchBruteForce(smallSphere(), Method::Backfaces, "sphere(3)/backfaces");
-    expectDirectPixelsMatchBruteForce(smallTree(), Method::Backfaces, "tree/backfaces", 2);
+    expectDirectPixelsMatchBruteForce(smallSphere(), "backfaces", "sphere(3)/backfaces");
+    expectDirectPixelsMatchBruteForce(smallTree(), "backfaces", "tree/backfaces", 2);
 }
 
 /// Barycentric interpolation of the vertex values at the brute-force closest point to @a p.
@@ -220,7 +218,7 @@ float scalarByHand(const core::SurfaceField& field, const test::BruteForceCloses
 /// Every indirect pixel of @a params at 64x64: P on the surface, its scalar the interpolated one,
 /// plus the method's own geometry (mirror: P lies along the mirror normal; ring: P is the first
 /// hit of the ring ray from the centre).
-void expectIndirectPointsOnSurface(const test::SceneFixture& fixture, const MethodParams& params,
+void expectIndirectPointsOnSurface(const test::SceneFixture& fixture, const MethodPtr& method,
                                    const core::Camera& camera, const std::string& name)
 {
     const RenderScene& scene = *fixture.scene;
@@ -231,7 +229,10 @@ void expectIndirectPointsOnSurface(const test::SceneFixture& fixture, const Meth
     const auto [lo, hi] = core::finiteRange(field.values);
     const double tolerance = 1e-5 * std::max(1.0, double(hi - lo));
     const core::CameraFrame frame(camera, 64, 64);
-    const ScreenMap screen(scene, frame, params);
+    const ScreenMap screen(scene, frame, method);
+    const auto* mirror = dynamic_cast<const MirrorMethod*>(method.get());
+    const auto* ring = dynamic_cast<const RingMapMethod*>(method.get());
+    const RingLayout rings = ring ? layoutRings(frame, scene.mesh(), ring->params()) : RingLayout{};
     auto sampler = scene.distance().sampler();
     int indirect = 0;
     for (int y = 0; y < 64; ++y)
@@ -259,17 +260,17 @@ void expectIndirectPointsOnSurface(const test::SceneFixture& fixture, const Meth
             EXPECT_NEAR(glm::length(m.arrival), 1.0f, 1e-5f) << where;
 
             const core::CameraRay ray = frame.ray(x + 0.5, y + 0.5);
-            if (params.method == Method::Mirror) {
+            if (mirror) {
                 MirrorHit hit;
-                ASSERT_TRUE(intersectMirror(frame, ray, params.mirror, hit)) << where;
+                ASSERT_TRUE(intersectMirror(frame, ray, mirror->params(), hit)) << where;
                 const glm::dvec3 n(hit.normal), offset = p - glm::dvec3(hit.point);
                 EXPECT_LT(glm::length(offset - glm::dot(offset, n) * n), voxel) << where << ": off the mirror ray";
                 EXPECT_GT(glm::dot(offset, n), 0.0) << where;
                 EXPECT_LT(glm::length(m.arrival - hit.normal), 1e-5f) << where;
-            } else if (params.method == Method::Neugebauer) {
+            } else if (ring) {
                 glm::vec3 direction;
-                ASSERT_TRUE(ringRayDirection(screen.rings(), frame, {x + 0.5, y + 0.5}, direction)) << where;
-                const BruteHit hit = castAll(scene.mesh(), glm::dvec3(params.ring.centre), glm::dvec3(direction));
+                ASSERT_TRUE(ringRayDirection(rings, frame, {x + 0.5, y + 0.5}, direction)) << where;
+                const BruteHit hit = castAll(scene.mesh(), glm::dvec3(ring->params().centre), glm::dvec3(direction));
                 ASSERT_GE(hit.triangle, 0) << where;
                 EXPECT_LT(glm::length(hit.point - p), 1e-4) << where << ": not the first hit of the ring ray";
             }
@@ -281,18 +282,14 @@ TEST(ScreenMap, IndirectPointsLieOnTheSphereWithInterpolatedScalar)
 {
     const auto& fixture = test::sphereScene();
     for (const core::Camera& camera : {core::Camera::fromAngles(90, 0), core::Camera::fromAngles(50, 120)}) {
-        MethodParams params;
-        params.method = Method::InverseVis;
-        expectIndirectPointsOnSurface(fixture, params, camera, "sphere/inversevis");
-        params.method = Method::Mirror;
-        params.mirror.w = {0.3f, 0.3f, 0.0f, 0.0f, 0.0f};
-        expectIndirectPointsOnSurface(fixture, params, camera, "sphere/mirror(0.3,0.3)");
-        params.mirror.w = {0.4f, 0.2f, 0.1f, 0.05f, -0.05f};
-        expectIndirectPointsOnSurface(fixture, params, camera, "sphere/mirror(general)");
-        params.method = Method::Neugebauer;
-        expectIndirectPointsOnSurface(fixture, params, camera, "sphere/neugebauer");
-        params.ring.centre = {0.1f, -0.15f, 0.05f};
-        expectIndirectPointsOnSurface(fixture, params, camera, "sphere/neugebauer(off-centre)");
+        expectIndirectPointsOnSurface(fixture, makeMethod("inversevis"), camera, "sphere/inversevis");
+        expectIndirectPointsOnSurface(fixture, makeMethod("mirror", {{"mirror_w", {0.3f, 0.3f, 0.0f, 0.0f, 0.0f}}}),
+                                      camera, "sphere/mirror(0.3,0.3)");
+        expectIndirectPointsOnSurface(fixture, makeMethod("mirror", {{"mirror_w", {0.4f, 0.2f, 0.1f, 0.05f, -0.05f}}}),
+                                      camera, "sphere/mirror(general)");
+        expectIndirectPointsOnSurface(fixture, makeMethod("neugebauer"), camera, "sphere/neugebauer");
+        expectIndirectPointsOnSurface(fixture, makeMethod("neugebauer", {{"ring_centre", {0.1f, -0.15f, 0.05f}}}),
+                                      camera, "sphere/neugebauer(off-centre)");
     }
 }
 
@@ -300,24 +297,18 @@ TEST(ScreenMap, IndirectPointsLieOnTheVesselTreeWithInterpolatedScalar)
 {
     const auto& fixture = test::vesselScene();
     const core::Camera camera = core::Camera::fromAngles(90, 0);
-    MethodParams params;
-    params.method = Method::InverseVis;
-    expectIndirectPointsOnSurface(fixture, params, camera, "tree/inversevis");
-    params.method = Method::Mirror;
-    params.mirror.w = {0.3f, 0.3f, 0.0f, 0.0f, 0.0f};
-    expectIndirectPointsOnSurface(fixture, params, camera, "tree/mirror(0.3,0.3)");
-    params.method = Method::Neugebauer;
-    expectIndirectPointsOnSurface(fixture, params, camera, "tree/neugebauer");
+    expectIndirectPointsOnSurface(fixture, makeMethod("inversevis"), camera, "tree/inversevis");
+    expectIndirectPointsOnSurface(fixture, makeMethod("mirror", {{"mirror_w", {0.3f, 0.3f, 0.0f, 0.0f, 0.0f}}}), camera,
+                                  "tree/mirror(0.3,0.3)");
+    expectIndirectPointsOnSurface(fixture, makeMethod("neugebauer"), camera, "tree/neugebauer");
 }
 
 TEST(ScreenMap, FrontAndBackfacesLaunchNoIndirectRays)
 {
     const auto& fixture = smallSphere();
     const core::CameraFrame frame(core::Camera::fromAngles(90, 0), 32, 32);
-    for (Method method : {Method::Front, Method::Backfaces}) {
-        MethodParams params;
-        params.method = method;
-        const ScreenMap screen(*fixture.scene, frame, params);
+    for (const char* method : {"front", "backfaces"}) {
+        const ScreenMap screen(*fixture.scene, frame, makeMethod(method));
         auto sampler = fixture.scene->distance().sampler();
         for (int y = 0; y < 32; ++y)
             for (int x = 0; x < 32; ++x) {

@@ -7,14 +7,15 @@
 #include <ivis/render/distance_field.h>
 
 #include <glm/geometric.hpp>
-#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 namespace ivis::render {
 
+/// @brief Largest useful alpha: above about 4 the curved rays escape.
+inline constexpr float kMaxAlpha = 4.0f;
+
 /// @brief Parameters of the curved rays (paper defaults).
 struct CurvedRayParams {
-    float alpha = 0.5f;         ///< scale of the initial velocity
     float stepSize = 0.1f;      ///< symplectic Euler step h
     float hullOffset = 0.4f;    ///< phi0: the hull is {phi = phi0}
     float landingEpsilon = 0.0f;  ///< land when phi < eps; 0 = half a fine voxel
@@ -73,55 +74,15 @@ CurvedRayEnd integrateCurvedRay(FieldSampler& sampler, const glm::vec3& seed, co
     return end;
 }
 
-/// @brief A curved ray's end and the derivative of its end position with respect to a scalar
-///        parameter of the initial conditions (forward mode, exact for the discrete steps).
-struct CurvedRayTangent {
-    CurvedRayEnd end;
-    glm::vec3 dPosition{0.0f};  ///< d(end position) / d(parameter)
-};
+/// @brief Where a curved ray counts as escaped: just below the field's reach (beyond it phi is
+///        only a lower bound).
+inline float escapeDistance(const DistanceField& field) { return 0.999f * field.reach(); }
 
-/// @brief integrateCurvedRay carrying the tangent (dp, dv) of one parameter through every step:
-///        dv' = dv - h H dp;  dp' = dp + h (grad phi . dp) u + h phi (I - u u^T) dv' / |v'|,
-///        u = v'/|v'|, with H the Hessian of the sampled phi. For alpha, dp0 = 0 and dv0 = v0/alpha.
-/// @interface FieldSampler: float phiGradientHessian(const glm::vec3&, glm::vec3&, glm::mat3&);
-template <typename FieldSampler>
-CurvedRayTangent integrateCurvedRayTangent(FieldSampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
-                                           const glm::vec3& dVelocity, const CurvedRayParams& params,
-                                           float epsilon, float escapeDistance)
-{
-    CurvedRayTangent result;
-    glm::vec3 p = seed, v = velocity, dp(0.0f), dv = dVelocity, gradient;
-    glm::mat3 hessian;
-    const float h = params.stepSize;
-    for (int step = 0; step < params.maxSteps; ++step) {
-        const float phi = sampler.phiGradientHessian(p, gradient, hessian);
-        if (phi < epsilon) {
-            result.end.landed = true;
-            break;
-        }
-        if (phi >= escapeDistance) break;
-        v -= h * gradient;
-        dv -= h * (hessian * dp);
-        const float speed = glm::length(v);
-        if (!(speed > 0.0f)) break;
-        const glm::vec3 u = v / speed;
-        const glm::vec3 du = (dv - glm::dot(u, dv) * u) / speed;
-        dp += h * glm::dot(gradient, dp) * u + h * phi * du;
-        p += h * phi * u;
-        ++result.end.steps;
-    }
-    result.end.position = p;
-    result.end.velocity = v;
-    result.dPosition = dp;
-    return result;
-}
-
-/// @brief integrateCurvedRay on a volume's distance field; rays escape where phi reaches the
-///        field's reach (beyond it phi is only a lower bound).
+/// @brief integrateCurvedRay on a volume's distance field, escaping at escapeDistance().
 inline CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
                                    const CurvedRayParams& params, float epsilon)
 {
-    return integrateCurvedRay(sampler, seed, velocity, params, epsilon, 0.999f * sampler.field().reach());
+    return integrateCurvedRay(sampler, seed, velocity, params, epsilon, escapeDistance(sampler.field()));
 }
 
 /// @brief The landing threshold actually used: params.landingEpsilon or half a fine voxel.

@@ -7,7 +7,6 @@
 #include <ivis/render/dense_grid.h>
 #include <ivis/vdb/surface_volume.h>
 
-#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 namespace ivis::render {
@@ -27,10 +26,6 @@ public:
         float phi(const glm::vec3& p);
         /// @brief Trilinear phi at p and the analytic gradient of its trilinear cell.
         float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
-        /// @brief phi and gradient as phiAndGradient, and the Hessian of phi by central differences
-        ///        of the gradient over one voxel of the grid that serves p. (The trilinear gradient
-        ///        jumps across cell faces, so the in-cell Hessian would miss the field's curvature.)
-        float phiGradientHessian(const glm::vec3& p, glm::vec3& gradient, glm::mat3& hessian);
         /// @brief Closest triangle stored at the fine voxel nearest to p (-1 outside the band).
         int nearestTriangle(const glm::vec3& p);
         /// @brief The field this sampler reads.
@@ -56,6 +51,8 @@ public:
     float voxelSize() const { return mVoxelSize; }
     /// @brief Exterior distance up to which phi is exact; beyond it phi is clamped to this value.
     float reach() const { return mReach; }
+    /// @brief Voxel size of the grid that serves a sample whose value is @a phi (fine band or far field).
+    float servingVoxelSize(float phi) const { return mHasFineBand && phi <= mFineTrustBelow ? mVoxelSize : mFar.voxelSize(); }
     /// @brief Whether phi is an unsigned distance (open mesh).
     bool isUnsigned() const { return mVolume.unsignedDistance; }
     /// @brief The volume it samples.

@@ -1,78 +1,103 @@
 /// @file method.h
-/// @brief The visualisation methods and their parameters.
+/// @brief A visualisation method as one object (as pbrt-v4's integrators): its description (name,
+///        help, parameters with defaults and bounds, how the optimiser moves them) and, per view,
+///        the map of the pixels that miss the surface onto the surface.
+/// @note Methods are immutable and shared (std::shared_ptr<const Method>); they are created by
+///       name from parameter values with makeMethod() (method_registry.h).
 #pragma once
 
-#include <ivis/render/curved_ray.h>
+#include <ivis/core/camera.h>
+#include <ivis/core/triangle_bvh.h>
+#include <ivis/render/pixel_mapping.h>
+#include <ivis/render/render_scene.h>
 
-#include <glm/vec3.hpp>
-
-#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace ivis::render {
 
-/// @brief How the pixels that miss the surface are used.
-enum class Method {
-    Front,       ///< plain rendering (paper Fig. 1a)
-    Backfaces,   ///< only faces turned away from the camera (paper Fig. 1b)
-    Neugebauer,  ///< ring map of Neugebauer et al. 2009 plus a back-side disc on the left
-    Mirror,      ///< quadratic height-field mirror behind the object
-    InverseVis,  ///< curved rays from the hull onto the hidden surface
-    InverseVisAdaptive  ///< InverseVis with alpha varying across the ring (not in the paper)
+class CurvedRayMethod;
+class Method;
+
+/// @brief One named parameter of a method.
+struct ParameterSpec {
+    std::string key;              ///< JSON key; the command-line option is --key with '_' written '-'
+    std::string help;             ///< one line for --help and the viewer's tooltip
+    std::vector<float> defaults;  ///< one value per component
+    float lo = 0.0f;              ///< lower bound of every component
+    float hi = 0.0f;              ///< upper bound of every component
+    bool optimised = false;       ///< moved by the parameter ascent
+    bool integer = false;         ///< takes whole numbers only
+
+    /// @brief The command-line option: "--" and the key with '_' written '-'.
+    std::string option() const;
 };
 
-/// @brief Method from its command-line name; throws InputError listing the names.
-Method parseMethod(const std::string& name);
-/// @brief Command-line name of a method ("front", "backfaces", "neugebauer", "mirror", "inversevis",
-///        "inversevis-adaptive").
-const char* toString(Method method);
-/// @brief All method names, in enum order.
-std::vector<std::string> methodNames();
+/// @brief Values of a method's parameters by key, one float per component.
+using ParameterValues = std::map<std::string, std::vector<float>>;
 
-/// @brief Ring map parameters (lengths in units of the image half-height).
-struct RingParams {
-    glm::vec3 centre{0.0f};      ///< projection centre c (normalised coordinates)
-    float ringWidth = 0.3f;      ///< r2 - r1
-    float silhouetteGap = 0.02f; ///< r1 = silhouette radius around c_D + this gap
-    float backRadius = 0.3f;     ///< radius of the back-side disc on the left
+/// @brief The line search of a method's parameter ascent.
+struct LineSearch {
+    bool unitDirection = false;  ///< search along the unit gradient instead of the gradient
+    double maxStep = 0.25;       ///< interval [0, maxStep] of the step
+    double tolerance = 0.01;     ///< final bracket length
 };
 
-/// @brief Quadratic mirror z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y in eye space.
-struct MirrorParams {
-    /// w1..w5; the default is a shallow bowl: a flat mirror shows nothing and has zero gradient.
-    std::array<float, 5> w{0.3f, 0.3f, 0.0f, 0.0f, 0.0f};
-    float distanceBehind = 1.0f;  ///< mirror apex behind the object's centre (normalised units)
-    int maxSteps = 300;           ///< sphere-tracing steps from the mirror
+/// @brief Everything the command line, the JSON writer, the optimiser and the viewer know of a method.
+struct MethodInfo {
+    std::string name;                     ///< command-line name, e.g. "inversevis"
+    std::string help;                     ///< one line for --help
+    std::vector<ParameterSpec> parameters;
+    /// The scalar energy's gradient is analytic (tangent-linear curved rays); otherwise, and for
+    /// the visibility energy always, the ascent uses forward differences.
+    bool tangentLinearGradient = false;
+    /// The method's own line search; none: the ascent's default (the paper's [0, 0.25], 0.01).
+    std::optional<LineSearch> lineSearch;
+    /// A one-component optimised parameter whose range the ascent may scan before it starts
+    /// (AscentOptions::scanSamples); empty: none.
+    std::string scannedParameter;
+    /// Creates the method from complete, validated values.
+    std::function<std::shared_ptr<const Method>(const ParameterValues&)> create;
+
+    /// @brief The parameter named @a key, or null.
+    const ParameterSpec* parameter(const std::string& key) const;
 };
 
-/// @brief Alpha of the adaptive InverseVis as a function of where a pixel lies across the ring:
-///        alpha(c) = a0 + a1 c + a2 c^2, clamped to [0, maxAlpha], with c = r . grad phi / |grad phi|
-///        at the hull seed (0 where the view ray grazes the hull, growing toward the silhouette).
-struct AlphaProfile {
-    /// a0, a1, a2; the default bends the rays near the silhouette furthest round the back.
-    std::array<float, 3> coefficients{0.0f, 3.0f, 3.0f};
-    float maxAlpha = 4.0f;  ///< above ~4 the curved rays escape
-    int retries = 2;        ///< a ray that does not land is relaunched with half its alpha this often
-
-    /// @brief alpha for the seed alignment @a c.
-    float at(float c) const
-    {
-        const float alpha = coefficients[0] + c * (coefficients[1] + c * coefficients[2]);
-        return alpha < 0.0f ? 0.0f : alpha > maxAlpha ? maxAlpha : alpha;
-    }
+/// @brief The per-view part of a method: where the indirect ray of a pixel lands.
+/// @warning map() is const and thread-safe given one DistanceField::Sampler per thread.
+class IndirectMap {
+public:
+    virtual ~IndirectMap() = default;
+    /// @brief What the indirect ray of continuous pixel position (x, y) shows (its view ray missed).
+    virtual PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const = 0;
 };
 
-/// @brief A method and every parameter it reads.
-struct MethodParams {
-    Method method = Method::InverseVis;
-    CurvedRayParams curved;
-    AlphaProfile profile;  ///< read by InverseVisAdaptive instead of curved.alpha
-    RingParams ring;
-    MirrorParams mirror;
+/// @brief A visualisation method with its parameter values.
+class Method {
+public:
+    virtual ~Method() = default;
+    /// @brief The method's description (shared by all its instances).
+    virtual const MethodInfo& info() const = 0;
+    /// @brief Every parameter's value, keyed as info().parameters.
+    virtual ParameterValues values() const = 0;
+    /// @brief Which faces the straight view rays see.
+    virtual core::FaceFilter directFaces() const { return core::FaceFilter::Any; }
+    /// @brief The map of the pixels that miss the surface for one view; null when they stay background.
+    virtual std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const;
+    /// @brief This method as a curved-ray method, or null when its indirect rays are not curved.
+    virtual const CurvedRayMethod* curved() const { return nullptr; }
 
+    /// @brief The command-line name.
+    const std::string& name() const { return info().name; }
     /// @brief True for the methods that trace curved rays from the hull.
-    bool curvedRays() const { return method == Method::InverseVis || method == Method::InverseVisAdaptive; }
+    bool curvedRays() const { return curved() != nullptr; }
 };
+
+/// @brief Shared, immutable method.
+using MethodPtr = std::shared_ptr<const Method>;
 
 }  // namespace ivis::render

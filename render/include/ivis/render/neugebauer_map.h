@@ -8,12 +8,19 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/triangle_mesh.h>
-#include <ivis/render/method.h>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace ivis::render {
+
+/// @brief Ring map parameters (lengths in units of the image half-height).
+struct RingParams {
+    glm::vec3 centre{0.0f};      ///< projection centre c (normalised coordinates)
+    float ringWidth = 0.3f;      ///< r2 - r1
+    float silhouetteGap = 0.02f; ///< r1 = silhouette radius around c_D + this gap
+    float backRadius = 0.3f;     ///< radius of the back-side disc on the left
+};
 
 /// @brief Ring radii and centres in pixels.
 struct RingLayout {

@@ -6,11 +6,20 @@
 #pragma once
 
 #include <ivis/core/camera.h>
-#include <ivis/render/method.h>
 
 #include <glm/vec3.hpp>
 
+#include <array>
+
 namespace ivis::render {
+
+/// @brief Quadratic mirror z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y in eye space.
+struct MirrorParams {
+    /// w1..w5; the default is a shallow bowl: a flat mirror shows nothing and has zero gradient.
+    std::array<float, 5> w{0.3f, 0.3f, 0.0f, 0.0f, 0.0f};
+    float distanceBehind = 1.0f;  ///< mirror apex behind the object's centre (normalised units)
+    int maxSteps = 300;           ///< sphere-tracing steps from the mirror
+};
 
 /// @brief Where a camera ray meets the mirror, and the mirror's unit normal there (world space).
 struct MirrorHit {

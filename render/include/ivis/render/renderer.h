@@ -7,7 +7,7 @@
 #include <ivis/core/camera.h>
 #include <ivis/core/image.h>
 #include <ivis/core/interrupter.h>
-#include <ivis/render/method.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/render_scene.h>
 #include <ivis/render/shading.h>
 
@@ -21,7 +21,7 @@ struct RenderOptions {
     int width = 1000;
     int height = 1000;
     int samplesPerPixel = 1;  ///< supersampling: a fixed R2 pattern per pixel, the first at its centre
-    MethodParams method;
+    MethodPtr method = makeMethod("inversevis");  ///< the method and its parameters
     ShadingOptions shading;
     bool outline = true;      ///< dark outline around the directly visible object
     bool legend = true;       ///< colour bar with the scalar's name and range

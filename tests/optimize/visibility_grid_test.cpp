@@ -1,14 +1,14 @@
 // The visibility measure's marked voxels and its ceiling, against brute force on a flat square
 // whose marked shell is two voxels thick while the square crosses only one layer of it.
 #include <ivis/core/triangle_bvh.h>
-#include <ivis/render/visibility_grid.h>
+#include <ivis/optimize/visibility_grid.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace ivis::render {
+namespace ivis::optimize {
 namespace {
 
 TEST(VisibilityGrid, MarkedAndReachableVoxelsOfASquareMatchBruteForce)
@@ -39,4 +39,4 @@ TEST(VisibilityGrid, MarkedAndReachableVoxelsOfASquareMatchBruteForce)
 }
 
 }  // namespace
-}  // namespace ivis::render
+}  // namespace ivis::optimize

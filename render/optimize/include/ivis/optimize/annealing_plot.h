@@ -4,11 +4,11 @@
 #pragma once
 
 #include <ivis/core/image.h>
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
-namespace ivis::render {
+namespace ivis::optimize {
 
 /// @brief A 2 size x size picture: front hemisphere left, back hemisphere right (seen from behind).
 core::Image plotVisitedViews(const AnnealingResult& result, int size = 512);
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

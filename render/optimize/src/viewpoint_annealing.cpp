@@ -1,12 +1,13 @@
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
 #include <ivis/core/errors.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <random>
 
-namespace ivis::render {
+namespace ivis::optimize {
 namespace {
 
 /// A uniform number in [-1, 1] from the generator (portable: no std distribution).
@@ -31,14 +32,9 @@ void wrapAngles(double& theta, double& phi)
 
 }  // namespace
 
-core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg)
-{
-    return core::Camera::fromAngles(thetaDeg, phiDeg, core::kCameraDistance, fovYDeg);
-}
-
-AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodParams& start,
+AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options, const AscentOptions& ascent,
-                                const EnergyEvaluator* ascentEvaluator)
+                                const EnergyEvaluator* ascentEvaluator, core::Interrupter* interrupter)
 {
     if (options.steps < 0 || !(options.cooling > 0.0 && options.cooling <= 1.0) || !(options.startTemperature > 0.0))
         throw ValueError("annealing needs steps >= 0, 0 < cooling <= 1 and a positive start temperature");
@@ -46,23 +42,27 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
     std::mt19937_64 random(options.seed);
     AnnealingResult result;
 
-    auto visit = [&](double theta, double phi, const MethodParams& params) {
-        const core::Camera camera = viewCamera(theta, phi, options.fovYDeg);
+    auto cameraAt = [&](double theta, double phi) {
+        return core::Camera::fromAngles(theta, phi, core::kCameraDistance, options.fovYDeg);
+    };
+    auto visit = [&](double theta, double phi, const render::MethodPtr& method) {
+        const core::Camera camera = cameraAt(theta, phi);
         const AscentResult optimised =
-            optimizeParameters(ascentEvaluator ? *ascentEvaluator : evaluator, camera, params, ascent);
+            optimizeParameters(ascentEvaluator ? *ascentEvaluator : evaluator, camera, method, ascent, interrupter);
         result.evaluations += optimised.evaluations;
         VisitedView view;
         view.thetaDeg = theta;
         view.phiDeg = phi;
-        view.params = optimised.params;
+        view.method = optimised.method;
         view.value = optimised.value;
         if (ascentEvaluator) {
-            view.value = evaluator.evaluate(camera, optimised.params);
+            view.value = evaluator.evaluate(camera, optimised.method);
             ++result.evaluations;
         }
         return view;
     };
 
+    if (interrupter) interrupter->start("viewpoint annealing");
     VisitedView current = visit(options.startThetaDeg, options.startPhiDeg, start);
     current.accepted = true;
     result.visited.push_back(current);
@@ -71,7 +71,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
         double theta = current.thetaDeg + options.neighbourhoodDeg * symmetricUniform(random);
         double phi = current.phiDeg + options.neighbourhoodDeg * symmetricUniform(random);
         wrapAngles(theta, phi);
-        VisitedView proposal = visit(theta, phi, current.params);
+        VisitedView proposal = visit(theta, phi, current.method);
         const double gain = proposal.value.energy - current.value.energy;
         const double draw = 0.5 * (symmetricUniform(random) + 1.0);
         proposal.accepted = gain > 0.0 || draw < std::exp(options.acceptanceScale * gain / temperature);
@@ -79,17 +79,20 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
         if (proposal.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
         if (proposal.accepted) current = proposal;
         temperature *= options.cooling;
+        if (interrupter && interrupter->wasInterrupted(100 * (step + 1) / std::max(1, options.steps)))
+            throw Cancelled("viewpoint annealing cancelled");
     }
     if (ascentEvaluator) {  // the winner's parameters, ascended on the full energy
         VisitedView& best = result.visited[result.best];
         const AscentResult polished =
-            optimizeParameters(evaluator, viewCamera(best.thetaDeg, best.phiDeg, options.fovYDeg), best.params, ascent);
+            optimizeParameters(evaluator, cameraAt(best.thetaDeg, best.phiDeg), best.method, ascent, interrupter);
         result.evaluations += polished.evaluations;
-        best.params = polished.params;
+        best.method = polished.method;
         best.value = polished.value;
     }
+    if (interrupter) interrupter->end();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
     return result;
 }
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

@@ -1,4 +1,4 @@
-#include <ivis/render/annealing_plot.h>
+#include <ivis/optimize/annealing_plot.h>
 
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ivis::render {
+namespace ivis::optimize {
 namespace {
 
 /// Fills a disc (or a ring of the given width) of colour @a colour.
@@ -64,4 +64,4 @@ core::Image plotVisitedViews(const AnnealingResult& result, int size)
     return image;
 }
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

@@ -10,34 +10,35 @@
 
 #include <vector>
 
-namespace ivis::render {
+namespace ivis::optimize {
 
 /// @brief A pixel whose view ray misses the surface.
 struct MissedPixel {
     float x = 0.0f, y = 0.0f;  ///< continuous pixel position
-    CurvedRayStart start;      ///< the curved ray's start (curved-ray methods only)
+    render::CurvedRayStart start;      ///< the curved ray's start (curved-ray methods only)
 };
 
 /// @brief Per-view samples at resolution^2 pixel centres, in row order.
 class ViewSamples {
 public:
     /// @brief Maps every pixel's view ray; for curved-ray methods keeps only the pixels that meet the hull.
-    ViewSamples(const RenderScene& scene, const core::Camera& camera, int resolution, const MethodParams& params);
+    ViewSamples(const render::RenderScene& scene, const core::Camera& camera, int resolution,
+                const render::MethodPtr& method);
 
-    /// @brief True when @a params differ from the preparing ones only in what the samples do not depend on.
-    bool compatibleWith(const MethodParams& params) const;
+    /// @brief True when @a method differs from the preparing one only in its optimised parameters.
+    bool compatibleWith(const render::Method& method) const;
 
     const core::CameraFrame& frame() const { return mFrame; }
     /// @brief Surface points of the direct pixels.
-    const std::vector<SurfacePoint>& direct() const { return mDirect; }
+    const std::vector<render::SurfacePoint>& direct() const { return mDirect; }
     /// @brief Pixels that may show the surface indirectly.
     const std::vector<MissedPixel>& missed() const { return mMissed; }
 
 private:
     core::CameraFrame mFrame;
-    MethodParams mParams;
-    std::vector<SurfacePoint> mDirect;
+    render::MethodPtr mMethod;
+    std::vector<render::SurfacePoint> mDirect;
     std::vector<MissedPixel> mMissed;
 };
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

@@ -6,16 +6,21 @@
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/render/energy.h>
-#include <ivis/render/parameter_optimizer.h>
-#include <ivis/render/viewpoint_annealing.h>
+#include <ivis/optimize/energy.h>
+#include <ivis/optimize/parameter_optimizer.h>
+#include <ivis/optimize/curved_ray_gradient.h>
+#include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_registry.h>
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
-namespace ivis::render {
+namespace ivis::optimize {
 namespace {
+
+using namespace render;
 
 EnergyOptions scalarOptions(const core::SurfaceField& field, int resolution)
 {
@@ -34,13 +39,12 @@ EnergyOptions visibilityOptions(int resolution)
     return options;
 }
 
-MethodParams adaptive(float a0, float a1, float a2)
+MethodPtr adaptive(float a0, float a1, float a2)
 {
-    MethodParams params;
-    params.method = Method::InverseVisAdaptive;
-    params.profile.coefficients = {a0, a1, a2};
-    return params;
+    return makeMethod("inversevis-adaptive", {{"alpha_profile", {a0, a1, a2}}});
 }
+
+MethodPtr faithful(float alpha = 0.5f) { return makeMethod("inversevis", {{"alpha", {alpha}}}); }
 
 TEST(GoldenSection, FindsTheMaximumOfAParabolaWithinTheTolerance)
 {
@@ -61,17 +65,14 @@ TEST(ViewSamples, ReusedSamplesGiveTheFreshEnergyForOtherParameters)
         options.kind = kind;
         const EnergyEvaluator evaluator(*fixture.scene, options);
         const core::Camera camera = core::Camera::fromAngles(70.0, 40.0);
-        MethodParams first, second;
-        first.curved.alpha = 0.3f;
-        second.curved.alpha = 0.9f;
+        const MethodPtr first = faithful(0.3f), second = faithful(0.9f);
         const ViewSamples samples(*fixture.scene, camera, options.resolution, first);
         const EnergyValue reused = evaluator.evaluate(samples, second);
         const EnergyValue fresh = evaluator.evaluate(camera, second);
         EXPECT_EQ(reused.energy, fresh.energy);
         EXPECT_EQ(reused.pixelsIndirect, fresh.pixelsIndirect);
         EXPECT_NE(reused.energy, evaluator.evaluate(samples, first).energy);
-        MethodParams otherHull = second;
-        otherHull.curved.hullOffset = 0.3f;
+        const MethodPtr otherHull = withValues(*second, {{"hull_offset", {0.3f}}});
         EXPECT_THROW(evaluator.evaluate(samples, otherHull), ValueError);
     }
 }
@@ -80,9 +81,7 @@ TEST(AdaptiveInverseVis, ConstantProfileIsTheFaithfulMethod)
 {
     const auto& fixture = test::vesselScene();
     const core::CameraFrame frame(core::Camera::fromAngles(90.0, 0.0), 80, 80);
-    MethodParams faithful;
-    faithful.curved.alpha = 0.7f;
-    const ScreenMap a(*fixture.scene, frame, faithful), b(*fixture.scene, frame, adaptive(0.7f, 0.0f, 0.0f));
+    const ScreenMap a(*fixture.scene, frame, faithful(0.7f)), b(*fixture.scene, frame, adaptive(0.7f, 0.0f, 0.0f));
     auto sampler = fixture.scene->distance().sampler();
     int indirect = 0;
     for (int y = 0; y < 80; ++y)
@@ -101,16 +100,17 @@ TEST(AdaptiveInverseVis, ProfileGradientMatchesCentralDifferencesOnSphere)
     const auto& fixture = test::sphereScene();
     const EnergyEvaluator evaluator(*fixture.scene, scalarOptions(fixture.field, 120));
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
-    const MethodParams at = adaptive(0.2f, 0.6f, 0.4f);
-    const std::vector<double> analytic = evaluator.curvedRayGradient(camera, at);
+    const std::array<float, 3> at{0.2f, 0.6f, 0.4f};
+    const std::vector<double> analytic = curvedRayGradient(evaluator, camera, adaptive(at[0], at[1], at[2]));
     ASSERT_EQ(analytic.size(), 3u);
     const float delta = 0.01f;
     for (std::size_t k = 0; k < 3; ++k) {
-        MethodParams up = at, down = at;
-        up.profile.coefficients[k] += delta;
-        down.profile.coefficients[k] -= delta;
-        const double numeric =
-            (evaluator.evaluate(camera, up).energy - evaluator.evaluate(camera, down).energy) / (2.0 * delta);
+        std::array<float, 3> up = at, down = at;
+        up[k] += delta;
+        down[k] -= delta;
+        const double numeric = (evaluator.evaluate(camera, adaptive(up[0], up[1], up[2])).energy -
+                                evaluator.evaluate(camera, adaptive(down[0], down[1], down[2])).energy) /
+                               (2.0 * delta);
         EXPECT_NEAR(analytic[k], numeric, 0.05 * std::abs(numeric)) << "coefficient a" << k;
     }
 }
@@ -127,9 +127,7 @@ TEST(AdaptiveInverseVis, ShowsMoreOfTheSphereThanAnyGlobalAlpha)
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     const double adaptiveVisibility = evaluator.evaluate(camera, adaptive(0.0f, 3.0f, 3.0f)).energy;
     for (float alpha : {0.0f, 0.25f, 0.5f, 1.0f, 2.0f, 3.0f}) {
-        MethodParams faithful;
-        faithful.curved.alpha = alpha;
-        EXPECT_GT(adaptiveVisibility, evaluator.evaluate(camera, faithful).energy + 0.05) << "alpha " << alpha;
+        EXPECT_GT(adaptiveVisibility, evaluator.evaluate(camera, faithful(alpha)).energy + 0.05) << "alpha " << alpha;
     }
 }
 
@@ -138,17 +136,17 @@ TEST(ParameterAscent, EnergyTraceRisesAndEndsAtTheReportedParameters)
     const auto& fixture = test::sphereScene();
     const EnergyEvaluator evaluator(*fixture.scene, scalarOptions(fixture.field, 64));
     const core::Camera camera = core::Camera::fromAngles(60.0, 30.0);
-    for (const MethodParams& start : {MethodParams{}, adaptive(0.0f, 0.5f, 0.5f)}) {
+    for (const MethodPtr& start : {faithful(), adaptive(0.0f, 0.5f, 0.5f)}) {
         for (GradientMode mode : {GradientMode::Analytic, GradientMode::ForwardDifference}) {
             AscentOptions options;
             options.gradient = mode;
             options.maxIterations = 4;
             const AscentResult result = optimizeParameters(evaluator, camera, start, options);
-            ASSERT_GE(result.energyTrace.size(), 2u) << toString(start.method) << " takes at least one step";
+            ASSERT_GE(result.energyTrace.size(), 2u) << start->name() << " takes at least one step";
             for (std::size_t i = 1; i < result.energyTrace.size(); ++i)
                 EXPECT_GT(result.energyTrace[i], result.energyTrace[i - 1]);
             EXPECT_EQ(result.value.energy, result.energyTrace.back());
-            EXPECT_EQ(result.value.energy, evaluator.evaluate(camera, result.params).energy);
+            EXPECT_EQ(result.value.energy, evaluator.evaluate(camera, result.method).energy);
             EXPECT_LE(result.iterations, options.maxIterations);
         }
     }
@@ -162,7 +160,7 @@ TEST(ParameterAscent, AnalyticGradientIsRefusedForTheVisibilityEnergy)
     const EnergyEvaluator evaluator(*fixture.scene, options);
     AscentOptions ascent;
     ascent.gradient = GradientMode::Analytic;
-    EXPECT_THROW(optimizeParameters(evaluator, core::Camera(), MethodParams{}, ascent), ValueError);
+    EXPECT_THROW(optimizeParameters(evaluator, core::Camera(), faithful(), ascent), ValueError);
 }
 
 TEST(ParameterAscent, AlphaScanEndsAtLeastAsHighAsEveryScannedAlpha)
@@ -172,19 +170,18 @@ TEST(ParameterAscent, AlphaScanEndsAtLeastAsHighAsEveryScannedAlpha)
     const core::Camera camera = core::Camera::fromAngles(70.0, 40.0);
     const int scanSamples = 5;
     AscentOptions options;
-    options.alphaScanSamples = scanSamples;
+    options.scanSamples = scanSamples;
     options.maxIterations = 1;
-    const AscentResult scanned = optimizeParameters(evaluator, camera, MethodParams{}, options);
+    const AscentResult scanned = optimizeParameters(evaluator, camera, faithful(), options);
     double bestScanned = 0.0;
     for (int k = 0; k < scanSamples; ++k) {
-        MethodParams params;
-        params.curved.alpha = float(options.maxScanAlpha * k / (scanSamples - 1));
-        bestScanned = std::max(bestScanned, evaluator.evaluate(camera, params).energy);
+        const float alpha = float(kMaxAlpha * double(k) / (scanSamples - 1));
+        bestScanned = std::max(bestScanned, evaluator.evaluate(camera, faithful(alpha)).energy);
     }
     EXPECT_GE(scanned.value.energy, bestScanned);
-    EXPECT_EQ(scanned.value.energy, evaluator.evaluate(camera, scanned.params).energy);
-    options.alphaScanSamples = 0;
-    const AscentResult plain = optimizeParameters(evaluator, camera, MethodParams{}, options);
+    EXPECT_EQ(scanned.value.energy, evaluator.evaluate(camera, scanned.method).energy);
+    options.scanSamples = 0;
+    const AscentResult plain = optimizeParameters(evaluator, camera, faithful(), options);
     EXPECT_EQ(scanned.evaluations, plain.evaluations + scanSamples) << "one line search each, plus the scan";
     EXPECT_GT(scanned.value.energy, plain.value.energy) << "on this view a larger alpha than the ascent reaches shows more";
 }
@@ -195,8 +192,7 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
     const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
     AnnealingOptions options;
     options.steps = 12;
-    MethodParams start;
-    start.method = Method::Neugebauer;  // no parameters: the test is about the view search
+    const MethodPtr start = makeMethod("neugebauer");  // nothing optimised: the test is about the view search
     const AnnealingResult a = annealViewpoint(evaluator, start, options);
     const AnnealingResult b = annealViewpoint(evaluator, start, options);
     options.seed = 2;
@@ -238,26 +234,26 @@ TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscend
     const EnergyEvaluator ascentEvaluator(*fixture.scene, visibilityOptions(16));
     AnnealingOptions options;
     options.steps = 4;
-    const AnnealingResult run = annealViewpoint(evaluator, MethodParams{}, options, {}, &ascentEvaluator);
+    const AnnealingResult run = annealViewpoint(evaluator, faithful(), options, {}, &ascentEvaluator);
     ASSERT_EQ(run.visited.size(), 5u);
-    const MethodParams* current = nullptr;
-    MethodParams start;
+    const MethodPtr start = faithful();
+    const MethodPtr* current = nullptr;
     for (std::size_t i = 0; i < run.visited.size(); ++i) {
         const VisitedView& view = run.visited[i];
-        const core::Camera camera = viewCamera(view.thetaDeg, view.phiDeg, options.fovYDeg);
-        const MethodParams& from = current ? *current : start;
+        const core::Camera camera = core::Camera::fromAngles(view.thetaDeg, view.phiDeg, core::kCameraDistance, options.fovYDeg);
+        const MethodPtr& from = current ? *current : start;
         const AscentResult ascended = optimizeParameters(ascentEvaluator, camera, from);
-        const EnergyValue measured = evaluator.evaluate(camera, view.params);
+        const EnergyValue measured = evaluator.evaluate(camera, view.method);
         EXPECT_EQ(view.value.energy, measured.energy) << "view " << i << " is measured on the full energy";
         if (i == run.best) {
-            EXPECT_GE(view.value.energy, evaluator.evaluate(camera, ascended.params).energy) << "the winner's ascent";
+            EXPECT_GE(view.value.energy, evaluator.evaluate(camera, ascended.method).energy) << "the winner's ascent";
         } else {
-            EXPECT_EQ(view.params.curved.alpha, ascended.params.curved.alpha) << "view " << i << " ascends coarsely";
+            EXPECT_EQ(view.method->values(), ascended.method->values()) << "view " << i << " ascends coarsely";
         }
         EXPECT_LE(view.value.energy, run.bestView().value.energy);
-        if (i == 0 || view.accepted) current = &view.params;
+        if (i == 0 || view.accepted) current = &view.method;
     }
 }
 
 }  // namespace
-}  // namespace ivis::render
+}  // namespace ivis::optimize

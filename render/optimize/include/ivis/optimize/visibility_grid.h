@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-namespace ivis::render {
+namespace ivis::optimize {
 
 /// @brief Marked voxels of a resolution^3 grid over [-2.5, 2.5]^3.
 class VisibilityGrid {
@@ -45,4 +45,4 @@ private:
     std::vector<std::uint64_t> mMarked;  ///< sorted keys
 };
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

@@ -6,12 +6,12 @@
 /// @note Deterministic for a seed (std::mt19937_64 and fixed-order reductions).
 #pragma once
 
-#include <ivis/render/parameter_optimizer.h>
+#include <ivis/optimize/parameter_optimizer.h>
 
 #include <cstdint>
 #include <vector>
 
-namespace ivis::render {
+namespace ivis::optimize {
 
 /// @brief Annealing schedule and start.
 struct AnnealingOptions {
@@ -31,7 +31,7 @@ struct VisitedView {
     double thetaDeg = 0.0;
     double phiDeg = 0.0;
     EnergyValue value;
-    MethodParams params;
+    render::MethodPtr method;  ///< the method with the parameters optimised at this view
     bool accepted = false;
 };
 
@@ -45,15 +45,15 @@ struct AnnealingResult {
     const VisitedView& bestView() const { return visited[best]; }
 };
 
-/// @brief Camera of a view on the sphere, looking at the origin.
-core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg);
-
 /// @brief Runs the annealing from the start view with the method of @a start.
+/// @param interrupter optional progress (percent of the proposals) and cancel
 /// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended
 ///        on it and only then measured on @a evaluator, and the best view's parameters are
 ///        ascended once more on @a evaluator; when null everything uses @a evaluator.
-AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodParams& start,
+/// @throw Cancelled when interrupted
+AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options = {}, const AscentOptions& ascent = {},
-                                const EnergyEvaluator* ascentEvaluator = nullptr);
+                                const EnergyEvaluator* ascentEvaluator = nullptr,
+                                core::Interrupter* interrupter = nullptr);
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

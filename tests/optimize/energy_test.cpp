@@ -3,8 +3,9 @@
 // visibility measure against its definition.
 #include "render/scene_fixture.h"
 
-#include <ivis/render/curved_ray.h>
-#include <ivis/render/energy.h>
+#include <ivis/optimize/curved_ray_gradient.h>
+#include <ivis/optimize/energy.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/screen_map.h>
 
 #include <glm/geometric.hpp>
@@ -12,8 +13,10 @@
 
 #include <cmath>
 
-namespace ivis::render {
+namespace ivis::optimize {
 namespace {
+
+using namespace render;
 
 EnergyOptions scalarOptions(const core::SurfaceField& field)
 {
@@ -24,12 +27,7 @@ EnergyOptions scalarOptions(const core::SurfaceField& field)
     return options;
 }
 
-MethodParams withAlpha(float alpha)
-{
-    MethodParams params;
-    params.curved.alpha = alpha;
-    return params;
-}
+MethodPtr withAlpha(float alpha) { return makeMethod("inversevis", {{"alpha", {alpha}}}); }
 
 TEST(Energy, AlphaDerivativeMatchesFiniteDifferencesOnSphere)
 {
@@ -37,7 +35,7 @@ TEST(Energy, AlphaDerivativeMatchesFiniteDifferencesOnSphere)
     const EnergyEvaluator evaluator(*fixture.scene, scalarOptions(fixture.field));
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     for (float alpha : {0.3f, 0.6f, 1.0f}) {
-        const double analytic = evaluator.curvedRayGradient(camera, withAlpha(alpha))[0];
+        const double analytic = curvedRayGradient(evaluator, camera, withAlpha(alpha))[0];
         const float delta = 0.01f;
         const double numeric = (evaluator.evaluate(camera, withAlpha(alpha + delta)).energy -
                                 evaluator.evaluate(camera, withAlpha(alpha - delta)).energy) /
@@ -65,7 +63,7 @@ void expectSmoothPixelsMatch(const test::SceneFixture& fixture, const core::Came
     int smooth = 0, landed = 0;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
-            const PixelAlphaDerivative d = evaluator.pixelAlphaDerivative(at, x + 0.5, y + 0.5, sampler);
+            const PixelLaunchDerivative d = pixelLaunchDerivative(evaluator, at, x + 0.5, y + 0.5, sampler);
             if (!d.landed) continue;
             ++landed;
             const PixelMapping plus = up.map(x + 0.5, y + 0.5, sampler);
@@ -132,19 +130,15 @@ TEST(Energy, VisibilityCountsMarkedVoxelsOfLandingPoints)
         }
         return double(grid.countMarked(keys)) / double(grid.markedCount());
     };
-    const EnergyValue front = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), [] {
-        MethodParams p;
-        p.method = Method::Front;
-        return p;
-    }());
+    const EnergyValue front = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), makeMethod("front"));
     EXPECT_GT(front.energy, 0.9 * capFraction(0.41));  // grazing pixels near the rim are sparse
     EXPECT_LT(front.energy, capFraction(0.39));
     EXPECT_DOUBLE_EQ(front.energy, front.front);
     EXPECT_EQ(front.pixelsIndirect, 0u);
-    const EnergyValue inverse = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), MethodParams{});
+    const EnergyValue inverse = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), makeMethod("inversevis"));
     EXPECT_GT(inverse.energy, front.energy);
     EXPECT_DOUBLE_EQ(inverse.front, front.front);
 }
 
 }  // namespace
-}  // namespace ivis::render
+}  // namespace ivis::optimize

@@ -1,41 +1,12 @@
-#include <ivis/render/parameter_optimizer.h>
+#include <ivis/optimize/parameter_optimizer.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/optimize/curved_ray_gradient.h>
+#include <ivis/render/method_registry.h>
 
-#include <algorithm>
 #include <cmath>
 
-namespace ivis::render {
-namespace {
-
-/// The free parameters of a method as a vector, and back.
-std::vector<double> parameterVector(const MethodParams& params)
-{
-    const auto& a = params.profile.coefficients;
-    switch (params.method) {
-    case Method::InverseVis: return {params.curved.alpha};
-    case Method::InverseVisAdaptive: return {a.begin(), a.end()};
-    case Method::Mirror: return {params.mirror.w.begin(), params.mirror.w.end()};
-    default: return {};
-    }
-}
-
-MethodParams withParameters(MethodParams params, const std::vector<double>& x, const AscentOptions& options)
-{
-    switch (params.method) {
-    case Method::InverseVis: params.curved.alpha = float(std::clamp(x[0], 0.0, options.maxAlpha)); break;
-    case Method::InverseVisAdaptive:
-        for (std::size_t i = 0; i < params.profile.coefficients.size(); ++i) params.profile.coefficients[i] = float(x[i]);
-        break;
-    case Method::Mirror:
-        for (std::size_t i = 0; i < params.mirror.w.size(); ++i) params.mirror.w[i] = float(x[i]);
-        break;
-    default: break;
-    }
-    return params;
-}
-
-}  // namespace
+namespace ivis::optimize {
 
 double goldenSectionMaximize(const std::function<double(double)>& f, double lo, double hi, double tolerance,
                              int* evaluations)
@@ -65,50 +36,56 @@ double goldenSectionMaximize(const std::function<double(double)>& f, double lo, 
 }
 
 AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Camera& camera,
-                                const MethodParams& start, const AscentOptions& options)
+                                const render::MethodPtr& start, const AscentOptions& options,
+                                core::Interrupter* interrupter)
 {
     AscentResult result;
-    result.params = start;
+    result.method = start;
     const ViewSamples samples(evaluator.scene(), camera, evaluator.options().resolution, start);
     result.value = evaluator.evaluate(samples, start);
     result.evaluations = 1;
     result.energyTrace.push_back(result.value.energy);
-    std::vector<double> x = parameterVector(start);
+    std::vector<double> x = render::optimisedParameters(*start);
     if (x.empty()) return result;
 
-    const bool analytic = start.curvedRays() && evaluator.options().kind == EnergyKind::Scalar &&
+    const render::MethodInfo& info = start->info();
+    const bool analytic = info.tangentLinearGradient && evaluator.options().kind == EnergyKind::Scalar &&
                           options.gradient != GradientMode::ForwardDifference;
     if (options.gradient == GradientMode::Analytic && !analytic)
         throw ValueError("the analytic gradient exists only for the curved-ray methods with the scalar energy");
-    auto paramsAt = [&](const std::vector<double>& point) { return withParameters(start, point, options); };
+    auto methodAt = [&](const std::vector<double>& point) { return render::withOptimisedParameters(*start, point); };
     auto energyAt = [&](const std::vector<double>& point) {
         ++result.evaluations;
-        return evaluator.evaluate(samples, paramsAt(point));
+        return evaluator.evaluate(samples, methodAt(point));
     };
-    // The adaptive method's ascent follows the unit gradient: its visibility gradient is far
-    // smaller than its parameters' useful steps.
-    const bool unitDirection = start.method == Method::InverseVisAdaptive;
-    const double maxStep = unitDirection ? options.maxProfileStep : options.maxStep;
-    const double tolerance = unitDirection ? options.profileTolerance : options.tolerance;
+    const render::LineSearch search = info.lineSearch.value_or(options.lineSearch);
 
-    // InverseVis: start from the best of the start alpha and an even scan of [0, maxScanAlpha].
-    if (start.method == Method::InverseVis && options.alphaScanSamples > 1) {
-        const int samples = options.alphaScanSamples;
-        for (int k = 0; k < samples; ++k) {
-            const std::vector<double> point{options.maxScanAlpha * k / (samples - 1)};
+    // Start from the best of the start and an even scan of the scanned parameter's range.
+    if (const render::ParameterSpec* scanned = info.parameter(info.scannedParameter);
+        scanned && options.scanSamples > 1) {
+        std::size_t component = 0;  // the scanned parameter's place in x
+        for (const render::ParameterSpec& spec : info.parameters) {
+            if (&spec == scanned) break;
+            if (spec.optimised) component += spec.defaults.size();
+        }
+        const int count = options.scanSamples;
+        for (int k = 0; k < count; ++k) {
+            std::vector<double> point = x;
+            point[component] = scanned->lo + double(scanned->hi - scanned->lo) * k / (count - 1);
             const EnergyValue value = energyAt(point);
             if (!(value.energy > result.value.energy)) continue;
             x = point;
             result.value = value;
-            result.params = paramsAt(x);
+            result.method = methodAt(x);
         }
         if (result.value.energy > result.energyTrace.back()) result.energyTrace.push_back(result.value.energy);
     }
 
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
+        if (interrupter && interrupter->wasInterrupted()) throw Cancelled("parameter ascent cancelled");
         std::vector<double> gradient(x.size(), 0.0);
         if (analytic) {
-            gradient = evaluator.curvedRayGradient(camera, paramsAt(x));
+            gradient = curvedRayGradient(evaluator, camera, methodAt(x));
             ++result.evaluations;
         } else {
             for (std::size_t i = 0; i < x.size(); ++i) {
@@ -117,7 +94,7 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
                 gradient[i] = (energyAt(shifted).energy - result.value.energy) / options.differenceStep;
             }
         }
-        if (unitDirection) {
+        if (search.unitDirection) {
             double norm = 0.0;
             for (double g : gradient) norm += g * g;
             norm = std::sqrt(norm);
@@ -129,17 +106,17 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
             for (std::size_t i = 0; i < x.size(); ++i) point[i] += t * gradient[i];
             return point;
         };
-        const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0, maxStep,
-                                               tolerance);
+        const double t = goldenSectionMaximize([&](double s) { return energyAt(along(s)).energy; }, 0.0,
+                                               search.maxStep, search.tolerance);
         const EnergyValue candidate = energyAt(along(t));
         ++result.iterations;
         if (!(candidate.energy > result.value.energy)) break;
         x = along(t);
         result.value = candidate;
-        result.params = paramsAt(x);
+        result.method = methodAt(x);
         result.energyTrace.push_back(candidate.energy);
     }
     return result;
 }
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

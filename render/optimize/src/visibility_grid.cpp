@@ -1,4 +1,4 @@
-#include <ivis/render/visibility_grid.h>
+#include <ivis/optimize/visibility_grid.h>
 
 #include <ivis/core/errors.h>
 #include <ivis/vdb/surface_volume.h>
@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ivis::render {
+namespace ivis::optimize {
 
 VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, int resolution)
     : mResolution(resolution), mVoxelSize(2.0 * vdb::kBoxHalfExtent / resolution)
@@ -96,4 +96,4 @@ std::size_t VisibilityGrid::countMarked(std::vector<std::uint64_t>& keys) const
     return count;
 }
 
-}  // namespace ivis::render
+}  // namespace ivis::optimize

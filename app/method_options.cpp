@@ -1,0 +1,57 @@
+#include "method_options.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/render/curved_ray_method.h>
+#include <ivis/render/method_registry.h>
+
+#include <cstdio>
+
+namespace ivis::app {
+
+void MethodOptions::addTo(CLI::App& command)
+{
+    std::string help = "Visualisation method:";
+    for (const render::MethodInfo* info : render::methodRegistry()) help += "\n  " + info->name + ": " + info->help;
+    command.add_option("--method", method, help)->capture_default_str();
+    for (const render::MethodInfo* info : render::methodRegistry())
+        for (const render::ParameterSpec& spec : info->parameters) {
+            CLI::Option*& option = mOptions[spec.key];
+            if (option) {
+                option->description(option->get_description() + "; " + info->name);
+                continue;
+            }
+            std::string defaults;
+            for (float v : spec.defaults) defaults += (defaults.empty() ? "" : " ") + CLI::detail::to_string(v);
+            option = command.add_option(spec.option(), values[spec.key],
+                                        spec.help + " (default " + defaults + ", " + CLI::detail::to_string(spec.lo) +
+                                            " to " + CLI::detail::to_string(spec.hi) + "); for " + info->name);
+            option->expected(int(spec.defaults.size()));
+        }
+}
+
+render::MethodPtr MethodOptions::create() const
+{
+    const render::MethodInfo& info = render::methodInfo(method);
+    render::ParameterValues given;
+    for (const auto& [key, option] : mOptions) {
+        if (option->count() == 0) continue;
+        if (!info.parameter(key)) throw InputError(option->get_name() + " does not apply to the method " + method);
+        given[key] = values.at(key);
+    }
+    return render::makeMethod(method, given);
+}
+
+void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOptions& volume)
+{
+    if (!method.curvedRays()) return;
+    const float hullOffset = method.curved()->rayParams().hullOffset;
+    if (hullOffset < 0.999 * volume.farFieldReach) return;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "--hull-offset %g is at or beyond the volume's --reach %g: the hull would lie outside the distance "
+                  "field (raise --reach above the hull offset)",
+                  double(hullOffset), volume.farFieldReach);
+    throw ValueError(text);
+}
+
+}  // namespace ivis::app

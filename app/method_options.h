@@ -1,0 +1,38 @@
+/// @file method_options.h
+/// @brief The --method option and every registered method's parameters as options, read from the
+///        method registry: an option of a parameter the chosen method lacks is rejected.
+#pragma once
+
+#include <ivis/render/method.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <CLI/CLI.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+
+/// @brief The method and its parameters as given on the command line.
+struct MethodOptions {
+    std::string method = "inversevis";
+    std::map<std::string, std::vector<float>> values;  ///< by parameter key, as given
+
+    /// @brief Registers --method and one option per parameter key of any registered method.
+    void addTo(CLI::App& command);
+    /// @brief The chosen method with the given parameters (defaults for the others).
+    /// @throw InputError for an unknown method or an option its method does not take; ValueError
+    ///        for a value out of bounds
+    render::MethodPtr create() const;
+
+private:
+    std::map<std::string, CLI::Option*> mOptions;
+};
+
+/// @brief Checks that @a method's rays stay within the distance field of a volume built with
+///        @a volume (a curved-ray hull inside the field's reach).
+/// @throw ValueError naming both values
+void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOptions& volume);
+
+}  // namespace ivis::app

@@ -1,0 +1,94 @@
+/// @file curved_ray_method.h
+/// @brief What the curved-ray methods share (METHOD.md, "InverseVis, I-"): a seed on the hull
+///        {phi = phi0} where the view ray leaves it, a launch velocity that each method chooses,
+///        and the symplectic integration onto the surface.
+#pragma once
+
+#include <ivis/render/curved_ray.h>
+#include <ivis/render/method.h>
+
+#include <vector>
+
+namespace ivis::render {
+
+/// @brief Start of one pixel's curved ray.
+struct CurvedRayStart {
+    glm::vec3 seed{};              ///< farthest crossing of the view ray with the hull
+    glm::vec3 velocityPerAlpha{};  ///< g x (r x g), g = grad phi / |grad phi|: the view direction's part tangential to the hull
+    float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
+};
+
+/// @brief How a launch velocity moves with the optimised parameters: along one direction,
+///        dv0 / dparameter_k = perParameter[k] * direction.
+struct LaunchSensitivity {
+    glm::vec3 direction{0.0f};
+    std::vector<double> perParameter;  ///< one entry per optimised component (optimisedParameters order)
+};
+
+/// @brief Where a curved ray ended and which launch it was (0: the first).
+struct CurvedRayTrace {
+    CurvedRayEnd end;
+    int launch = 0;
+};
+
+/// @brief The descriptions of hull_offset, step and max_steps, shared by the curved-ray methods.
+std::vector<ParameterSpec> curvedRaySpecs();
+/// @brief Ray parameters from values keyed as curvedRaySpecs().
+CurvedRayParams curvedRayParamsFrom(const ParameterValues& values);
+/// @brief Values of the ray parameters, keyed as curvedRaySpecs().
+ParameterValues curvedRayValues(const CurvedRayParams& params);
+
+/// @brief A method whose indirect rays are curved rays from the hull.
+class CurvedRayMethod : public Method {
+public:
+    explicit CurvedRayMethod(const CurvedRayParams& params) : mRay(params) {}
+    /// @brief Step size, hull offset, step cap and landing threshold of the rays.
+    const CurvedRayParams& rayParams() const { return mRay; }
+    /// @brief Initial velocity of launch @a launch (0 first) of the ray from @a start.
+    virtual glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const = 0;
+    /// @brief How often a ray that does not land is launched again.
+    virtual int relaunches() const { return 0; }
+    /// @brief The sensitivity of launch @a launch's velocity to the optimised parameters.
+    /// @return false where the launch does not move with them (e.g. a clamped alpha)
+    virtual bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const = 0;
+
+    std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    const CurvedRayMethod* curved() const override { return this; }
+
+private:
+    CurvedRayParams mRay;
+};
+
+/// @brief The curved rays of one view: seeds, launches and landings.
+/// @warning Thread-safe given one DistanceField::Sampler per thread.
+class CurvedRayMap final : public IndirectMap {
+public:
+    CurvedRayMap(const RenderScene& scene, const core::CameraFrame& frame, const CurvedRayMethod& method);
+
+    PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const override;
+
+    /// @brief Start of the curved ray of pixel position (x, y).
+    /// @return false when the view ray hits the surface or misses the hull
+    bool start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// @brief Traces the ray of @a start, launching it again while it does not land (as the method says).
+    CurvedRayTrace trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
+    /// @brief The surface point the curved ray from @a start lands on (a launched miss if none).
+    PixelMapping landing(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
+    /// @brief landedAt() for this view.
+    PixelMapping landedAt(const CurvedRayEnd& end, DistanceField::Sampler& sampler) const;
+
+    const CurvedRayMethod& method() const { return mMethod; }
+    /// @brief The landing threshold used.
+    float epsilon() const { return mEpsilon; }
+
+private:
+    bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+
+    const RenderScene& mScene;
+    core::CameraFrame mFrame;
+    const CurvedRayMethod& mMethod;
+    core::Bounds3 mHullBox;
+    float mEpsilon;
+};
+
+}  // namespace ivis::render

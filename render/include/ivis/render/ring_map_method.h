@@ -1,0 +1,28 @@
+/// @file ring_map_method.h
+/// @brief The `neugebauer` method: the ring map of Neugebauer et al. (2009) around the projected
+///        centre plus a back-side disc on the left (METHOD.md, "Baseline 1").
+#pragma once
+
+#include <ivis/render/method.h>
+#include <ivis/render/neugebauer_map.h>
+
+namespace ivis::render {
+
+/// @brief Description of `neugebauer`: parameters ring_centre (x y z) and ring_width.
+const MethodInfo& ringMapMethodInfo();
+
+/// @brief The ring map with its parameters.
+class RingMapMethod final : public Method {
+public:
+    explicit RingMapMethod(const RingParams& params) : mParams(params) {}
+    const MethodInfo& info() const override { return ringMapMethodInfo(); }
+    ParameterValues values() const override;
+    std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    /// @brief The ring parameters.
+    const RingParams& params() const { return mParams; }
+
+private:
+    RingParams mParams;
+};
+
+}  // namespace ivis::render

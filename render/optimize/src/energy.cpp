@@ -1,0 +1,111 @@
+#include <ivis/optimize/energy.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/render/screen_map.h>
+
+#include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ivis::optimize {
+
+using namespace render;
+namespace {
+
+/// Sums of an energy evaluation over a block of pixels.
+struct Tally {
+    double direct = 0.0, indirect = 0.0;
+    std::size_t pixelsIndirect = 0;
+    std::vector<std::uint64_t> directKeys, allKeys;
+};
+
+}  // namespace
+
+EnergyKind parseEnergyKind(const std::string& name)
+{
+    if (name == "scalar") return EnergyKind::Scalar;
+    if (name == "visibility") return EnergyKind::Visibility;
+    throw InputError("unknown energy '" + name + "' (known: scalar, visibility)");
+}
+
+const char* toString(EnergyKind kind) { return kind == EnergyKind::Scalar ? "scalar" : "visibility"; }
+
+EnergyEvaluator::EnergyEvaluator(const RenderScene& scene, const EnergyOptions& options)
+    : mScene(scene), mOptions(options)
+{
+    if (options.resolution < 4 || options.resolution > 8192)
+        throw ValueError("optimisation resolution " + std::to_string(options.resolution) + " is out of range (4 to 8192)");
+    if (options.kind == EnergyKind::Scalar && !scene.field().hasScalar())
+        throw InputError(scene.field().sourcePath + ": the scalar energy needs a scalar field (--scalar NAME)");
+    if (options.kind == EnergyKind::Visibility)
+        mVisibility = std::make_unique<VisibilityGrid>(scene.mesh(), scene.bvh(), options.visibilityResolution);
+}
+
+float EnergyEvaluator::importance(const SurfacePoint& point) const
+{
+    const float value = scalarAt(mScene.field(), point);
+    return std::isnan(value) ? 0.0f : mOptions.importanceRange.normalized(value);
+}
+
+EnergyValue EnergyEvaluator::evaluate(const core::Camera& camera, const MethodPtr& method) const
+{
+    return evaluate(ViewSamples(mScene, camera, mOptions.resolution, method), method);
+}
+
+EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPtr& method) const
+{
+    if (!samples.compatibleWith(*method)) throw ValueError("view samples prepared for other method parameters");
+    const ScreenMap screen(mScene, samples.frame(), method);
+    const CurvedRayMap* curved = screen.curvedRays();
+    const std::vector<MissedPixel>& missed = samples.missed();
+    // Fixed blocks summed in block order: the result does not depend on the thread count.
+    const std::size_t blockSize = 64, blocks = (missed.size() + blockSize - 1) / blockSize;
+    std::vector<Tally> tallies(blocks);
+    tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+        DistanceField::Sampler sampler = mScene.distance().sampler();
+        Tally& tally = tallies[b];
+        for (std::size_t i = b * blockSize; i < std::min(missed.size(), (b + 1) * blockSize); ++i) {
+            const MissedPixel& pixel = missed[i];
+            const PixelMapping m =
+                curved ? curved->landing(pixel.start, sampler) : screen.indirect(pixel.x, pixel.y, sampler);
+            if (m.region != Region::Indirect) continue;
+            ++tally.pixelsIndirect;
+            if (mVisibility)
+                tally.allKeys.push_back(mVisibility->keyOf(m.point.position));
+            else
+                tally.indirect += importance(m.point);
+        }
+    });
+    EnergyValue value;
+    Tally total;
+    value.pixelsDirect = samples.direct().size();
+    for (const SurfacePoint& point : samples.direct()) {
+        if (mVisibility)
+            total.directKeys.push_back(mVisibility->keyOf(point.position));
+        else
+            total.direct += importance(point);
+    }
+    total.allKeys = total.directKeys;
+    for (Tally& tally : tallies) {
+        total.indirect += tally.indirect;
+        value.pixelsIndirect += tally.pixelsIndirect;
+        total.allKeys.insert(total.allKeys.end(), tally.allKeys.begin(), tally.allKeys.end());
+    }
+    const int n = samples.frame().width();
+    if (mVisibility) {
+        const double marked = double(std::max<std::size_t>(1, mVisibility->markedCount()));
+        value.energy = double(mVisibility->countMarked(total.allKeys)) / marked;
+        value.front = double(mVisibility->countMarked(total.directKeys)) / marked;
+    } else {
+        const double pixelArea = 4.0 / (double(n) * n);  // NDC [-1,1]^2
+        value.energy = (mOptions.gamma * total.direct + total.indirect) * pixelArea;
+        value.front = mOptions.gamma * total.direct * pixelArea;
+        const std::size_t shown = value.pixelsDirect + value.pixelsIndirect;
+        value.meanImportance = shown ? (total.direct + total.indirect) / double(shown) : 0.0;
+    }
+    return value;
+}
+
+}  // namespace ivis::optimize

@@ -1,0 +1,40 @@
+#include <ivis/render/method_json.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/render/method_registry.h>
+
+namespace ivis::render {
+
+nlohmann::json methodToJson(const Method& method)
+{
+    nlohmann::json json = {{"method", method.name()}};
+    const ParameterValues values = method.values();
+    for (const ParameterSpec& spec : method.info().parameters) {
+        const std::vector<float>& v = values.at(spec.key);
+        if (spec.integer)
+            json[spec.key] = int(v[0]);
+        else if (v.size() == 1)
+            json[spec.key] = v[0];
+        else
+            json[spec.key] = v;
+    }
+    return json;
+}
+
+MethodPtr methodFromJson(const nlohmann::json& json)
+{
+    if (!json.is_object() || !json.contains("method") || !json["method"].is_string())
+        throw InputError("method JSON needs a \"method\" name");
+    ParameterValues values;
+    for (const auto& [key, value] : json.items()) {
+        if (key == "method") continue;
+        std::vector<float>& v = values[key];
+        for (const auto& component : value.is_array() ? value : nlohmann::json::array({value})) {
+            if (!component.is_number()) throw InputError("method parameter '" + key + "' is not a number");
+            v.push_back(component.get<float>());
+        }
+    }
+    return makeMethod(json["method"].get<std::string>(), values);
+}
+
+}  // namespace ivis::render
