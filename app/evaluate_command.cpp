@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
+#include "method_options.h"
 #include "optimization_options.h"
 
 #include <ivis/core/atomic_file.h>
@@ -53,24 +54,23 @@ Command addEvaluateCommand(CLI::App& app)
 {
     struct Options {
         std::vector<std::string> meshes;
-        std::vector<std::string> methods{"front", "neugebauer", "mirror", "inversevis", "inversevis-adaptive"};
+        MeshOptions mesh;
+        std::vector<std::string> methods = render::methodNames();
         std::vector<int> optResolutions{100};
         int displayResolution = 1000;
         int pictureResolution = 0;
-        int volumeResolution = 200;
         double fovYDeg = core::kDefaultFovYDeg;
         OptimizationOptions optimization;
         std::string json, markdown, pictures, cacheDir = ".";
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("evaluate", "Visibility and timing tables of the methods (paper Tab. 1, 2)");
-    command->add_option("meshes", options->meshes, "Mesh files or scene:<name>")->required();
-    command->add_option("--methods", options->methods, "Methods to compare")->delimiter(',')->capture_default_str();
+    options->mesh.addTo(*command, "--volume-res", &options->meshes);
+    command->add_option("--methods", options->methods, "Methods to compare (default: every method)")->delimiter(',')->capture_default_str();
     command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions")->delimiter(',')
         ->capture_default_str();
     command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
         ->capture_default_str();
-    command->add_option("--volume-res", options->volumeResolution, "Volume resolution")->capture_default_str();
     command->add_option("--fov", options->fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
     options->optimization.addTo(*command);
     command->add_option("--json", options->json, "Results as JSON");
@@ -83,6 +83,8 @@ Command addEvaluateCommand(CLI::App& app)
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
+        const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        for (const std::string& m : options->methods) checkMethodFitsVolume(*render::makeMethod(m), volumeOptions);
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         nlohmann::json results = nlohmann::json::object();
         std::ostringstream table1, table2;
@@ -99,9 +101,7 @@ Command addEvaluateCommand(CLI::App& app)
         table2 << "\n";
 
         for (const std::string& mesh : options->meshes) {
-            const core::SurfaceField field = core::loadSurface(mesh);
-            vdb::VolumeOptions volumeOptions;
-            volumeOptions.resolution = options->volumeResolution;
+            const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
                 field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution));
             const render::RenderScene scene(field, volume);

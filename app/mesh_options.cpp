@@ -6,15 +6,20 @@
 
 namespace ivis::app {
 
-void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag)
+void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag, std::vector<std::string>* sources)
 {
-    command.add_option("mesh", source, "Mesh file (.obj .off .ply .stl) or scene:sphere|torus|vessel-tree")
-        ->required();
+    const std::string help = "Mesh file (.obj .off .ply .stl) or scene:sphere|torus|vessel-tree";
+    if (sources)
+        command.add_option("meshes", *sources, help + "; one or more")->required();
+    else
+        command.add_option("mesh", source, help)->required();
     auto* scalar = command.add_option("--scalar", load.read.scalarName, "Per-vertex PLY property to show");
     command.add_option("--scalar-file", load.read.scalarFile, "Text file with one scalar value per vertex")
         ->excludes(scalar);
     command.add_flag("--cap-holes", load.capHoles, "Close open boundary loops (caps are never coloured)");
-    command.add_option(resolutionFlag, volume.resolution, "Voxels across the box [-2.5,2.5]^3 (200 to 2000)")
+    command.add_option(resolutionFlag, volume.resolution,
+                       "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +
+                           std::to_string(vdb::kMaxResolution) + ")")
         ->capture_default_str();
     command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")->capture_default_str();
     command.add_option("--reach", volume.farFieldReach, "Exterior distance the far field covers (normalised)")

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
@@ -18,9 +19,10 @@ struct MeshOptions {
     vdb::VolumeOptions volume;
     std::string distance = "auto";  ///< auto | signed | unsigned
 
-    /// @brief Registers MESH, --scalar, --scalar-file, --cap-holes, --volume-res-style options.
+    /// @brief Registers MESH, --scalar, --scalar-file, --cap-holes and the volume's options.
     /// @param resolutionFlag name of the resolution flag ("--res" for sdf, "--volume-res" elsewhere)
-    void addTo(CLI::App& command, const std::string& resolutionFlag);
+    /// @param sources when given, the command takes one or more meshes into it instead of one MESH
+    void addTo(CLI::App& command, const std::string& resolutionFlag, std::vector<std::string>* sources = nullptr);
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
 };

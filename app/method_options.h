@@ -3,7 +3,7 @@
 ///        method registry: an option of a parameter the chosen method lacks is rejected.
 #pragma once
 
-#include <ivis/render/method.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <CLI/CLI.hpp>
@@ -16,7 +16,7 @@ namespace ivis::app {
 
 /// @brief The method and its parameters as given on the command line.
 struct MethodOptions {
-    std::string method = "inversevis";
+    std::string method = render::defaultMethod()->name();
     std::map<std::string, std::vector<float>> values;  ///< by parameter key, as given
 
     /// @brief Registers --method and one option per parameter key of any registered method.

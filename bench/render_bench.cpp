@@ -7,6 +7,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/curved_ray.h>
+#include <ivis/render/front_method.h>
 #include <ivis/render/renderer.h>
 #include <ivis/render/screen_map.h>
 
@@ -141,9 +142,9 @@ Benchmark addRenderBenchmark(CLI::App& app)
         const render::RenderScene scene(field, volume);
         const core::Camera camera = core::Camera::fromAngles(options->theta, options->phi);
 
-        renderOptions.method = render::makeMethod("front");
+        renderOptions.method = render::makeMethod(render::frontMethodInfo().name);
         const render::RenderStats front = render::renderImage(scene, camera, renderOptions).stats;
-        renderOptions.method = render::makeMethod("inversevis");
+        renderOptions.method = render::defaultMethod();
         const render::RenderStats inverse = render::renderImage(scene, camera, renderOptions).stats;
 
         const core::CameraFrame frame(camera, renderOptions.width, renderOptions.height);

@@ -48,6 +48,8 @@ const std::vector<const MethodInfo*>& methodRegistry()
     return registry;
 }
 
+MethodPtr defaultMethod() { return makeMethod(inverseVisMethodInfo().name); }
+
 std::vector<std::string> methodNames()
 {
     std::vector<std::string> names;

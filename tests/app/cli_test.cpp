@@ -230,6 +230,56 @@ TEST_F(Cli, UnknownRenderMethod)
                    {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis, inversevis-adaptive)"});
 }
 
+TEST_F(Cli, MethodParameterOutOfItsBounds)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    expectRejected(render(mesh, "--alpha 7"), {"inversevis --alpha 7 is out of range (0 to 4)"});
+    expectRejected(render(mesh, "--method mirror --mirror-w 0.3 0.3 0 0 30"), {"mirror --mirror-w 30 is out of range"});
+    expectRejected(render(mesh, "--max-steps 2.5"), {"--max-steps 2.5 is not a whole number"});
+}
+
+TEST_F(Cli, ParameterOfAnotherMethodIsRejected)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    expectRejected(render(mesh, "--method mirror --alpha 0.7"), {"--alpha does not apply to the method mirror"});
+    expectRejected(render(mesh, "--ring-width 0.2"), {"--ring-width does not apply to the method inversevis"});
+}
+
+TEST_F(Cli, HullOffsetBeyondTheReachNamesBoth)
+{
+    const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
+    expectRejected(render(mesh, "--hull-offset 0.7"), {"--hull-offset 0.7", "--reach 0.6"});
+    expectRejected(render(mesh, "--hull-offset 0.7 --reach 0.7"), {"--hull-offset 0.7", "--reach 0.7"});
+    EXPECT_EQ(runCli(render(mesh, "--hull-offset 0.7 --reach 0.8")).status, 0);
+}
+
+TEST_F(Cli, OptimizeStartsFromTheGivenCameraAndRejectsOrthographic)
+{
+    const std::string camera = input("camera.json");
+    writeFile(camera, R"({"eye": [0, 1.25, 2.1650635], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_deg": 60})");
+    const std::string common = "optimize scene:sphere --volume-res 48 --opt-res 16 --res 32x32 --steps 0 --cache-dir " +
+                               quoted(output("")) + " -o " + quoted(output("best.png"));
+    const CliResult result = runCli(common + " --camera " + quoted(camera) + " --json " + quoted(output("b.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("b.json")));
+    EXPECT_NEAR(report.at("theta").get<double>(), 60.0, 1e-6);
+    EXPECT_NEAR(report.at("phi").get<double>(), 0.0, 1e-6);
+    fs::remove_all(output(""));
+    fs::create_directories(output(""));
+    expectRejected(common + " --ortho", {"--ortho"});
+}
+
+TEST_F(Cli, EvaluateTakesTheMeshAndVolumeOptions)
+{
+    const CliResult result =
+        runCli("evaluate " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) +
+               " --scalar pressure_t200 --energy scalar --cap-holes --band 4 --reach 0.7 --distance unsigned "
+               "--volume-res 48 --methods inversevis --opt-res 16 --steps 0 --display-res 32 --cache-dir " +
+               quoted(output("")) + " --json " + quoted(output("e.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_TRUE(nlohmann::json::parse(std::ifstream(output("e.json"))).contains("vampy_artery_cfd_pressure"));
+}
+
 TEST_F(Cli, BadImageResolution)
 {
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");

@@ -10,9 +10,9 @@ namespace ivis::vdb {
 
 void validate(const VolumeOptions& options)
 {
-    if (options.resolution < 16 || options.resolution > 4096)
-        throw ValueError("volume resolution " + std::to_string(options.resolution) +
-                         " is out of range (16 to 4096)");
+    if (options.resolution < kMinResolution || options.resolution > kMaxResolution)
+        throw ValueError("volume resolution " + std::to_string(options.resolution) + " is out of range (" +
+                         std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) + ")");
     if (!(options.bandVoxels >= 3.0f) || !std::isfinite(options.bandVoxels) || options.bandVoxels > 64.0f)
         throw ValueError("narrow band half-width " + std::to_string(options.bandVoxels) +
                          " voxels is out of range (3 to 64)");

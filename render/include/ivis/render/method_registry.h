@@ -14,6 +14,9 @@ namespace ivis::render {
 /// @brief Every registered method's description, in the order --help lists them.
 const std::vector<const MethodInfo*>& methodRegistry();
 
+/// @brief The method a command uses when none is named: the paper's InverseVis with its defaults.
+MethodPtr defaultMethod();
+
 /// @brief Names of the registered methods, in registry order.
 std::vector<std::string> methodNames();
 

@@ -21,7 +21,7 @@ struct RenderOptions {
     int width = 1000;
     int height = 1000;
     int samplesPerPixel = 1;  ///< supersampling: a fixed R2 pattern per pixel, the first at its centre
-    MethodPtr method = makeMethod("inversevis");  ///< the method and its parameters
+    MethodPtr method = defaultMethod();  ///< the method and its parameters
     ShadingOptions shading;
     bool outline = true;      ///< dark outline around the directly visible object
     bool legend = true;       ///< colour bar with the scalar's name and range

@@ -18,6 +18,10 @@ namespace ivis::vdb {
 /// @brief Half the edge of the cube [-kBoxHalfExtent, kBoxHalfExtent]^3 the resolution spans.
 inline constexpr double kBoxHalfExtent = 2.5;
 
+/// @brief Volume resolutions accepted by validate() (voxels across the box).
+inline constexpr int kMinResolution = 16;
+inline constexpr int kMaxResolution = 4096;
+
 /// @brief Whether the distance carries an inside/outside sign.
 enum class DistanceSign {
     Auto,     ///< signed for closed meshes, unsigned when boundary edges exist
