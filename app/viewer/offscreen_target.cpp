@@ -106,4 +106,16 @@ std::vector<std::uint8_t> OffscreenTarget::readRegion() const
     return region;
 }
 
+core::Image regionImage(const std::vector<std::uint8_t>& region, int width, int height)
+{
+    const float grey[3] = {0.0f, core::linearFromSrgb(128.0f / 255.0f), 1.0f};
+    core::Image image(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float g = grey[std::min<int>(region[std::size_t(y) * width + x], 2)];
+            image.at(x, y) = glm::vec4(g, g, g, 1.0f);
+        }
+    return image;
+}
+
 }  // namespace ivis::app

@@ -44,4 +44,8 @@ private:
     int mHeight = 0;
 };
 
+/// @brief Regions as readRegion() returns them (@a width x @a height) shown as grey levels: 0
+///        background, 128 direct, 255 indirect (sRGB-encoded values in the PNG).
+core::Image regionImage(const std::vector<std::uint8_t>& region, int width, int height);
+
 }  // namespace ivis::app
