@@ -51,6 +51,23 @@ void checkGl(const char* what)
     throw GlError(std::string(what) + ": " + errorName(first));
 }
 
+GLuint newName(void (*generate)(GLsizei, GLuint*))
+{
+    GLuint id = 0;
+    generate(1, &id);
+    return id;
+}
+
+void textureParameters(GLenum target, GLint filter)
+{
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
 void detail::deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
 void detail::deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void detail::deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }

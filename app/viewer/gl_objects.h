@@ -25,6 +25,12 @@ public:
 /// @brief Throws GlError naming @a what if glGetError reports anything (drains the error queue).
 void checkGl(const char* what);
 
+/// @brief A new GL object name from a glGen* function (glGenBuffers, glGenTextures, ...).
+GLuint newName(void (*generate)(GLsizei, GLuint*));
+
+/// @brief Filtering @a filter at level 0 only, clamped to the edge, for the texture bound to @a target.
+void textureParameters(GLenum target, GLint filter);
+
 /// @brief A GL object name with its delete function; move-only.
 template <void (*Delete)(GLuint)>
 class GlHandle {

@@ -7,12 +7,15 @@
 
 #include "dense_slices.h"
 #include "gl_objects.h"
+#include "gpu_frame.h"
+#include "gpu_uniforms.h"
+#include "indirect_programs.h"
+#include "offscreen_target.h"
+#include "uniform_set.h"
+#include "volume_textures.h"
 
-#include <ivis/core/camera.h>
 #include <ivis/core/image.h>
 #include <ivis/core/surface_field.h>
-#include <ivis/render/method.h>
-#include <ivis/render/shading.h>
 
 #include <cstdint>
 #include <string>
@@ -20,19 +23,11 @@
 
 namespace ivis::app {
 
-/// @brief What one frame shows.
-struct GpuFrame {
-    core::Camera camera;
-    int width = 0;   ///< pixels of the offscreen target
-    int height = 0;
-    render::MethodParams method;
-    render::ShadingOptions shading;  ///< colormap name is applied by setColormap()
-};
-
 /// @brief GL state of the viewer: mesh buffers, volume textures, programs and the offscreen target.
 class GpuRenderer {
 public:
-    /// @brief Compiles the programs. @throw GlError
+    /// @brief Compiles the mesh program (each method's indirect program is compiled when first drawn).
+    /// @throw GlError
     GpuRenderer();
 
     /// @brief Uploads positions, per-vertex scalar (NaN flagged), @a normals and triangles.
@@ -48,42 +43,33 @@ public:
     bool hasVolume() const { return mHasVolume; }
 
     /// @brief Renders @a frame into the offscreen target (resized to the frame's size).
+    /// @throw GlError when the method's indirect program does not compile
     void render(const GpuFrame& frame);
     /// @brief Copies the offscreen colour into the bound draw framebuffer's rectangle (x, y, w, h).
-    void blitTo(int x, int y, int width, int height) const;
+    void blitTo(int x, int y, int width, int height) const { mTarget.blitTo(x, y, width, height); }
     /// @brief The last frame as a linear image (decoded from the 8-bit sRGB target), row 0 at the top.
-    core::Image readColour() const;
+    core::Image readColour() const { return mTarget.readColour(); }
     /// @brief The last frame's regions (0 background, 1 direct, 2 indirect), row 0 at the top.
-    std::vector<std::uint8_t> readRegion() const;
-    int width() const { return mWidth; }
-    int height() const { return mHeight; }
+    std::vector<std::uint8_t> readRegion() const { return mTarget.readRegion(); }
+    int width() const { return mTarget.width(); }
+    int height() const { return mTarget.height(); }
 
 private:
-    void resizeTarget(int width, int height);
-
     GlProgram mMeshProgram;
-    GlProgram mIndirectProgram;
+    IndirectPrograms mIndirectPrograms;  ///< one per method, by name
+    UniformSet mSceneUniforms;           ///< mesh and volume uniforms, written to each program drawn
     GlVertexArray mMeshVao;
     GlVertexArray mEmptyVao;
     GlBuffer mPositions;  ///< vec4(position, scalar)
     GlBuffer mNormals;    ///< vec4(normal, NaN flag)
     GlBuffer mIndices;    ///< 3 uint per triangle
-    GlTexture mFar;
-    GlTexture mBand;
-    GlTexture mTriangles;
+    VolumeTextures mVolume;
     GlTexture mColormap;
-    GlFramebuffer mTarget;
-    GlTexture mColourTexture;
-    GlTexture mRegionTexture;
-    GlRenderbuffer mDepth;
+    OffscreenTarget mTarget;
     const core::SurfaceField* mField = nullptr;
     GLsizei mIndexCount = 0;
     bool mHasVolume = false;
-    float mFineVoxelSize = 0.0f;
-    float mReach = 0.0f;
-    float mTextureVoxelSize = 0.0f;
-    int mWidth = 0;
-    int mHeight = 0;
+    VolumeScale mVolumeScale;
 };
 
 }  // namespace ivis::app

@@ -1,9 +1,8 @@
 /// @file shaders.h
-/// @brief GLSL 4.30 sources of the viewer's two passes: the mesh (direct part, with shadows) and
-///        the full-screen indirect pass (InverseVis curved rays, fixed or adaptive alpha, the quadratic
-///        mirror, the ring map).
+/// @brief GLSL 4.30 sources of the viewer's passes, composed from the snippets in assets/shaders/:
+///        the mesh (direct part, with shadows) and, per method, the full-screen indirect pass.
 /// @note Each function of the shaders mirrors one CPU function of render/ (named in comments in the
-///       source) so that the GPU picture equals render::renderImage's up to float rounding.
+///       snippets) so that the GPU picture equals render::renderImage's up to float rounding.
 #pragma once
 
 #include <string>
@@ -16,7 +15,9 @@ std::string meshVertex();
 std::string meshFragment();
 /// @brief Vertex shader of the full-screen pass: one triangle at depth 1 (drawn where no mesh is).
 std::string fullScreenVertex();
-/// @brief Fragment shader of the full-screen pass: the method's indirect ray for empty pixels.
-std::string indirectFragment();
+/// @brief Fragment shader of the full-screen pass for the method named @a method: the shared
+///        snippets, then method_<method>.glsl (which defines indirectRay), then indirect_main.glsl.
+/// @throw GlError when no snippet method_<method>.glsl was embedded
+std::string indirectFragment(const std::string& method);
 
 }  // namespace ivis::app::shaders

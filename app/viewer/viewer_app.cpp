@@ -1,5 +1,8 @@
 #include "viewer_app.h"
 
+#include "gl_window.h"
+#include "viewer_panel.h"
+
 #include "../mesh_options.h"
 
 #include <ivis/core/colormap.h>
@@ -25,13 +28,6 @@
 namespace ivis::app {
 namespace {
 
-std::string gLastGlfwError;
-
-void onGlfwError(int code, const char* description)
-{
-    gLastGlfwError = std::string(description ? description : "unknown") + " (GLFW error " + std::to_string(code) + ")";
-}
-
 double now() { return glfwGetTime(); }
 
 /// Milliseconds taken by @a work, waiting for the GPU to finish.
@@ -42,51 +38,6 @@ double timedMs(Work&& work)
     work();
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-void tooltip(const char* text)
-{
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(text);
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
-}
-
-/// Sliders of the curved rays' hull offset (below the volume's @a reach), step and max steps; true when changed.
-bool curvedRaySliders(render::CurvedRayParams& curved, float reach)
-{
-    bool changed = ImGui::SliderFloat("hull offset", &curved.hullOffset, 0.05f, 0.98f * reach, "%.3f");
-    tooltip("phi0: the hull {phi = phi0} the curved rays start from; below the volume's reach");
-    changed |= ImGui::SliderFloat("step h", &curved.stepSize, 0.01f, 0.5f, "%.3f");
-    changed |= ImGui::SliderInt("max steps", &curved.maxSteps, 10, 4000);
-    return changed;
-}
-
-/// Sliders of the adaptive InverseVis's profile coefficients a0, a1, a2; true when changed.
-bool profileSliders(render::AlphaProfile& profile)
-{
-    char help[200];
-    std::snprintf(help, sizeof help,
-                  "alpha(c) = a0 + a1 c + a2 c^2, clamped to [0, %.1f]; c = r . grad phi / |grad phi| at the hull "
-                  "seed (0 where the view ray grazes the hull, growing toward the silhouette)",
-                  profile.maxAlpha);
-    bool changed = false;
-    for (int i = 0; i < 3; ++i) {
-        const std::string label = "a" + std::to_string(i);
-        changed |= ImGui::SliderFloat(label.c_str(), &profile.coefficients[std::size_t(i)], -2.0f, 6.0f, "%.3f");
-        tooltip(help);
-    }
-    return changed;
-}
-
-/// Label of the parameter optimiser's button for @a method.
-const char* optimiseLabel(render::Method method)
-{
-    if (method == render::Method::Mirror) return "optimise w";
-    return method == render::Method::InverseVisAdaptive ? "optimise profile" : "optimise alpha";
 }
 
 }  // namespace
@@ -122,26 +73,12 @@ ViewerApp::~ViewerApp()
 
 void ViewerApp::openWindow()
 {
-    glfwSetErrorCallback(onGlfwError);
-    if (!glfwInit())
-        throw GlError("cannot open a window: " + gLastGlfwError + " (no display? headless use: xvfb-run -a ...)");
+    initGlfw();
     mGlfwReady = true;
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_VISIBLE, mOptions.screenshot.empty() ? GLFW_TRUE : GLFW_FALSE);
     const std::string title = "inversevis-view: " + core::sourceStem(mOptions.mesh.source);
-    mWindow = glfwCreateWindow(mOptions.width, mOptions.height, title.c_str(), nullptr, nullptr);
-    if (!mWindow) throw GlError("OpenGL 4.3 core profile is not available: " + gLastGlfwError);
-    glfwMakeContextCurrent(mWindow);
-    if (epoxy_gl_version() < 43)
-        throw GlError("OpenGL 4.3 core profile is not available (the context reports " +
-                      std::to_string(epoxy_gl_version() / 10) + "." + std::to_string(epoxy_gl_version() % 10) + ")");
+    mWindow = createGlWindow(title, mOptions.width, mOptions.height, mOptions.screenshot.empty());
     glfwSwapInterval(mOptions.headless() ? 0 : 1);
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    mGlRenderer = std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
+    mGlRenderer = glRendererName();
     mRenderer = std::make_unique<GpuRenderer>();
     mRenderer->setMesh(*mField, render::vertexNormals(mField->mesh));
     mRenderer->setColormap(mShading.colormap);
@@ -149,24 +86,15 @@ void ViewerApp::openWindow()
     if (mGlRenderer.find("llvmpipe") != std::string::npos || mGlRenderer.find("softpipe") != std::string::npos)
         mRenderScale = 0.5f;
     if (!mOptions.headless()) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;
-        ImGui::StyleColorsDark();
-        ImGui_ImplGlfw_InitForOpenGL(mWindow, true);
-        ImGui_ImplOpenGL3_Init("#version 430 core");
+        startImGui(mWindow);
         mImGuiReady = true;
     }
 }
 
 void ViewerApp::closeWindow()
 {
-    if (mImGuiReady) {
-        ImGui_ImplOpenGL3_Shutdown();
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext();
-        mImGuiReady = false;
-    }
+    if (mImGuiReady) stopImGui();
+    mImGuiReady = false;
     mRenderer.reset();  // GL objects go before their context
     if (mWindow) glfwDestroyWindow(mWindow);
     mWindow = nullptr;
@@ -248,15 +176,7 @@ void ViewerApp::writeScreenshot(const std::string& path, const std::string& regi
 {
     core::writePng(mRenderer->readColour(), path, false);
     if (!regionPath.empty()) {
-        const std::vector<std::uint8_t> region = mRenderer->readRegion();
-        const float grey[3] = {0.0f, core::linearFromSrgb(128.0f / 255.0f), 1.0f};
-        core::Image image(mRenderer->width(), mRenderer->height());
-        for (int y = 0; y < image.height(); ++y)
-            for (int x = 0; x < image.width(); ++x) {
-                const float g = grey[std::min<int>(region[std::size_t(y) * image.width() + x], 2)];
-                image.at(x, y) = glm::vec4(g, g, g, 1.0f);
-            }
-        core::writePng(image, regionPath, false);
+        core::writePng(regionImage(mRenderer->readRegion(), mRenderer->width(), mRenderer->height()), regionPath, false);
     }
 }
 
@@ -397,92 +317,16 @@ void ViewerApp::drawPanel()
     }
     ImGui::Separator();
 
-    bool changed = false;
-    const std::vector<std::string> methods = render::methodNames();
-    int method = int(mMethod.method);
-    if (ImGui::BeginCombo("method", methods[std::size_t(method)].c_str())) {
-        for (int i = 0; i < int(methods.size()); ++i)
-            if (ImGui::Selectable(methods[std::size_t(i)].c_str(), i == method)) {
-                mMethod.method = render::Method(i);
-                changed = true;
-            }
-        ImGui::EndCombo();
-    }
     const float reach = mLoaded ? mLoaded->slices.reach : 0.6f;
-    switch (mMethod.method) {
-    case render::Method::InverseVis:
-        changed |= ImGui::SliderFloat("alpha", &mMethod.curved.alpha, 0.0f, 4.0f, "%.3f");
-        changed |= curvedRaySliders(mMethod.curved, reach);
-        break;
-    case render::Method::InverseVisAdaptive:
-        changed |= profileSliders(mMethod.profile);
-        changed |= curvedRaySliders(mMethod.curved, reach);
-        break;
-    case render::Method::Mirror:
-        for (int i = 0; i < 5; ++i) {
-            const std::string label = "w" + std::to_string(i + 1);
-            changed |= ImGui::SliderFloat(label.c_str(), &mMethod.mirror.w[std::size_t(i)], -1.0f, 1.0f, "%.3f");
-        }
-        changed |= ImGui::SliderFloat("behind", &mMethod.mirror.distanceBehind, 0.0f, 3.0f, "%.2f");
-        break;
-    case render::Method::Neugebauer:
-        changed |= ImGui::SliderFloat("ring width", &mMethod.ring.ringWidth, 0.05f, 0.8f, "%.2f");
-        changed |= ImGui::DragFloat3("centre", &mMethod.ring.centre.x, 0.01f, -1.0f, 1.0f, "%.2f");
-        break;
-    default: break;
-    }
+    bool changed = methodWidgets(mMethod, reach);
     ImGui::Separator();
-
-    const std::vector<std::string> maps = core::colormapNames();
-    if (ImGui::BeginCombo("colour map", maps[std::size_t(std::clamp(mColormapIndex, 0, int(maps.size()) - 1))].c_str())) {
-        for (int i = 0; i < int(maps.size()); ++i)
-            if (ImGui::Selectable(maps[std::size_t(i)].c_str(), i == mColormapIndex)) {
-                mColormapIndex = i;
-                mShading.colormap = maps[std::size_t(i)];
-                mRenderer->setColormap(mShading.colormap);
-                changed = true;
-            }
-        ImGui::EndCombo();
-    }
-    if (mField->hasScalar()) {
-        const float speed = std::max(1e-6f, (mDataRange.hi - mDataRange.lo) / 300.0f);
-        float lo = mShading.range.lo, hi = mShading.range.hi;
-        if (ImGui::DragFloatRange2("range", &lo, &hi, speed, 0.0f, 0.0f, "%.4g", "%.4g")) {
-            if (lo < hi) {
-                mShading.range = {lo, hi};
-                changed = true;
-            }
-        }
-        ImGui::SameLine();
-        if (ImGui::SmallButton("data")) {
-            mShading.range = mDataRange;
-            changed = true;
-        }
-        tooltip("reset the range to the data's minimum and maximum");
-    }
-    changed |= ImGui::Checkbox("shadows", &mShading.shadows);
-    changed |= ImGui::SliderFloat("render scale", &mRenderScale, 0.25f, 1.0f, "%.2f");
-    tooltip("fraction of the window's pixels traced (software OpenGL starts at 0.5)");
+    const std::string colormap = mShading.colormap;
+    changed |= lookWidgets(mShading, mColormapIndex, mDataRange, mField->hasScalar(), mRenderScale);
+    if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
     ImGui::Separator();
 
     const bool busy = mJob.valid() || !mLoaded;
-    {
-        const std::vector<std::string> energies = {"visibility", "scalar"};
-        const bool scalar = mOptimiser.optimization.energy == "scalar";
-        if (ImGui::BeginCombo("energy", mOptimiser.optimization.energy.c_str())) {
-            for (const std::string& name : energies)
-                if ((name != "scalar" || mField->hasScalar()) &&
-                    ImGui::Selectable(name.c_str(), name == mOptimiser.optimization.energy))
-                    mOptimiser.optimization.energy = name;
-            ImGui::EndCombo();
-        }
-        tooltip(scalar ? "scalar: sum of the normalised scalar over the pixels that show the surface (METHOD.md)"
-                       : "visibility: fraction of the surface voxels some ray lands in (METHOD.md, the paper's Table 1)");
-        ImGui::SliderInt("opt. rays", &mOptimiser.resolution, 16, 400);
-        tooltip("rays per image side while optimising (paper: 100 or 1000)");
-        ImGui::SliderInt("anneal steps", &mOptimiser.optimization.steps, 1, 100);
-        tooltip("proposals of the simulated annealing after the start view");
-    }
+    optimiserWidgets(mOptimiser, mField->hasScalar());
     const bool hasParameters = mMethod.curvedRays() || mMethod.method == render::Method::Mirror;
     ImGui::BeginDisabled(busy || !hasParameters);
     if (ImGui::Button(optimiseLabel(mMethod.method))) startOptimiser(false);
@@ -517,23 +361,10 @@ void ViewerApp::drawPanel()
 
 void ViewerApp::writeWindow(const std::string& path)
 {
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(mWindow, &width, &height);
-    std::vector<std::uint8_t> bytes(std::size_t(width) * height * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    checkGl("reading the window back");
-    core::Image image(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const std::uint8_t* p = bytes.data() + (std::size_t(height - 1 - y) * width + x) * 4;
-            image.at(x, y) = glm::vec4(core::linearFromSrgb(p[0] / 255.0f), core::linearFromSrgb(p[1] / 255.0f),
-                                       core::linearFromSrgb(p[2] / 255.0f), 1.0f);
-        }
+    const core::Image image = readWindow(mWindow);
     core::writePng(image, path, false);
-    std::printf("inversevis-view: wrote %s (window %dx%d, %s)\n", path.c_str(), width, height, mStatus.c_str());
+    std::printf("inversevis-view: wrote %s (window %dx%d, %s)\n", path.c_str(), image.width(), image.height(),
+                mStatus.c_str());
 }
 
 int ViewerApp::runInteractive()

@@ -1,0 +1,151 @@
+#include "gpu_uniforms.h"
+
+#include <ivis/render/curved_ray.h>
+#include <ivis/render/neugebauer_map.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace ivis::app {
+namespace {
+
+constexpr int kMaxHullSteps = 4096;  // the CPU's backward hull search is unbounded; 4096 is never reached in practice
+constexpr int kRingMaxSteps = 1000;
+
+glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
+
+/// World -> clip for a camera, built from CameraFrame's own basis so rasterised and traced pixels agree.
+glm::mat4 clipFromWorld(const core::CameraFrame& frame)
+{
+    const core::Camera& camera = frame.camera();
+    const glm::dvec3 r = frame.right(), u = frame.upVector(), f = frame.forward(), eye = camera.eye;
+    glm::dmat4 view(1.0);
+    for (int i = 0; i < 3; ++i) {
+        view[i][0] = r[i];
+        view[i][1] = u[i];
+        view[i][2] = -f[i];
+    }
+    view[3][0] = -glm::dot(r, eye);
+    view[3][1] = -glm::dot(u, eye);
+    view[3][2] = glm::dot(f, eye);
+    // The mesh lies in [-1,1]^3: within sqrt(3) of the origin.
+    const double centre = glm::dot(glm::dvec3(0.0) - eye, f), margin = 2.0;
+    const double aspect = double(frame.width()) / double(frame.height());
+    glm::dmat4 projection(0.0);
+    if (camera.orthographic) {
+        const double hh = camera.orthoHalfHeight, n = centre - margin, fa = centre + margin;
+        projection[0][0] = 1.0 / (hh * aspect);
+        projection[1][1] = 1.0 / hh;
+        projection[2][2] = -2.0 / (fa - n);
+        projection[3][2] = -(fa + n) / (fa - n);
+        projection[3][3] = 1.0;
+    } else {
+        const double hh = std::tan(0.5 * camera.fovYDeg * M_PI / 180.0);
+        const double n = std::max(1e-3, centre - margin), fa = std::max(n + 1e-3, centre + margin);
+        projection[0][0] = 1.0 / (hh * aspect);
+        projection[1][1] = 1.0 / hh;
+        projection[2][2] = -(fa + n) / (fa - n);
+        projection[2][3] = -1.0;
+        projection[3][2] = -2.0 * fa * n / (fa - n);
+    }
+    return glm::mat4(projection * view);
+}
+
+/// The uniforms both passes read every frame: the look and the camera's position and heading.
+void setSharedUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera)
+{
+    const render::ShadingOptions& shading = frame.shading;
+    program.set("uRange", glm::vec2(shading.range.lo, shading.range.hi));
+    program.set("uNanColour", shading.nanColour);
+    program.set("uNoDataColour", shading.noDataColour);
+    program.set("uEye", toFloat(frame.camera.eye));
+    program.set("uForward", toFloat(camera.forward()));
+    program.set("uOrtho", frame.camera.orthographic);
+}
+
+}  // namespace
+
+void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field)
+{
+    scene.set("uHasScalar", field.hasScalar());
+    scene.set("uDataTriangles", int(std::min<std::size_t>(field.mesh.dataTriangleCount, 0x7fffffff)));
+}
+
+void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float interiorStep)
+{
+    auto dims = [](const std::array<int, 3>& d) { return glm::ivec3(d[0], d[1], d[2]); };
+    scene.set("uFarDims", dims(slices.far.dims));
+    scene.set("uFarOrigin", slices.far.origin);
+    scene.set("uFarInvVoxel", 1.0f / slices.farVoxelSize);
+    scene.set("uOutside", slices.outside);
+    scene.set("uHasFineBand", slices.hasFineBand);
+    scene.set("uTrustBelow", slices.trustBelow);
+    scene.set("uBandDims", dims(slices.band.dims));
+    scene.set("uBandOrigin", slices.band.origin);
+    scene.set("uTriangleDims", dims(slices.triangles.dims));
+    scene.set("uTriangleOrigin", slices.triangles.origin);
+    scene.set("uVoxel", slices.voxelSize);
+    scene.set("uInvVoxel", 1.0f / slices.voxelSize);
+    scene.set("uUnsigned", slices.unsignedDistance);
+    scene.set("uInteriorStep", interiorStep);
+    scene.set("uBoxHalf", float(vdb::kBoxHalfExtent));
+    scene.set("uVolumeReady", true);
+}
+
+void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera)
+{
+    setSharedUniforms(program, frame, camera);
+    program.set("uClipFromWorld", clipFromWorld(camera));
+    program.set("uToLight", toFloat(glm::normalize(-0.35 * camera.right() + 0.55 * camera.upVector() -
+                                                   0.75 * camera.forward())));
+    program.set("uAmbient", frame.shading.ambient);
+    program.set("uShadows", frame.shading.shadows);
+}
+
+void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::CameraFrame& camera,
+                         const core::SurfaceField& field, const VolumeScale& volume)
+{
+    setSharedUniforms(p, frame, camera);
+    const render::MethodParams& method = frame.method;
+    p.set("uViewport", glm::vec2(float(frame.width), float(frame.height)));
+    p.set("uHalfHeight", float(frame.camera.orthographic ? frame.camera.orthoHalfHeight
+                                                         : std::tan(0.5 * frame.camera.fovYDeg * M_PI / 180.0)));
+    p.set("uAspect", float(double(frame.width) / double(frame.height)));
+    p.set("uRight", toFloat(camera.right()));
+    p.set("uUp", toFloat(camera.upVector()));
+    p.set("uIndirectBrightness", frame.shading.indirectBrightness);
+    const render::CurvedRayParams& curved = method.curved;
+    p.set("uEpsilon", curved.landingEpsilon > 0.0f ? curved.landingEpsilon : 0.5f * volume.textureVoxelSize);
+    p.set("uAlpha", curved.alpha);
+    const std::array<float, 3>& a = method.profile.coefficients;
+    p.set("uAlphaProfile", glm::vec3(a[0], a[1], a[2]));
+    p.set("uMaxAlpha", method.profile.maxAlpha);
+    p.set("uRetries", method.profile.retries);
+    p.set("uStepSize", curved.stepSize);
+    p.set("uHullOffset", curved.hullOffset);
+    p.set("uEscape", 0.999f * volume.reach);
+    p.set("uMaxSteps", curved.maxSteps);
+    p.set("uMaxHullSteps", kMaxHullSteps);
+    const core::Bounds3 hull = render::hullBounds(field.mesh, curved.hullOffset, volume.fineVoxelSize);
+    p.set("uHullLo", glm::vec3(hull.lo));
+    p.set("uHullHi", glm::vec3(hull.hi));
+    p.setArray("uMirrorW", method.mirror.w.data(), 5);
+    p.set("uMirrorZm", float(-glm::length(frame.camera.target - frame.camera.eye) - method.mirror.distanceBehind));
+    p.set("uMirrorMaxSteps", method.mirror.maxSteps);
+    if (method.method == render::Method::Neugebauer) {
+        const render::RingLayout rings = render::layoutRings(camera, field.mesh, method.ring);
+        p.set("uRingCentre", glm::vec2(rings.centre));
+        p.set("uRingInner", float(rings.innerRadius));
+        p.set("uRingOuter", float(rings.outerRadius));
+        p.set("uBackCentre", glm::vec2(rings.backCentre));
+        p.set("uBackRadius", float(rings.backRadius));
+        p.set("uRingOrigin", method.ring.centre);
+        p.set("uRingMaxSteps", kRingMaxSteps);
+    }
+}
+
+}  // namespace ivis::app

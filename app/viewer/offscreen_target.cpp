@@ -1,0 +1,121 @@
+#include "offscreen_target.h"
+
+#include <algorithm>
+
+namespace ivis::app {
+
+OffscreenTarget::OffscreenTarget()
+    : mFramebuffer(newName(glGenFramebuffers)),
+      mColour(newName(glGenTextures)),
+      mRegion(newName(glGenTextures)),
+      mDepth(newName(glGenRenderbuffers))
+{
+}
+
+void OffscreenTarget::resize(int width, int height)
+{
+    if (width == mWidth && height == mHeight) return;
+    glBindTexture(GL_TEXTURE_2D, mColour.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, mRegion.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, width, height, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindRenderbuffer(GL_RENDERBUFFER, mDepth.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, mColour.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, mRegion.id(), 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mDepth.id());
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("creating the offscreen target");
+    if (status != GL_FRAMEBUFFER_COMPLETE) throw GlError("the offscreen framebuffer is incomplete");
+    mWidth = width;
+    mHeight = height;
+}
+
+void OffscreenTarget::beginFrame(const glm::vec3& background) const
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());
+    glViewport(0, 0, mWidth, mHeight);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    const GLfloat clearColour[4] = {core::srgbFromLinear(background.x), core::srgbFromLinear(background.y),
+                                    core::srgbFromLinear(background.z), 1.0f};
+    const GLuint clearRegion[4] = {0, 0, 0, 0};
+    const GLfloat clearDepth = 1.0f;
+    glClearBufferfv(GL_COLOR, 0, clearColour);
+    glClearBufferuiv(GL_COLOR, 1, clearRegion);
+    glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+}
+
+void OffscreenTarget::blitTo(int x, int y, int width, int height) const
+{
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    const bool same = width == mWidth && height == mHeight;
+    glBlitFramebuffer(0, 0, mWidth, mHeight, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT,
+                      same ? GL_NEAREST : GL_LINEAR);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+core::Image OffscreenTarget::readColour() const
+{
+    std::vector<std::uint8_t> bytes(std::size_t(mWidth) * mHeight * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, mWidth, mHeight, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGl("reading the colour back");
+    float decode[256];
+    for (int i = 0; i < 256; ++i) decode[i] = core::linearFromSrgb(float(i) / 255.0f);
+    core::Image image(mWidth, mHeight);
+    for (int row = 0; row < mHeight; ++row) {
+        const std::uint8_t* src = bytes.data() + std::size_t(mHeight - 1 - row) * mWidth * 4;  // GL rows start at the bottom
+        for (int x = 0; x < mWidth; ++x)
+            image.at(x, row) = glm::vec4(decode[src[4 * x]], decode[src[4 * x + 1]], decode[src[4 * x + 2]], 1.0f);
+    }
+    return image;
+}
+
+std::vector<std::uint8_t> OffscreenTarget::readRegion() const
+{
+    std::vector<std::uint8_t> bytes(std::size_t(mWidth) * mHeight), region(bytes.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, mWidth, mHeight, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGl("reading the regions back");
+    for (int row = 0; row < mHeight; ++row)
+        std::copy_n(bytes.data() + std::size_t(mHeight - 1 - row) * mWidth, mWidth, region.data() + std::size_t(row) * mWidth);
+    return region;
+}
+
+core::Image regionImage(const std::vector<std::uint8_t>& region, int width, int height)
+{
+    const float grey[3] = {0.0f, core::linearFromSrgb(128.0f / 255.0f), 1.0f};
+    core::Image image(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float g = grey[std::min<int>(region[std::size_t(y) * width + x], 2)];
+            image.at(x, y) = glm::vec4(g, g, g, 1.0f);
+        }
+    return image;
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,34 @@
+/// @file viewer_panel.h
+/// @brief The widgets of the viewer's Dear ImGui panel: the method and its parameters, the look,
+///        the optimiser's settings.
+/// @note Call between ImGui::Begin and ImGui::End of the panel, on the main thread.
+#pragma once
+
+#include "view_optimiser.h"
+
+#include <ivis/core/colormap.h>
+#include <ivis/render/method.h>
+#include <ivis/render/shading.h>
+
+namespace ivis::app {
+
+/// @brief Shows @a text as the tooltip of the last widget while it is hovered (even disabled).
+void tooltip(const char* text);
+
+/// @brief The method combo and the chosen method's sliders; true when anything changed.
+/// @param reach the volume's reach: the curved rays' hull offset stays below it
+bool methodWidgets(render::MethodParams& params, float reach);
+
+/// @brief Colour map, scalar range (when @a hasScalar; "data" resets it to @a dataRange), shadows
+///        and render scale; true when anything changed.
+/// @param colormapIndex index of shading.colormap in core::colormapNames(), kept in step with it
+bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ScalarRange& dataRange,
+                 bool hasScalar, float& renderScale);
+
+/// @brief Energy (scalar only when @a hasScalar), optimisation rays and annealing steps.
+void optimiserWidgets(OptimiserSettings& settings, bool hasScalar);
+
+/// @brief Label of the parameter optimiser's button for @a method.
+const char* optimiseLabel(render::Method method);
+
+}  // namespace ivis::app

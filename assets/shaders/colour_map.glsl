@@ -1,0 +1,36 @@
+// Colours of surface points: scalar range, colour map, albedo and the sRGB encoding.
+// ---- look (render::ShadingOptions)
+uniform bool uHasScalar;
+uniform int uDataTriangles;     // triangles at or above this index are hole caps
+uniform vec2 uRange;            // scalar range lo, hi
+uniform vec3 uNanColour;
+uniform vec3 uNoDataColour;
+
+// core::ScalarRange::normalized
+float normalizedScalar(float value)
+{
+    if (uRange.x == uRange.y) return 0.5;
+    return clamp((value - uRange.x) / (uRange.y - uRange.x), 0.0, 1.0);
+}
+
+// core::Colormap::at, tabulated at 256 points and interpolated linearly.
+vec3 colormap(float t)
+{
+    return texture(uColormap, vec2((clamp(t, 0.0, 1.0) * 255.0 + 0.5) / 256.0, 0.5)).rgb;
+}
+
+// render::Shader::albedo for a point of @a triangle whose interpolated scalar is @a value.
+vec3 albedo(int triangle, float value)
+{
+    if (!uHasScalar || triangle >= uDataTriangles) return uNoDataColour;
+    uvec3 v = triangleVertices(triangle);
+    if (vertexNormal[v.x].w + vertexNormal[v.y].w + vertexNormal[v.z].w > 0.0) return uNanColour;
+    return colormap(normalizedScalar(value));
+}
+
+// core::srgbFromLinear: the colour attachment holds sRGB-encoded 8-bit values, as the PNGs do.
+vec3 srgbFromLinear(vec3 c)
+{
+    c = clamp(c, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
+}

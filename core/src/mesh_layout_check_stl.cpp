@@ -1,0 +1,42 @@
+#include "mesh_layout_check_formats.h"
+
+#include <cstdint>
+#include <string>
+
+namespace ivis::core::detail {
+
+MeshLayout checkStl(const std::string& path, const std::string& data)
+{
+    if (data.size() >= 84) {
+        std::uint32_t count = 0;
+        for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(data[80 + i]);
+        if (84 + 50 * std::uint64_t(count) == data.size()) return {count, true};
+    }
+    const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
+    if (lowercase(start) != "solid") {
+        failInput(path, "not a valid STL mesh");
+    }
+    TextCursor lines(data);
+    std::size_t facets = 0;
+    while (!lines.atEnd()) {
+        const std::string_view line = lines.line();
+        if (line.find("outer") == std::string_view::npos && line.find("OUTER") == std::string_view::npos) {
+            continue;
+        }
+        const std::string where = "facet " + std::to_string(facets++);
+        for (int corner = 0; corner < 3; ++corner) {
+            if (lines.atEnd()) failInput(path, "not a valid STL mesh (the file is truncated)");
+            const std::string content(lines.line());
+            TextCursor in(content);
+            in.token();  // "vertex"
+            for (int k = 0; k < 3; ++k) {
+                const std::string_view token = in.token();
+                if (token.empty()) failInput(path, where + " has a corner with fewer than three coordinates");
+                checkCoordinate(path, token, where);
+            }
+        }
+    }
+    return {facets, false};
+}
+
+}  // namespace ivis::core::detail
