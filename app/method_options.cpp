@@ -1,7 +1,7 @@
 #include "method_options.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/render/curved_ray_method.h>
+#include <ivis/render/curved_ray.h>
 #include <ivis/render/method_registry.h>
 
 #include <cstdio>
@@ -43,15 +43,18 @@ render::MethodPtr MethodOptions::create() const
 
 void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOptions& volume)
 {
-    if (!method.curvedRays()) return;
-    const float hullOffset = method.curved()->rayParams().hullOffset;
-    if (hullOffset < 0.999 * volume.farFieldReach) return;
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "--hull-offset %g is at or beyond the volume's --reach %g: the hull would lie outside the distance "
-                  "field (raise --reach above the hull offset)",
-                  double(hullOffset), volume.farFieldReach);
-    throw ValueError(text);
+    const render::ParameterValues values = method.values();
+    for (const render::ParameterSpec& spec : method.info().parameters) {
+        if (!spec.belowReach) continue;
+        const float value = values.at(spec.key)[0];
+        if (value < render::escapeDistance(float(volume.farFieldReach))) continue;
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%s %g is at or beyond the volume's --reach %g: it would lie outside the distance field (raise "
+                      "--reach above it)",
+                      spec.option().c_str(), double(value), volume.farFieldReach);
+        throw ValueError(text);
+    }
 }
 
 }  // namespace ivis::app

@@ -30,8 +30,8 @@ private:
     std::map<std::string, CLI::Option*> mOptions;
 };
 
-/// @brief Checks that @a method's rays stay within the distance field of a volume built with
-///        @a volume (a curved-ray hull inside the field's reach).
+/// @brief Checks that the distances of @a method that must stay below the volume's reach (the
+///        curved rays' hull offset) do so for a volume built with @a volume.
 /// @throw ValueError naming both values
 void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOptions& volume);
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
-#include <ivis/render/method.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/shading.h>
 
 namespace ivis::app {
@@ -13,7 +13,7 @@ struct GpuFrame {
     core::Camera camera;
     int width = 0;   ///< pixels of the offscreen target
     int height = 0;
-    render::MethodParams method;
+    render::MethodPtr method = render::defaultMethod();
     render::ShadingOptions shading;  ///< colormap name is applied by setColormap()
 };
 

@@ -96,13 +96,12 @@ void GpuRenderer::render(const GpuFrame& frame)
     IVIS_CHECK(mField != nullptr);
     mTarget.resize(frame.width, frame.height);
     const core::CameraFrame camera(frame.camera, frame.width, frame.height);
-    const render::MethodParams& method = frame.method;
+    const render::Method& method = *frame.method;
 
     mSceneUniforms.applyTo(mMeshProgram);
     setMeshPassUniforms(mMeshProgram, frame, camera);
-    const bool indirect = mHasVolume && (method.curvedRays() || method.method == render::Method::Mirror ||
-                                         method.method == render::Method::Neugebauer);
-    GlProgram* indirectProgram = indirect ? &mIndirectPrograms.get(render::toString(method.method)) : nullptr;
+    const bool indirect = mHasVolume && shaders::hasIndirectFragment(method.name());
+    GlProgram* indirectProgram = indirect ? &mIndirectPrograms.get(method.name()) : nullptr;
     if (indirectProgram) {
         mSceneUniforms.applyTo(*indirectProgram);
         setIndirectUniforms(*indirectProgram, frame, camera, *mField, mVolumeScale);
@@ -117,8 +116,8 @@ void GpuRenderer::render(const GpuFrame& frame)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mNormals.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mIndices.id());
 
-    // Direct part: every face (render::FaceFilter::Any), or only those turned away (Backfaces).
-    if (method.method == render::Method::Backfaces) {
+    // Direct part: every face, or only those turned away from the camera.
+    if (method.directFaces() == core::FaceFilter::BackOnly) {
         glEnable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glCullFace(GL_FRONT);

@@ -1,14 +1,18 @@
 #include "gpu_uniforms.h"
 
 #include <ivis/render/curved_ray.h>
-#include <ivis/render/neugebauer_map.h>
+#include <ivis/render/curved_ray_method.h>
+#include <ivis/render/mirror_method.h>
+#include <ivis/render/ring_map_method.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <string>
 
 namespace ivis::app {
 namespace {
@@ -53,6 +57,41 @@ glm::mat4 clipFromWorld(const core::CameraFrame& frame)
         projection[3][2] = -2.0 * fa * n / (fa - n);
     }
     return glm::mat4(projection * view);
+}
+
+/// The uniform a parameter feeds: "u" and its key in UpperCamelCase (alpha_profile -> uAlphaProfile).
+std::string parameterUniform(const std::string& key)
+{
+    std::string name = "u";
+    bool upper = true;
+    for (char c : key) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        name += upper ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+        upper = false;
+    }
+    return name;
+}
+
+/// Sets every parameter of @a method as its uniform: an int for whole numbers, a vec3 for three
+/// components, else a float or a float array.
+void setParameterUniforms(GlProgram& p, const render::Method& method)
+{
+    const render::ParameterValues values = method.values();
+    for (const render::ParameterSpec& spec : method.info().parameters) {
+        const std::string name = parameterUniform(spec.key);
+        const std::vector<float>& v = values.at(spec.key);
+        if (spec.integer)
+            p.set(name.c_str(), int(v[0]));
+        else if (v.size() == 3)
+            p.set(name.c_str(), glm::vec3(v[0], v[1], v[2]));
+        else if (v.size() == 1)
+            p.set(name.c_str(), v[0]);
+        else
+            p.setArray(name.c_str(), v.data(), int(v.size()));
+    }
 }
 
 /// The uniforms both passes read every frame: the look and the camera's position and heading.
@@ -110,7 +149,6 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
                          const core::SurfaceField& field, const VolumeScale& volume)
 {
     setSharedUniforms(p, frame, camera);
-    const render::MethodParams& method = frame.method;
     p.set("uViewport", glm::vec2(float(frame.width), float(frame.height)));
     p.set("uHalfHeight", float(frame.camera.orthographic ? frame.camera.orthoHalfHeight
                                                          : std::tan(0.5 * frame.camera.fovYDeg * M_PI / 180.0)));
@@ -118,32 +156,31 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uRight", toFloat(camera.right()));
     p.set("uUp", toFloat(camera.upVector()));
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);
-    const render::CurvedRayParams& curved = method.curved;
-    p.set("uEpsilon", curved.landingEpsilon > 0.0f ? curved.landingEpsilon : 0.5f * volume.textureVoxelSize);
-    p.set("uAlpha", curved.alpha);
-    const std::array<float, 3>& a = method.profile.coefficients;
-    p.set("uAlphaProfile", glm::vec3(a[0], a[1], a[2]));
-    p.set("uMaxAlpha", method.profile.maxAlpha);
-    p.set("uRetries", method.profile.retries);
-    p.set("uStepSize", curved.stepSize);
-    p.set("uHullOffset", curved.hullOffset);
-    p.set("uEscape", 0.999f * volume.reach);
-    p.set("uMaxSteps", curved.maxSteps);
-    p.set("uMaxHullSteps", kMaxHullSteps);
-    const core::Bounds3 hull = render::hullBounds(field.mesh, curved.hullOffset, volume.fineVoxelSize);
-    p.set("uHullLo", glm::vec3(hull.lo));
-    p.set("uHullHi", glm::vec3(hull.hi));
-    p.setArray("uMirrorW", method.mirror.w.data(), 5);
-    p.set("uMirrorZm", float(-glm::length(frame.camera.target - frame.camera.eye) - method.mirror.distanceBehind));
-    p.set("uMirrorMaxSteps", method.mirror.maxSteps);
-    if (method.method == render::Method::Neugebauer) {
-        const render::RingLayout rings = render::layoutRings(camera, field.mesh, method.ring);
-        p.set("uRingCentre", glm::vec2(rings.centre));
+    const render::Method& method = *frame.method;
+    setParameterUniforms(p, method);
+    const render::CurvedRayParams ray;  // the landing threshold of every method's rays
+    p.set("uEpsilon", ray.landingEpsilon > 0.0f ? ray.landingEpsilon : 0.5f * volume.textureVoxelSize);
+    if (const render::CurvedRayMethod* curved = method.curved()) {
+        const float hullOffset = curved->rayParams().hullOffset;
+        p.set("uMaxAlpha", render::kMaxAlpha);
+        p.set("uRetries", curved->relaunches());
+        p.set("uEscape", render::escapeDistance(volume.reach));
+        p.set("uMaxHullSteps", kMaxHullSteps);
+        const core::Bounds3 hull = render::hullBounds(field.mesh, hullOffset, volume.fineVoxelSize);
+        p.set("uHullLo", glm::vec3(hull.lo));
+        p.set("uHullHi", glm::vec3(hull.hi));
+    }
+    if (const auto* mirror = dynamic_cast<const render::MirrorMethod*>(&method)) {
+        p.set("uMirrorZm", float(-glm::length(frame.camera.target - frame.camera.eye) - mirror->params().distanceBehind));
+        p.set("uMirrorMaxSteps", mirror->params().maxSteps);
+    }
+    if (const auto* ring = dynamic_cast<const render::RingMapMethod*>(&method)) {
+        const render::RingLayout rings = render::layoutRings(camera, field.mesh, ring->params());
+        p.set("uRingPixelCentre", glm::vec2(rings.centre));
         p.set("uRingInner", float(rings.innerRadius));
         p.set("uRingOuter", float(rings.outerRadius));
         p.set("uBackCentre", glm::vec2(rings.backCentre));
         p.set("uBackRadius", float(rings.backRadius));
-        p.set("uRingOrigin", method.ring.centre);
         p.set("uRingMaxSteps", kRingMaxSteps);
     }
 }

@@ -59,9 +59,15 @@ void OrbitCamera::pan(double dx, double dy, int viewportHeight)
     target += worldPerPixel * (-dx * frame.right() + dy * frame.upVector());
 }
 
-CameraAnimation::CameraAnimation(const OrbitCamera& from, float alphaFrom, const OrbitCamera& to, float alphaTo,
-                                 double startTime, double seconds)
-    : mFrom(from), mTo(to), mAlphaFrom(alphaFrom), mAlphaTo(alphaTo), mStart(startTime), mSeconds(seconds), mActive(true)
+CameraAnimation::CameraAnimation(const OrbitCamera& from, std::vector<double> parametersFrom, const OrbitCamera& to,
+                                 std::vector<double> parametersTo, double startTime, double seconds)
+    : mFrom(from),
+      mTo(to),
+      mParametersFrom(std::move(parametersFrom)),
+      mParametersTo(std::move(parametersTo)),
+      mStart(startTime),
+      mSeconds(seconds),
+      mActive(true)
 {
     mFrom.fixed.reset();
     mTo.fixed.reset();
@@ -70,7 +76,7 @@ CameraAnimation::CameraAnimation(const OrbitCamera& from, float alphaFrom, const
     mTo.phiDeg = mFrom.phiDeg + delta;
 }
 
-void CameraAnimation::at(double now, OrbitCamera& camera, float& alpha) const
+void CameraAnimation::at(double now, OrbitCamera& camera, std::vector<double>& parameters) const
 {
     const double s = std::clamp((now - mStart) / mSeconds, 0.0, 1.0), w = s * s * (3.0 - 2.0 * s);
     camera = mFrom;
@@ -79,7 +85,9 @@ void CameraAnimation::at(double now, OrbitCamera& camera, float& alpha) const
     camera.distance = mFrom.distance + w * (mTo.distance - mFrom.distance);
     camera.target = mFrom.target + w * (mTo.target - mFrom.target);
     camera.orthoHalfHeight = mFrom.orthoHalfHeight + w * (mTo.orthoHalfHeight - mFrom.orthoHalfHeight);
-    alpha = float(mAlphaFrom + w * (mAlphaTo - mAlphaFrom));
+    parameters = mParametersFrom;
+    for (std::size_t i = 0; i < parameters.size() && i < mParametersTo.size(); ++i)
+        parameters[i] += w * (mParametersTo[i] - mParametersFrom[i]);
 }
 
 }  // namespace ivis::app

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include <optional>
+#include <vector>
 
 namespace ivis::app {
 
@@ -36,24 +37,25 @@ struct OrbitCamera {
     void pan(double dx, double dy, int viewportHeight);
 };
 
-/// @brief Eases from one orbit state (and alpha) to another in @a seconds (smoothstep), the
-///        azimuth along the shorter way round.
+/// @brief Eases from one orbit state (and a method's optimised parameters) to another in
+///        @a seconds (smoothstep), the azimuth along the shorter way round.
 class CameraAnimation {
 public:
     CameraAnimation() = default;
-    CameraAnimation(const OrbitCamera& from, float alphaFrom, const OrbitCamera& to, float alphaTo, double startTime,
-                    double seconds = 1.0);
+    /// @param parametersFrom, parametersTo the method's optimised parameters (same length, or empty)
+    CameraAnimation(const OrbitCamera& from, std::vector<double> parametersFrom, const OrbitCamera& to,
+                    std::vector<double> parametersTo, double startTime, double seconds = 1.0);
     /// @brief True between start and end.
     bool active(double now) const { return mActive && now < mStart + mSeconds + 1e-9; }
     bool started() const { return mActive; }
     /// @brief State at time @a now (the end state after the end).
-    void at(double now, OrbitCamera& camera, float& alpha) const;
+    void at(double now, OrbitCamera& camera, std::vector<double>& parameters) const;
     /// @brief Stops the animation (e.g. when the user grabs the camera).
     void stop() { mActive = false; }
 
 private:
     OrbitCamera mFrom, mTo;
-    float mAlphaFrom = 0.0f, mAlphaTo = 0.0f;
+    std::vector<double> mParametersFrom, mParametersTo;
     double mStart = 0.0, mSeconds = 1.0;
     bool mActive = false;
 };

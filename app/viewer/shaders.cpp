@@ -10,11 +10,18 @@
 namespace ivis::app::shaders {
 namespace {
 
-/// The text of assets/shaders/@a name; throws GlError when it was not embedded.
-const char* file(const std::string& name)
+/// The text of assets/shaders/@a name, or null.
+const char* findFile(const std::string& name)
 {
     for (const EmbeddedFile& f : embeddedFiles())
         if (name == f.name) return f.text;
+    return nullptr;
+}
+
+/// The text of assets/shaders/@a name; throws GlError when it was not embedded.
+const char* file(const std::string& name)
+{
+    if (const char* text = findFile(name)) return text;
     throw GlError("no shader file '" + name + "' is embedded (assets/shaders/, app/CMakeLists.txt)");
 }
 
@@ -36,6 +43,8 @@ std::string meshFragment()
 }
 
 std::string fullScreenVertex() { return compose({"full_screen_vertex.glsl"}); }
+
+bool hasIndirectFragment(const std::string& method) { return findFile("method_" + method + ".glsl") != nullptr; }
 
 std::string indirectFragment(const std::string& method)
 {

@@ -3,6 +3,7 @@
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_registry.h>
 
 #include <chrono>
 #include <cstdio>
@@ -15,45 +16,46 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string describeParams(const render::MethodParams& params)
+/// The parameters an optimiser moves, as text ("no parameters" for a method without any).
+std::string describeParams(const render::Method& method)
 {
-    char text[160];
-    switch (params.method) {
-    case render::Method::InverseVis: std::snprintf(text, sizeof text, "alpha %.3f", params.curved.alpha); break;
-    case render::Method::InverseVisAdaptive:
-        std::snprintf(text, sizeof text, "profile %.3f %.3f %.3f", params.profile.coefficients[0],
-                      params.profile.coefficients[1], params.profile.coefficients[2]);
-        break;
-    case render::Method::Mirror:
-        std::snprintf(text, sizeof text, "w %.3f %.3f %.3f %.3f %.3f", params.mirror.w[0], params.mirror.w[1],
-                      params.mirror.w[2], params.mirror.w[3], params.mirror.w[4]);
-        break;
-    default: std::snprintf(text, sizeof text, "no parameters"); break;
-    }
-    return text;
+    const std::string text = render::describeOptimisedParameters(method);
+    return text.empty() ? "no parameters" : text;
 }
+
+/// Stops an optimiser when the viewer's cancel flag is set (the window closes).
+class CancelFlag final : public core::Interrupter {
+public:
+    explicit CancelFlag(const std::atomic<bool>& cancel) : mCancel(cancel) {}
+    bool wasInterrupted(int /*percent*/) override { return mCancel; }
+
+private:
+    const std::atomic<bool>& mCancel;
+};
 
 }  // namespace
 
 ViewOptimiser parameterOptimiser(const OptimiserSettings& settings)
 {
-    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>&) {
+    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel) {
+        CancelFlag interrupter(cancel);
         const auto begin = std::chrono::steady_clock::now();
-        const render::EnergyEvaluator evaluator(
+        const optimize::EnergyEvaluator evaluator(
             scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
-        const render::EnergyValue before = evaluator.evaluate(start.camera, start.method);
-        const render::AscentResult ascent =
-            render::optimizeParameters(evaluator, start.camera, start.method, settings.optimization.ascentOptions());
+        const optimize::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const optimize::AscentResult ascent =
+            optimize::optimizeParameters(evaluator, start.camera, start.method,
+                                         settings.optimization.ascentOptions(), &interrupter);
         OptimiserResult result;
-        result.state = {start.camera, ascent.params};
+        result.state = {start.camera, ascent.method};
         result.energyBefore = before.energy;
         result.energyAfter = ascent.value.energy;
         result.evaluations = ascent.evaluations + 1;
         result.seconds = secondsSince(begin);
         char text[320];
         std::snprintf(text, sizeof text, "optimised %s: %s -> %s, %s energy %.4f -> %.4f (%d evaluations, %.1f s)",
-                      render::toString(start.method.method), describeParams(start.method).c_str(),
-                      describeParams(ascent.params).c_str(), settings.optimization.energy.c_str(), result.energyBefore,
+                      start.method->name().c_str(), describeParams(*start.method).c_str(),
+                      describeParams(*ascent.method).c_str(), settings.optimization.energy.c_str(), result.energyBefore,
                       result.energyAfter, result.evaluations, result.seconds);
         result.summary = text;
         return result;
@@ -62,21 +64,23 @@ ViewOptimiser parameterOptimiser(const OptimiserSettings& settings)
 
 ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
 {
-    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>&) {
+    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel) {
+        CancelFlag interrupter(cancel);
         const auto begin = std::chrono::steady_clock::now();
-        const render::EnergyEvaluator evaluator(
+        const optimize::EnergyEvaluator evaluator(
             scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
         const glm::dvec2 angles = start.camera.angles();
-        const render::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const optimize::EnergyValue before = evaluator.evaluate(start.camera, start.method);
         const auto ascentEvaluator =
             settings.optimization.ascentEvaluator(scene, settings.resolution, settings.importanceRange);
-        const render::AnnealingResult annealing = render::annealViewpoint(
+        const optimize::AnnealingResult annealing = optimize::annealViewpoint(
             evaluator, start.method, settings.optimization.annealingOptions(angles.x, angles.y, start.camera.fovYDeg),
-            settings.optimization.ascentOptions(), ascentEvaluator.get());
-        const render::VisitedView& best = annealing.bestView();
+            settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter);
+        const optimize::VisitedView& best = annealing.bestView();
         OptimiserResult result;
-        result.state.camera = render::viewCamera(best.thetaDeg, best.phiDeg, start.camera.fovYDeg);
-        result.state.method = best.params;
+        result.state.camera =
+            core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, start.camera.fovYDeg);
+        result.state.method = best.method;
         result.energyBefore = before.energy;
         result.energyAfter = best.value.energy;
         result.evaluations = annealing.evaluations + 1;
@@ -85,7 +89,7 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
         std::snprintf(text, sizeof text,
                       "annealed view: theta/phi %.1f/%.1f -> %.1f/%.1f, %s, %s energy %.4f -> %.4f (%zu views, %d "
                       "evaluations, %.1f s)",
-                      angles.x, angles.y, best.thetaDeg, best.phiDeg, describeParams(best.params).c_str(),
+                      angles.x, angles.y, best.thetaDeg, best.phiDeg, describeParams(*best.method).c_str(),
                       settings.optimization.energy.c_str(), result.energyBefore, result.energyAfter,
                       annealing.visited.size(), result.evaluations, result.seconds);
         result.summary = text;

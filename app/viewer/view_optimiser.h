@@ -1,7 +1,7 @@
 /// @file view_optimiser.h
 /// @brief How the viewer's "optimise" buttons call the CPU optimisers in a background thread: a
 ///        function object from the scene and the current view to new parameters, and the two
-///        implementations on render::optimizeParameters and render::annealViewpoint.
+///        implementations on optimize::optimizeParameters and optimize::annealViewpoint.
 #pragma once
 
 #include "../optimization_options.h"
@@ -20,7 +20,7 @@ namespace ivis::app {
 /// @brief What an optimiser reads and may change: the camera and the method's parameters.
 struct ViewState {
     core::Camera camera;
-    render::MethodParams method;
+    render::MethodPtr method;
 };
 
 /// @brief An optimiser's answer.
@@ -34,7 +34,8 @@ struct OptimiserResult {
 };
 
 /// @brief A CPU optimiser, called on a background thread with the scene and the current view.
-///        @a cancel is set when the window closes; an optimiser that cannot stop early ignores it.
+///        @a cancel is set when the window closes; the optimiser then stops at its next line search
+///        or proposal (throwing Cancelled).
 /// @warning It must not touch OpenGL; the scene is shared read-only with the UI thread.
 using ViewOptimiser =
     std::function<OptimiserResult(const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& cancel)>;
@@ -46,13 +47,12 @@ struct OptimiserSettings {
     core::ScalarRange importanceRange; ///< scalar values mapped to importance 0 and 1 (scalar energy)
 };
 
-/// @brief "optimise alpha": render::optimizeParameters (gradient ascent with golden-section line
-///        searches) of the current method's parameters (InverseVis alpha, the adaptive InverseVis's
-///        profile a0..a2, mirror w1..w5) at the current camera. The ring map has no parameters: it
-///        is only evaluated.
+/// @brief "optimise alpha": optimize::optimizeParameters (gradient ascent with golden-section line
+///        searches) of the current method's optimised parameters (as its description says) at the
+///        current camera. A method without any is only evaluated.
 ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 
-/// @brief "optimise view": render::annealViewpoint from the current camera's angles on the radius
+/// @brief "optimise view": optimize::annealViewpoint from the current camera's angles on the radius
 ///        2.5 sphere, the parameters optimised at every proposal; returns the best view.
 ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings);
 

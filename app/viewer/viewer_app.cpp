@@ -204,7 +204,7 @@ int ViewerApp::runHeadlessScreenshot()
     }
     writeScreenshot(mOptions.screenshot, mOptions.regionPng);
     std::printf("inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n",
-                mOptions.screenshot.c_str(), mOptions.width, mOptions.height, render::toString(mMethod.method),
+                mOptions.screenshot.c_str(), mOptions.width, mOptions.height, mMethod->name().c_str(),
                 mOptions.frames, mLastFrameMs, mGlRenderer.c_str());
     return 0;
 }
@@ -233,7 +233,7 @@ int ViewerApp::runBenchmark()
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("inversevis-view: benchmark: %d frames orbiting 360 degrees at theta %.0f, %dx%d, %s, %s: %.2f fps "
                 "(mean %.1f ms, slowest %.1f ms per frame)\n",
-                frames, mOrbit.thetaDeg, mOptions.width, mOptions.height, render::toString(mMethod.method),
+                frames, mOrbit.thetaDeg, mOptions.width, mOptions.height, mMethod->name().c_str(),
                 mGlRenderer.c_str(), frames / seconds, 1000.0 * seconds / frames, slowest);
     return 0;
 }
@@ -244,7 +244,7 @@ void ViewerApp::startOptimiser(bool view)
     mCancelJob = false;
     mOptimiser.importanceRange = mShading.range;
     const ViewOptimiser optimiser = view ? viewpointOptimiser(mOptimiser) : parameterOptimiser(mOptimiser);
-    mJobName = view ? "optimise view" : "optimise " + std::string(render::toString(mMethod.method));
+    mJobName = view ? "optimise view" : "optimise " + mMethod->name();
     mStatus = mJobName + ": running on the CPU...";
     mJobStart = now();
     ViewState state{mOrbit.camera(), mMethod};
@@ -260,13 +260,12 @@ void ViewerApp::pollOptimiser(double time)
         mStatus = result.summary;
         std::printf("inversevis-view: %s\n", mStatus.c_str());
         std::fflush(stdout);
-        const float alpha = mMethod.curved.alpha;
-        render::MethodParams target = result.state.method;
-        target.method = mMethod.method;
-        mMethod = target;
-        mMethod.curved.alpha = alpha;  // animated below
+        // The optimised parameters ease to the result unless the method was switched meanwhile.
+        const bool sameMethod = render::sameFixedParameters(*result.state.method, *mMethod);
         const OrbitCamera to = OrbitCamera::fromCamera(result.state.camera, false);
-        mAnimation = CameraAnimation(mOrbit, alpha, to, result.state.method.curved.alpha, time, 1.0);
+        mAnimation = CameraAnimation(mOrbit, sameMethod ? render::optimisedParameters(*mMethod) : std::vector<double>{},
+                                     to, sameMethod ? render::optimisedParameters(*result.state.method) : std::vector<double>{},
+                                     time, 1.0);
     } catch (const std::exception& e) {
         mStatus = mJobName + " failed: " + e.what();
     }
@@ -327,20 +326,20 @@ void ViewerApp::drawPanel()
 
     const bool busy = mJob.valid() || !mLoaded;
     optimiserWidgets(mOptimiser, mField->hasScalar());
-    const bool hasParameters = mMethod.curvedRays() || mMethod.method == render::Method::Mirror;
+    const bool hasParameters = !render::optimisedParameters(*mMethod).empty();
     ImGui::BeginDisabled(busy || !hasParameters);
-    if (ImGui::Button(optimiseLabel(mMethod.method))) startOptimiser(false);
+    if (ImGui::Button(optimiseLabel(*mMethod).c_str())) startOptimiser(false);
     ImGui::EndDisabled();
-    tooltip("CPU, in the background: render::optimizeParameters, gradient ascent of the method's parameters "
-            "(InverseVis alpha, the adaptive profile a0..a2, mirror w1..w5) with golden-section line searches on the "
-            "true energy, at this view; alpha then eases to the result, the profile and w are set at once");
+    tooltip("CPU, in the background: optimize::optimizeParameters, gradient ascent of the method's optimised "
+            "parameters with golden-section line searches on the true energy, at this view; they then ease to the "
+            "result");
     ImGui::SameLine();
     ImGui::BeginDisabled(busy);
     if (ImGui::Button("optimise view")) startOptimiser(true);
     ImGui::EndDisabled();
-    tooltip("CPU, in the background: render::annealViewpoint, simulated annealing of the camera on the radius-2.5 "
+    tooltip("CPU, in the background: optimize::annealViewpoint, simulated annealing of the camera on the radius-2.5 "
             "sphere from this view, the parameters optimised at every proposal; the camera then eases to the best "
-            "view. It cannot be interrupted.");
+            "view. Closing the window stops it.");
     if (mJob.valid()) {
         ImGui::SameLine();
         ImGui::Text("running %.0f s", now() - mJobStart);
@@ -378,7 +377,9 @@ int ViewerApp::runInteractive()
         const double time = now();
         pollOptimiser(time);
         if (mAnimation.started()) {
-            mAnimation.at(time, mOrbit, mMethod.curved.alpha);
+            std::vector<double> parameters;
+            mAnimation.at(time, mOrbit, parameters);
+            if (!parameters.empty()) mMethod = render::withOptimisedParameters(*mMethod, parameters);
             if (!mAnimation.active(time)) mAnimation.stop();
             mDirty = true;
         }

@@ -63,7 +63,7 @@ private:
 
     ViewerOptions mOptions;
     std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
-    render::MethodParams mMethod;
+    render::MethodPtr mMethod;
     render::ShadingOptions mShading;
     core::ScalarRange mDataRange;
     OrbitCamera mOrbit;

@@ -1,6 +1,7 @@
 #include "viewer_panel.h"
 
 #include <ivis/core/colormap.h>
+#include <ivis/render/method_registry.h>
 
 #include <imgui.h>
 
@@ -12,30 +13,32 @@
 namespace ivis::app {
 namespace {
 
-/// Sliders of the curved rays' hull offset (below the volume's @a reach), step and max steps; true when changed.
-bool curvedRaySliders(render::CurvedRayParams& curved, float reach)
+/// The key with '_' shown as a space ("alpha_profile" -> "alpha profile").
+std::string labelOf(const std::string& key)
 {
-    bool changed = ImGui::SliderFloat("hull offset", &curved.hullOffset, 0.05f, 0.98f * reach, "%.3f");
-    tooltip("phi0: the hull {phi = phi0} the curved rays start from; below the volume's reach");
-    changed |= ImGui::SliderFloat("step h", &curved.stepSize, 0.01f, 0.5f, "%.3f");
-    changed |= ImGui::SliderInt("max steps", &curved.maxSteps, 10, 4000);
-    return changed;
+    std::string label = key;
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return label;
 }
 
-/// Sliders of the adaptive InverseVis's profile coefficients a0, a1, a2; true when changed.
-bool profileSliders(render::AlphaProfile& profile)
+/// A drag widget for one parameter within its bounds (and below @a reach where it must be); true when changed.
+bool parameterWidget(const render::ParameterSpec& spec, std::vector<float>& values, float reach)
 {
-    char help[200];
-    std::snprintf(help, sizeof help,
-                  "alpha(c) = a0 + a1 c + a2 c^2, clamped to [0, %.1f]; c = r . grad phi / |grad phi| at the hull "
-                  "seed (0 where the view ray grazes the hull, growing toward the silhouette)",
-                  profile.maxAlpha);
+    const std::string label = labelOf(spec.key);
+    const float hi = spec.belowReach ? std::min(spec.hi, 0.98f * reach) : spec.hi;
+    const float speed = std::max(1e-4f, (std::min(hi, 10.0f) - std::max(spec.lo, -10.0f)) / 500.0f);
     bool changed = false;
-    for (int i = 0; i < 3; ++i) {
-        const std::string label = "a" + std::to_string(i);
-        changed |= ImGui::SliderFloat(label.c_str(), &profile.coefficients[std::size_t(i)], -2.0f, 6.0f, "%.3f");
-        tooltip(help);
+    if (spec.integer) {
+        std::vector<int> whole(values.begin(), values.end());
+        const int lo = int(spec.lo), top = int(hi);
+        changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_S32, whole.data(), int(whole.size()),
+                                     std::max(1.0f, speed), &lo, &top, "%d", ImGuiSliderFlags_AlwaysClamp);
+        values.assign(whole.begin(), whole.end());
+    } else {
+        changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, values.data(), int(values.size()), speed,
+                                     &spec.lo, &hi, "%.3f", ImGuiSliderFlags_AlwaysClamp);
     }
+    tooltip(spec.help.c_str());
     return changed;
 }
 
@@ -52,42 +55,28 @@ void tooltip(const char* text)
     }
 }
 
-bool methodWidgets(render::MethodParams& params, float reach)
+bool methodWidgets(render::MethodPtr& method, float reach)
 {
     bool changed = false;
-    const std::vector<std::string> methods = render::methodNames();
-    int method = int(params.method);
-    if (ImGui::BeginCombo("method", methods[std::size_t(method)].c_str())) {
-        for (int i = 0; i < int(methods.size()); ++i)
-            if (ImGui::Selectable(methods[std::size_t(i)].c_str(), i == method)) {
-                params.method = render::Method(i);
+    if (ImGui::BeginCombo("method", method->name().c_str())) {
+        for (const render::MethodInfo* info : render::methodRegistry())
+            if (ImGui::Selectable(info->name.c_str(), info->name == method->name()) && info->name != method->name()) {
+                // The new method keeps the values of the parameters it shares (e.g. the hull offset).
+                render::ParameterValues shared;
+                for (const auto& [key, values] : method->values())
+                    if (info->parameter(key)) shared[key] = values;
+                method = render::makeMethod(info->name, shared);
                 changed = true;
             }
         ImGui::EndCombo();
     }
-    switch (params.method) {
-    case render::Method::InverseVis:
-        changed |= ImGui::SliderFloat("alpha", &params.curved.alpha, 0.0f, 4.0f, "%.3f");
-        changed |= curvedRaySliders(params.curved, reach);
-        break;
-    case render::Method::InverseVisAdaptive:
-        changed |= profileSliders(params.profile);
-        changed |= curvedRaySliders(params.curved, reach);
-        break;
-    case render::Method::Mirror:
-        for (int i = 0; i < 5; ++i) {
-            const std::string label = "w" + std::to_string(i + 1);
-            changed |= ImGui::SliderFloat(label.c_str(), &params.mirror.w[std::size_t(i)], -1.0f, 1.0f, "%.3f");
-        }
-        changed |= ImGui::SliderFloat("behind", &params.mirror.distanceBehind, 0.0f, 3.0f, "%.2f");
-        break;
-    case render::Method::Neugebauer:
-        changed |= ImGui::SliderFloat("ring width", &params.ring.ringWidth, 0.05f, 0.8f, "%.2f");
-        changed |= ImGui::DragFloat3("centre", &params.ring.centre.x, 0.01f, -1.0f, 1.0f, "%.2f");
-        break;
-    default: break;
-    }
-    return changed;
+    tooltip(method->info().help.c_str());
+    render::ParameterValues values = method->values();
+    bool edited = false;
+    for (const render::ParameterSpec& spec : method->info().parameters)
+        edited |= parameterWidget(spec, values[spec.key], reach);
+    if (edited) method = render::makeMethod(method->name(), values);
+    return changed || edited;
 }
 
 bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ScalarRange& dataRange,
@@ -145,10 +134,12 @@ void optimiserWidgets(OptimiserSettings& settings, bool hasScalar)
     tooltip("proposals of the simulated annealing after the start view");
 }
 
-const char* optimiseLabel(render::Method method)
+std::string optimiseLabel(const render::Method& method)
 {
-    if (method == render::Method::Mirror) return "optimise w";
-    return method == render::Method::InverseVisAdaptive ? "optimise profile" : "optimise alpha";
+    std::string label = "optimise";
+    for (const render::ParameterSpec& spec : method.info().parameters)
+        if (spec.optimised) label += " " + labelOf(spec.key);
+    return label;
 }
 
 }  // namespace ivis::app

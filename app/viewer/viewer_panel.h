@@ -10,14 +10,17 @@
 #include <ivis/render/method.h>
 #include <ivis/render/shading.h>
 
+#include <string>
+
 namespace ivis::app {
 
 /// @brief Shows @a text as the tooltip of the last widget while it is hovered (even disabled).
 void tooltip(const char* text);
 
-/// @brief The method combo and the chosen method's sliders; true when anything changed.
+/// @brief The method combo and a widget per parameter of the chosen method, within the bounds its
+///        description gives; true when anything changed.
 /// @param reach the volume's reach: the curved rays' hull offset stays below it
-bool methodWidgets(render::MethodParams& params, float reach);
+bool methodWidgets(render::MethodPtr& method, float reach);
 
 /// @brief Colour map, scalar range (when @a hasScalar; "data" resets it to @a dataRange), shadows
 ///        and render scale; true when anything changed.
@@ -28,7 +31,7 @@ bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core
 /// @brief Energy (scalar only when @a hasScalar), optimisation rays and annealing steps.
 void optimiserWidgets(OptimiserSettings& settings, bool hasScalar);
 
-/// @brief Label of the parameter optimiser's button for @a method.
-const char* optimiseLabel(render::Method method);
+/// @brief Label of the parameter optimiser's button: "optimise" and the optimised parameters.
+std::string optimiseLabel(const render::Method& method);
 
 }  // namespace ivis::app

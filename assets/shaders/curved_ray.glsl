@@ -1,6 +1,6 @@
 // InverseVis curved rays (render/src/curved_ray.cpp, ScreenMap::inverseVis); the methods that use
 // them differ only in the alpha they launch with (method_inversevis*.glsl).
-uniform float uStepSize;
+uniform float uStep;
 uniform float uEscape;          // 0.999 * reach
 uniform int uMaxSteps;
 
@@ -13,7 +13,7 @@ vec3 initialVelocity(vec3 gradient, vec3 viewDirection, float alpha)
     return alpha * cross(g, cross(viewDirection, g));
 }
 
-// render::integrateCurvedRay from @a p with velocity @a v: symplectic Euler, h = uStepSize; true
+// render::integrateCurvedRay from @a p with velocity @a v: symplectic Euler, h = uStep; true
 // when it lands (phi < uEpsilon), with p and v there.
 bool integrateCurvedRay(inout vec3 p, inout vec3 v)
 {
@@ -22,10 +22,10 @@ bool integrateCurvedRay(inout vec3 p, inout vec3 v)
         float phi = phiAndGradient(p, gradient);
         if (phi < uEpsilon) return true;
         if (phi >= uEscape) return false;
-        v -= uStepSize * gradient;
+        v -= uStep * gradient;
         float speed = length(v);
         vec3 heading = speed > 0.0 ? v / speed : -gradient;
-        p += uStepSize * phi * heading;
+        p += uStep * phi * heading;
     }
     return false;
 }

@@ -1,12 +1,12 @@
 // neugebauer: the ring map of Neugebauer et al. 2009 plus the back-side disc
 // (render/src/neugebauer_map.cpp, ScreenMap::ring).
 // ---- ring map (render::RingLayout, pixels)
-uniform vec2 uRingCentre;
+uniform vec2 uRingPixelCentre;
 uniform float uRingInner;
 uniform float uRingOuter;
 uniform vec2 uBackCentre;
 uniform float uBackRadius;
-uniform vec3 uRingOrigin;       // the centre c the ring rays start from
+uniform vec3 uRingCentre;       // the centre c the ring rays start from
 uniform int uRingMaxSteps;
 uniform float uInteriorStep;    // largest trusted step where phi < 0 (inside a closed mesh)
 
@@ -62,7 +62,7 @@ bool ringRayDirection(vec2 pixel, out vec3 direction)
         direction = cos(angle) * uForward + sin(angle) * u;
         return true;
     }
-    vec2 offset = pixel - uRingCentre;
+    vec2 offset = pixel - uRingPixelCentre;
     float r = length(offset);
     if (r < uRingInner || r > uRingOuter) return false;
     vec3 u = normalize(offset.x * uRight - offset.y * uUp);
@@ -71,7 +71,7 @@ bool ringRayDirection(vec2 pixel, out vec3 direction)
     return true;
 }
 
-// The indirect ray of @a pixel: the ring ray from the centre uRingOrigin. The CPU intersects it with
+// The indirect ray of @a pixel: the ring ray from the centre uRingCentre. The CPU intersects it with
 // the BVH; here it is sphere-traced with |phi| (steps capped inside closed meshes, where the field
 // only bounds the distance) and lands within uEpsilon of the same first hit.
 bool indirectRay(vec2 pixel, out vec3 colour)
@@ -81,10 +81,10 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     if (!ringRayDirection(pixel, direction)) return false;
     float t = 0.0;
     for (int step = 0; step < uRingMaxSteps; ++step) {
-        vec3 p = uRingOrigin + t * direction;
+        vec3 p = uRingCentre + t * direction;
         if (any(greaterThan(abs(p), vec3(uBoxHalf)))) return false;
         float phi = phiAt(p);
-        if (abs(phi) < uEpsilon) return shadeRayLanding(uRingOrigin, direction, p, colour);
+        if (abs(phi) < uEpsilon) return shadeRayLanding(uRingCentre, direction, p, colour);
         t += phi > 0.0 ? phi : min(-phi, uInteriorStep);
     }
     return false;

@@ -8,7 +8,7 @@ std::vector<ParameterSpec> curvedRaySpecs()
 {
     const CurvedRayParams defaults;
     return {{"hull_offset", "hull distance phi0 (normalised units; below the volume's --reach)", {defaults.hullOffset},
-             0.01f, 1.9f},
+             0.01f, 1.9f, false, false, true},
             {"step", "symplectic Euler step h", {defaults.stepSize}, 0.001f, 1.0f},
             {"max_steps", "steps before a curved ray counts as a miss", {float(defaults.maxSteps)}, 1.0f, 100000.0f,
              false, true}};

@@ -6,6 +6,7 @@
 #include <ivis/core/image.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 #include <ivis/render/screen_map.h>
 #include <ivis/vdb/volume_cache.h>
@@ -89,7 +90,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     const render::RenderScene scene(field, volume);
     render::RenderOptions options;
     options.width = options.height = kSize;
-    options.method.method = render::parseMethod(method);
+    options.method = render::makeMethod(method);
     options.shading.range = core::scalarRangeFromData(field.values);
     options.legend = false;
     options.outline = false;

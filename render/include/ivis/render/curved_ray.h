@@ -74,9 +74,11 @@ CurvedRayEnd integrateCurvedRay(FieldSampler& sampler, const glm::vec3& seed, co
     return end;
 }
 
-/// @brief Where a curved ray counts as escaped: just below the field's reach (beyond it phi is
-///        only a lower bound).
-inline float escapeDistance(const DistanceField& field) { return 0.999f * field.reach(); }
+/// @brief Where a curved ray counts as escaped: just below the distance field's @a reach (beyond
+///        it phi is only a lower bound).
+inline float escapeDistance(float reach) { return 0.999f * reach; }
+/// @brief escapeDistance() of a volume's distance field.
+inline float escapeDistance(const DistanceField& field) { return escapeDistance(field.reach()); }
 
 /// @brief integrateCurvedRay on a volume's distance field, escaping at escapeDistance().
 inline CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,

@@ -32,6 +32,7 @@ struct ParameterSpec {
     float hi = 0.0f;              ///< upper bound of every component
     bool optimised = false;       ///< moved by the parameter ascent
     bool integer = false;         ///< takes whole numbers only
+    bool belowReach = false;      ///< a distance that must stay below the volume's reach (e.g. the hull offset)
 
     /// @brief The command-line option: "--" and the key with '_' written '-'.
     std::string option() const;
