@@ -31,6 +31,11 @@ void wrapAngles(double& theta, double& phi)
 
 }  // namespace
 
+bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw)
+{
+    return gain > 0.0 || draw < std::exp(acceptanceScale * gain / temperature);
+}
+
 core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg)
 {
     return core::Camera::fromAngles(thetaDeg, phiDeg, core::kCameraDistance, fovYDeg);
@@ -74,7 +79,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const MethodPa
         VisitedView proposal = visit(theta, phi, current.params);
         const double gain = proposal.value.energy - current.value.energy;
         const double draw = 0.5 * (symmetricUniform(random) + 1.0);
-        proposal.accepted = gain > 0.0 || draw < std::exp(options.acceptanceScale * gain / temperature);
+        proposal.accepted = acceptsProposal(gain, temperature, options.acceptanceScale, draw);
         result.visited.push_back(proposal);
         if (proposal.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
         if (proposal.accepted) current = proposal;

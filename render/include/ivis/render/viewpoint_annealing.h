@@ -48,6 +48,14 @@ struct AnnealingResult {
 /// @brief Camera of a view on the sphere, looking at the origin.
 core::Camera viewCamera(double thetaDeg, double phiDeg, double fovYDeg);
 
+/// @brief The Metropolis rule: a proposal that raises the energy is accepted; otherwise it is
+///        accepted when @a draw < exp(acceptanceScale * gain / temperature).
+/// @param gain E_new - E_current
+/// @param temperature current temperature (> 0)
+/// @param acceptanceScale the 10 in exp(10 dE / T)
+/// @param draw a uniform number in [0, 1]
+bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw);
+
 /// @brief Runs the annealing from the start view with the method of @a start.
 /// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended
 ///        on it and only then measured on @a evaluator, and the best view's parameters are
