@@ -85,15 +85,15 @@ render::DenseGrid denseCopy(const render::RenderScene& scene)
     const openvdb::FloatGrid& reachGrid = volume.farPhi ? *volume.farPhi : *volume.phi;
     const openvdb::CoordBBox box = reachGrid.evalActiveVoxelBoundingBox();
     const openvdb::Vec3d lo = reachGrid.indexToWorld(box.min()), hi = reachGrid.indexToWorld(box.max());
-    const float voxel = float(volume.voxelSize());
-    const float half = float(vdb::kBoxHalfExtent);
+    const vdb::BoxLattice lattice = volume.lattice();
+    const float voxel = float(lattice.voxelSize());
     // Align to the fine grid's voxel centres.
     glm::vec3 origin;
     std::array<int, 3> dims{};
     for (int a = 0; a < 3; ++a) {
-        const int first = int(std::floor((lo[a] + half) / voxel - 0.5));
-        const int last = int(std::ceil((hi[a] + half) / voxel - 0.5));
-        origin[a] = -half + (first + 0.5f) * voxel;
+        const int first = int(std::floor(lattice.indexFromWorld(lo[a])));
+        const int last = int(std::ceil(lattice.indexFromWorld(hi[a])));
+        origin[a] = float(lattice.worldFromIndex(first));
         dims[a] = last - first + 1;
     }
     std::vector<float> values(std::size_t{1} * dims[0] * dims[1] * dims[2]);

@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -68,6 +69,17 @@ void writeFile(const std::string& path, const std::string& text)
     std::ofstream out(path, std::ios::binary);
     out << text;
     if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<glm::vec3> fibonacciDirections(int count)
+{
+    std::vector<glm::vec3> out;
+    for (int i = 0; i < count; ++i) {
+        const double z = 1.0 - (2.0 * i + 1.0) / count, ring = std::sqrt(1.0 - z * z);
+        const double angle = 2.399963229728653 * i;
+        out.emplace_back(float(ring * std::cos(angle)), float(ring * std::sin(angle)), float(z));
+    }
+    return out;
 }
 
 }  // namespace ivis::test

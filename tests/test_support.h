@@ -2,7 +2,10 @@
 /// @brief Shared test helpers: temporary folders, the shared mesh folder, running the CLI.
 #pragma once
 
+#include <glm/vec3.hpp>
+
 #include <string>
+#include <vector>
 
 namespace ivis::test {
 
@@ -34,6 +37,9 @@ struct CliResult {
 
 /// @brief Runs the `inversevis` program with @a arguments (a shell-quoted string).
 CliResult runCli(const std::string& arguments);
+
+/// @brief @a count unit directions spread evenly over the sphere (Fibonacci lattice).
+std::vector<glm::vec3> fibonacciDirections(int count);
 
 /// @brief Writes @a text to @a path (binary-safe).
 void writeFile(const std::string& path, const std::string& text);

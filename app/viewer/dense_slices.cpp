@@ -52,8 +52,8 @@ std::array<int, 3> shapeBox(DenseBox<T>& out, const WorldBox& box, int resolutio
 {
     std::array<int, 3> first;
     boxLattice(box, resolution, out.dims, first);
-    const double voxel = 2.0 * vdb::kBoxHalfExtent / resolution;
-    for (int a = 0; a < 3; ++a) out.origin[a] = float(-vdb::kBoxHalfExtent + (first[a] + 0.5) * voxel);
+    const vdb::BoxLattice lattice{resolution};
+    for (int a = 0; a < 3; ++a) out.origin[a] = float(lattice.worldFromIndex(first[a]));
     out.values.assign(out.count(), T{});
     return first;
 }
@@ -97,10 +97,10 @@ std::size_t indexOf(const DenseBox<T>& box, int x, int y, int z)
 
 std::array<int, 2> detail::latticeRange(double lo, double hi, int resolution)
 {
-    const double voxel = 2.0 * vdb::kBoxHalfExtent / resolution;
+    const vdb::BoxLattice lattice{resolution};
     const double slack = 1e-4;  // in voxels: a centre on the boundary belongs to the box
-    int first = int(std::floor((lo + vdb::kBoxHalfExtent) / voxel - 0.5 + slack));
-    int last = int(std::ceil((hi + vdb::kBoxHalfExtent) / voxel - 0.5 - slack));
+    int first = int(std::floor(lattice.indexFromWorld(lo) + slack));
+    int last = int(std::ceil(lattice.indexFromWorld(hi) - slack));
     first = std::clamp(first, 0, resolution - 1);
     last = std::clamp(last, first, resolution - 1);
     return {first, last};
@@ -155,14 +155,14 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.budgetBytes = options.budgetBytes;
     slices.volumeResolution = volume.options.resolution;
     slices.shownResolution = chooseShownResolution(scene, options);
-    slices.voxelSize = float(2.0 * vdb::kBoxHalfExtent / slices.shownResolution);
+    slices.voxelSize = float(vdb::BoxLattice{slices.shownResolution}.voxelSize());
     slices.hasFineBand = bool(volume.farPhi);
     slices.reach = field.reach();
     slices.unsignedDistance = field.isUnsigned();
     const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
     slices.outside = farSource.background();
     slices.farResolution = volume.farPhi ? volume.options.farFieldResolution : slices.shownResolution;
-    slices.farVoxelSize = float(2.0 * vdb::kBoxHalfExtent / slices.farResolution);
+    slices.farVoxelSize = float(vdb::BoxLattice{slices.farResolution}.voxelSize());
     slices.trustBelow = volume.phi->background() + float(farSource.voxelSize()[0]);
     const bool exact = slices.exact();
     const WorldBox bandBox = activeWorldBox(*volume.phi);
@@ -190,8 +190,8 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
 
     // Fine band: the voxel where it is active; resampled, the field where the fine cell is in the band.
     DenseBox<float>& band = slices.band;
-    const float fineVoxel = float(volume.voxelSize());
-    const glm::vec3 fineOrigin(float(-vdb::kBoxHalfExtent + 0.5 * volume.voxelSize()));
+    const float fineVoxel = float(volume.lattice().voxelSize());
+    const glm::vec3 fineOrigin(float(volume.lattice().worldFromIndex(0.0)));
     runner.run(field, band.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
         auto accessor = volume.phi->getConstAccessor();
         for (int y = 0; y < band.dims[1]; ++y)

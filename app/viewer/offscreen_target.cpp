@@ -72,20 +72,30 @@ void OffscreenTarget::blitTo(int x, int y, int width, int height) const
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
+std::vector<std::uint8_t> OffscreenTarget::readRows(GLenum attachment, GLenum format, int channels,
+                                                   const char* what) const
+{
+    const std::size_t rowBytes = std::size_t(mWidth) * channels;
+    std::vector<std::uint8_t> bytes(rowBytes * mHeight), rows(bytes.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
+    glReadBuffer(attachment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, mWidth, mHeight, format, GL_UNSIGNED_BYTE, bytes.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGl(what);
+    for (int row = 0; row < mHeight; ++row)  // GL rows start at the bottom
+        std::copy_n(bytes.data() + std::size_t(mHeight - 1 - row) * rowBytes, rowBytes, rows.data() + std::size_t(row) * rowBytes);
+    return rows;
+}
+
 core::Image OffscreenTarget::readColour() const
 {
-    std::vector<std::uint8_t> bytes(std::size_t(mWidth) * mHeight * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, mWidth, mHeight, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    checkGl("reading the colour back");
+    const std::vector<std::uint8_t> bytes = readRows(GL_COLOR_ATTACHMENT0, GL_RGBA, 4, "reading the colour back");
     float decode[256];
     for (int i = 0; i < 256; ++i) decode[i] = core::linearFromSrgb(float(i) / 255.0f);
     core::Image image(mWidth, mHeight);
     for (int row = 0; row < mHeight; ++row) {
-        const std::uint8_t* src = bytes.data() + std::size_t(mHeight - 1 - row) * mWidth * 4;  // GL rows start at the bottom
+        const std::uint8_t* src = bytes.data() + std::size_t(row) * mWidth * 4;
         for (int x = 0; x < mWidth; ++x)
             image.at(x, row) = glm::vec4(decode[src[4 * x]], decode[src[4 * x + 1]], decode[src[4 * x + 2]], 1.0f);
     }
@@ -94,16 +104,7 @@ core::Image OffscreenTarget::readColour() const
 
 std::vector<std::uint8_t> OffscreenTarget::readRegion() const
 {
-    std::vector<std::uint8_t> bytes(std::size_t(mWidth) * mHeight), region(bytes.size());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, mFramebuffer.id());
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, mWidth, mHeight, GL_RED_INTEGER, GL_UNSIGNED_BYTE, bytes.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    checkGl("reading the regions back");
-    for (int row = 0; row < mHeight; ++row)
-        std::copy_n(bytes.data() + std::size_t(mHeight - 1 - row) * mWidth, mWidth, region.data() + std::size_t(row) * mWidth);
-    return region;
+    return readRows(GL_COLOR_ATTACHMENT1, GL_RED_INTEGER, 1, "reading the regions back");
 }
 
 core::Image regionImage(const std::vector<std::uint8_t>& region, int width, int height)

@@ -36,6 +36,9 @@ public:
     int height() const { return mHeight; }
 
 private:
+    /// The pixels of @a attachment (@a channels bytes each in @a format), row 0 at the top.
+    std::vector<std::uint8_t> readRows(GLenum attachment, GLenum format, int channels, const char* what) const;
+
     GlFramebuffer mFramebuffer;
     GlTexture mColour;
     GlTexture mRegion;

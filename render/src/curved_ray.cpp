@@ -1,5 +1,6 @@
 #include <ivis/render/curved_ray.h>
 
+#include <ivis/core/ray_box.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <glm/common.hpp>
@@ -10,29 +11,6 @@
 #include <cmath>
 
 namespace ivis::render {
-namespace {
-
-/// Parameter interval (t >= 0) of the ray inside @a box (slab test); false when it misses.
-bool boxInterval(const glm::vec3& origin, const glm::vec3& direction, const core::Bounds3& box, float& tEnter,
-                 float& tExit)
-{
-    tEnter = 0.0f;
-    tExit = 1e30f;
-    for (int a = 0; a < 3; ++a) {
-        const float lo = float(box.lo[a]), hi = float(box.hi[a]);
-        if (std::abs(direction[a]) < 1e-12f) {
-            if (origin[a] < lo || origin[a] > hi) return false;
-            continue;
-        }
-        float t0 = (lo - origin[a]) / direction[a], t1 = (hi - origin[a]) / direction[a];
-        if (t0 > t1) std::swap(t0, t1);
-        tEnter = std::max(tEnter, t0);
-        tExit = std::min(tExit, t1);
-    }
-    return tEnter < tExit;
-}
-
-}  // namespace
 
 core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize)
 {
@@ -47,7 +25,7 @@ bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, cons
                   float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed)
 {
     float tEnter, tExit;
-    if (!boxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
+    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float minStep = 1e-4f;
     float tOutside = tExit;  // last parameter known to be outside the hull (phi > phi0)
     float t = tExit;

@@ -8,9 +8,9 @@ DistanceField::DistanceField(const vdb::SurfaceVolume& volume)
     : mVolume(volume),
       mFar(volume.farPhi ? *volume.farPhi : *volume.phi),
       mHasFineBand(bool(volume.farPhi)),
-      mVoxelSize(float(volume.voxelSize())),
-      mInvVoxelSize(1.0f / float(volume.voxelSize())),
-      mOrigin(float(-vdb::kBoxHalfExtent + 0.5 * volume.voxelSize())),
+      mVoxelSize(float(volume.lattice().voxelSize())),
+      mInvVoxelSize(1.0f / mVoxelSize),
+      mOrigin(float(volume.lattice().worldFromIndex(0.0))),
       mFineTrustBelow(volume.phi->background() + mFar.voxelSize()),
       mReach(float(volume.reach()))
 {

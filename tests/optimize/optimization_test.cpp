@@ -16,6 +16,8 @@
 
 #include <array>
 #include <cmath>
+#include <random>
+#include <utility>
 
 namespace ivis::optimize {
 namespace {
@@ -225,6 +227,54 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
         if (view.accepted) current = &view;
     }
     EXPECT_EQ(a.bestView().value.energy, best);
+}
+
+TEST(ViewpointAnnealing, AcceptsAWorseProposalWithProbabilityExpOfTenGainOverT)
+{
+    std::mt19937_64 random(7);
+    const int draws = 20000;
+    for (const auto& [gain, temperature] : {std::pair{-0.01, 1.0}, {-0.05, 1.0}, {-0.05, 0.5}, {-0.2, 1.0}}) {
+        int accepted = 0;
+        for (int i = 0; i < draws; ++i)
+            accepted += acceptsProposal(gain, temperature, 10.0, double(random() >> 11) * 0x1.0p-53) ? 1 : 0;
+        const double expected = std::exp(10.0 * gain / temperature);
+        const double sigma = std::sqrt(expected * (1.0 - expected) / draws);
+        EXPECT_NEAR(double(accepted) / draws, expected, 5.0 * sigma)
+            << "gain " << gain << " at temperature " << temperature;
+    }
+    EXPECT_TRUE(acceptsProposal(1e-9, 1.0, 10.0, 1.0)) << "a gain is always accepted";
+    EXPECT_TRUE(acceptsProposal(0.0, 1.0, 10.0, 0.999)) << "an equal energy is accepted (exp(0) = 1)";
+}
+
+TEST(ViewpointAnnealing, AcceptsWorseViewsAtTheMetropolisRate)
+{
+    // At a constant temperature every worse proposal is accepted with probability exp(10 dE / T):
+    // the accepted count over a run must match the sum of those probabilities (binomial z-score).
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(16));
+    AnnealingOptions options;
+    options.steps = 200;
+    options.cooling = 1.0;
+    options.startTemperature = 0.15;
+    const AnnealingResult run = annealViewpoint(evaluator, makeMethod("neugebauer"), options);
+    double expected = 0.0, variance = 0.0;
+    int accepted = 0, worse = 0;
+    const VisitedView* current = &run.visited[0];
+    for (std::size_t i = 1; i < run.visited.size(); ++i) {
+        const VisitedView& view = run.visited[i];
+        const double gain = view.value.energy - current->value.energy;
+        if (gain <= 0.0) {
+            const double p = std::exp(10.0 * gain / options.startTemperature);
+            expected += p;
+            variance += p * (1.0 - p);
+            accepted += view.accepted ? 1 : 0;
+            ++worse;
+        }
+        if (view.accepted) current = &view;
+    }
+    ASSERT_GE(variance, 4.0) << "the run must offer enough uncertain proposals to test the rule";
+    EXPECT_LT(std::abs(accepted - expected), 4.0 * std::sqrt(variance))
+        << accepted << " of " << worse << " worse views accepted, " << expected << " expected";
 }
 
 TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscendedThere)

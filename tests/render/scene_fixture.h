@@ -17,12 +17,13 @@ struct SceneFixture {
     vdb::SurfaceVolume volume;
     std::unique_ptr<render::RenderScene> scene;
 
-    /// @brief Builds the volume at @a resolution and the scene.
-    SceneFixture(core::SurfaceField surface, int resolution)
+    /// @brief Builds the volume at @a resolution (its far field at @a farFieldResolution) and the scene.
+    SceneFixture(core::SurfaceField surface, int resolution, int farFieldResolution = vdb::VolumeOptions{}.farFieldResolution)
         : field(std::move(surface))
     {
         vdb::VolumeOptions options;
         options.resolution = resolution;
+        options.farFieldResolution = farFieldResolution;
         volume = vdb::buildSurfaceVolume(field.mesh, options);
         scene = std::make_unique<render::RenderScene>(field, volume);
     }
@@ -32,6 +33,14 @@ struct SceneFixture {
 inline const SceneFixture& sphereScene()
 {
     static const SceneFixture fixture(core::makeSphere(4), 200);
+    return fixture;
+}
+
+/// @brief Unit sphere (subdivision 4) at volume resolution 100 (fine voxel 0.05) with a coarse far
+///        field at 40 (voxel 0.125): both grids serve samples.
+inline const SceneFixture& sphereWithFarField()
+{
+    static const SceneFixture fixture(core::makeSphere(4), 100, 40);
     return fixture;
 }
 

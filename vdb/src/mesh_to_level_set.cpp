@@ -71,7 +71,7 @@ void refineClosestPoints(const core::TriangleMesh& mesh, SurfaceVolume& volume)
     const core::PseudoNormals pseudoNormals(mesh);
     const bool exactSignNearSurface = !volume.unsignedDistance && pseudoNormals.usable();
     const double voxelSize = volume.voxelSize();
-    const double origin = -kBoxHalfExtent + 0.5 * voxelSize;
+    const BoxLattice lattice = volume.lattice();
     Int32Tree& triangleTree = volume.triangle->tree();
     Vec3STree& baryTree = volume.barycentric->tree();
     const bool isUnsigned = volume.unsignedDistance;
@@ -83,9 +83,8 @@ void refineClosestPoints(const core::TriangleMesh& mesh, SurfaceVolume& volume)
             Vec3STree::LeafNodeType* baryLeaf = baryTree.probeLeaf(leaf->origin());
             IVIS_CHECK(triangleLeaf && baryLeaf);
             for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
-                const Coord ijk = voxel.getCoord();
-                const glm::dvec3 p(origin + ijk.x() * voxelSize, origin + ijk.y() * voxelSize,
-                                   origin + ijk.z() * voxelSize);
+                const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
+                const glm::dvec3 p(centre.x(), centre.y(), centre.z());
                 int triangle = -1;
                 core::TrianglePoint best = bvh.closestPoint(p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
                 if (triangle < 0) best = bvh.closestPoint(p, std::numeric_limits<double>::infinity(), triangle);
@@ -109,7 +108,7 @@ openvdb::FloatGrid::Ptr meshToNarrowBand(const core::TriangleMesh& mesh, int res
                                 float interiorVoxels, bool unsignedDistance, core::Interrupter* interrupter, openvdb::Int32Grid* indexGrid)
 {
     detail::initializeOpenVdb();
-    const auto transform = boxTransform(resolution);
+    const auto transform = BoxLattice{resolution}.transform();
     const IndexSpaceMesh adapter(mesh, *transform);
     InterrupterAdapter interrupt(interrupter);
     const int flags = unsignedDistance ? openvdb::tools::UNSIGNED_DISTANCE_FIELD : 0;
@@ -162,7 +161,7 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     refineClosestPoints(mesh, volume);
 
     if (!fineReachesHull) {
-        const double farVoxel = 2.0 * kBoxHalfExtent / options.farFieldResolution;
+        const double farVoxel = volume.farLattice().voxelSize();
         const float farExterior = float(std::ceil(options.farFieldReach / farVoxel)) + 1.0f;
         const float farInterior = volume.unsignedDistance ? farExterior : 3.0f;
         volume.farPhi = meshToNarrowBand(mesh, options.farFieldResolution, farExterior, farInterior,

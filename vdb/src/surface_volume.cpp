@@ -24,21 +24,11 @@ void validate(const VolumeOptions& options)
                          " is out of range (16 to 1000)");
 }
 
-openvdb::math::Transform::Ptr boxTransform(int resolution)
-{
-    const double voxelSize = 2.0 * kBoxHalfExtent / resolution;
-    auto transform = openvdb::math::Transform::createLinearTransform(voxelSize);
-    transform->postTranslate(openvdb::Vec3d(-kBoxHalfExtent + 0.5 * voxelSize));
-    return transform;
-}
-
 void detail::initializeOpenVdb()
 {
     static std::once_flag once;
     std::call_once(once, [] { openvdb::initialize(); });
 }
-
-double SurfaceVolume::voxelSize() const { return 2.0 * kBoxHalfExtent / options.resolution; }
 
 std::size_t SurfaceVolume::activeVoxels() const
 {

@@ -32,6 +32,11 @@ void wrapAngles(double& theta, double& phi)
 
 }  // namespace
 
+bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw)
+{
+    return gain > 0.0 || draw < std::exp(acceptanceScale * gain / temperature);
+}
+
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options, const AscentOptions& ascent,
                                 const EnergyEvaluator* ascentEvaluator, core::Interrupter* interrupter)
@@ -74,7 +79,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         VisitedView proposal = visit(theta, phi, current.method);
         const double gain = proposal.value.energy - current.value.energy;
         const double draw = 0.5 * (symmetricUniform(random) + 1.0);
-        proposal.accepted = gain > 0.0 || draw < std::exp(options.acceptanceScale * gain / temperature);
+        proposal.accepted = acceptsProposal(gain, temperature, options.acceptanceScale, draw);
         result.visited.push_back(proposal);
         if (proposal.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
         if (proposal.accepted) current = proposal;

@@ -1,7 +1,6 @@
 #include <ivis/optimize/visibility_grid.h>
 
 #include <ivis/core/errors.h>
-#include <ivis/vdb/surface_volume.h>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -14,13 +13,13 @@
 namespace ivis::optimize {
 
 VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, int resolution)
-    : mResolution(resolution), mVoxelSize(2.0 * vdb::kBoxHalfExtent / resolution)
+    : mLattice{resolution}
 {
     if (resolution < 8 || resolution > 8192)
         throw ValueError("visibility grid resolution " + std::to_string(resolution) + " is out of range (8 to 8192)");
     // Candidates: voxels whose centre lies in a triangle's box grown by one voxel.
     std::vector<std::vector<std::uint64_t>> perTriangle(mesh.triangles.size());
-    const double half = vdb::kBoxHalfExtent;
+    const double voxelSize = mLattice.voxelSize();
     tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
         glm::dvec3 lo(1e30), hi(-1e30);
         for (std::uint32_t v : mesh.triangles[t]) {
@@ -29,8 +28,8 @@ VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::Trian
         }
         int i0[3], i1[3];
         for (int a = 0; a < 3; ++a) {
-            i0[a] = std::max(0, int(std::ceil((lo[a] - mVoxelSize + half) / mVoxelSize - 0.5)));
-            i1[a] = std::min(resolution - 1, int(std::floor((hi[a] + mVoxelSize + half) / mVoxelSize - 0.5)));
+            i0[a] = std::max(0, int(std::ceil(mLattice.indexFromWorld(lo[a] - voxelSize))));
+            i1[a] = std::min(resolution - 1, int(std::floor(mLattice.indexFromWorld(hi[a] + voxelSize))));
         }
         for (int k = i0[2]; k <= i1[2]; ++k)
             for (int j = i0[1]; j <= i1[1]; ++j)
@@ -45,12 +44,12 @@ VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::Trian
     std::vector<char> marked(candidates.size(), 0);
     tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t n) {
         const std::uint64_t key = candidates[n];
-        const glm::dvec3 centre(-half + (double(key % resolution) + 0.5) * mVoxelSize,
-                                -half + (double(key / resolution % resolution) + 0.5) * mVoxelSize,
-                                -half + (double(key / (std::uint64_t(resolution) * resolution)) + 0.5) * mVoxelSize);
+        const glm::dvec3 centre(mLattice.worldFromIndex(double(key % resolution)),
+                                mLattice.worldFromIndex(double(key / resolution % resolution)),
+                                mLattice.worldFromIndex(double(key / (std::uint64_t(resolution) * resolution))));
         int triangle = -1;
-        const core::TrianglePoint closest = bvh.closestPoint(centre, mVoxelSize, triangle);
-        marked[n] = triangle >= 0 && closest.distanceSquared < mVoxelSize * mVoxelSize;
+        const core::TrianglePoint closest = bvh.closestPoint(centre, voxelSize, triangle);
+        marked[n] = triangle >= 0 && closest.distanceSquared < voxelSize * voxelSize;
     });
     for (std::size_t n = 0; n < candidates.size(); ++n)
         if (marked[n]) mMarked.push_back(candidates[n]);
@@ -60,17 +59,18 @@ std::uint64_t VisibilityGrid::keyOf(const glm::vec3& p) const
 {
     std::uint64_t index[3];
     for (int a = 0; a < 3; ++a) {
-        const double i = std::floor((double(p[a]) + vdb::kBoxHalfExtent) / mVoxelSize);
-        if (!(i >= 0.0 && i < mResolution)) return kNoVoxel;
+        const double i = std::floor(mLattice.cellFromWorld(double(p[a])));
+        if (!(i >= 0.0 && i < mLattice.resolution)) return kNoVoxel;
         index[a] = std::uint64_t(i);
     }
-    return (index[2] * mResolution + index[1]) * mResolution + index[0];
+    const std::uint64_t n = std::uint64_t(mLattice.resolution);
+    return (index[2] * n + index[1]) * n + index[0];
 }
 
 std::size_t VisibilityGrid::reachableCount(const core::TriangleMesh& mesh) const
 {
     std::vector<std::vector<std::uint64_t>> perTriangle(mesh.triangles.size());
-    const double spacing = mVoxelSize / 8.0;
+    const double spacing = mLattice.voxelSize() / 8.0;
     tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
         const glm::vec3 a = mesh.positions[mesh.triangles[t][0]], b = mesh.positions[mesh.triangles[t][1]],
                         c = mesh.positions[mesh.triangles[t][2]];

@@ -6,6 +6,7 @@
 
 #include <ivis/core/interrupter.h>
 #include <ivis/core/triangle_mesh.h>
+#include <ivis/vdb/box_lattice.h>
 
 #include <openvdb/openvdb.h>
 
@@ -14,9 +15,6 @@
 #include <string>
 
 namespace ivis::vdb {
-
-/// @brief Half the edge of the cube [-kBoxHalfExtent, kBoxHalfExtent]^3 the resolution spans.
-inline constexpr double kBoxHalfExtent = 2.5;
 
 /// @brief Volume resolutions accepted by validate() (voxels across the box).
 inline constexpr int kMinResolution = 16;
@@ -41,8 +39,8 @@ struct VolumeOptions {
 /// @brief Checks an options struct; throws ValueError naming the bad value.
 void validate(const VolumeOptions& options);
 
-/// @brief Grids of one surface at one resolution. All grids share the same index-to-world map
-///        family: voxel centre i sits at -2.5 + (i + 0.5) * voxelSize.
+/// @brief Grids of one surface at one resolution. Every grid's transform is its BoxLattice's:
+///        voxel centre i sits at -2.5 + (i + 0.5) * voxelSize.
 struct SurfaceVolume {
     /// Fine narrow band: exact distance to the closest triangle (background: +band width, world units).
     openvdb::FloatGrid::Ptr phi;
@@ -58,8 +56,12 @@ struct SurfaceVolume {
     std::uint64_t meshHash = 0;     ///< core::meshHash of the normalised mesh it was built from
     std::size_t triangleCount = 0;  ///< triangles of that mesh
 
+    /// @brief Lattice of the fine grids (phi, triangle, barycentric).
+    BoxLattice lattice() const { return {options.resolution}; }
+    /// @brief Lattice of the far field (farPhi).
+    BoxLattice farLattice() const { return {options.farFieldResolution}; }
     /// @brief Fine voxel size in normalised units.
-    double voxelSize() const;
+    double voxelSize() const { return lattice().voxelSize(); }
     /// @brief Active voxels over all grids' distance fields (phi + farPhi).
     std::size_t activeVoxels() const;
     /// @brief Memory held by all grids, in bytes.
@@ -67,9 +69,6 @@ struct SurfaceVolume {
     /// @brief Exterior distance up to which phi or farPhi is exact (normalised units).
     double reach() const;
 };
-
-/// @brief Index-to-world transform for a resolution: voxel size 5/N, centres at -2.5+(i+0.5)*vs.
-openvdb::math::Transform::Ptr boxTransform(int resolution);
 
 /// @brief Builds the volume of a normalised mesh (positions within [-1,1]^3).
 /// @param mesh normalised triangle mesh (caps included; cap triangles get IDs like any other)

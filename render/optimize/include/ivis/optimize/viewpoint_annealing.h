@@ -45,6 +45,14 @@ struct AnnealingResult {
     const VisitedView& bestView() const { return visited[best]; }
 };
 
+/// @brief The Metropolis rule: a proposal that raises the energy is accepted; otherwise it is
+///        accepted when @a draw < exp(acceptanceScale * gain / temperature).
+/// @param gain E_new - E_current
+/// @param temperature current temperature (> 0)
+/// @param acceptanceScale the 10 in exp(10 dE / T)
+/// @param draw a uniform number in [0, 1]
+bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw);
+
 /// @brief Runs the annealing from the start view with the method of @a start.
 /// @param interrupter optional progress (percent of the proposals) and cancel
 /// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended

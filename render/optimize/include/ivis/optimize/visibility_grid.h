@@ -7,6 +7,7 @@
 
 #include <ivis/core/triangle_bvh.h>
 #include <ivis/core/triangle_mesh.h>
+#include <ivis/vdb/box_lattice.h>
 
 #include <glm/vec3.hpp>
 
@@ -36,12 +37,11 @@ public:
     std::size_t reachableCount(const core::TriangleMesh& mesh) const;
     /// @brief Number of marked voxels.
     std::size_t markedCount() const { return mMarked.size(); }
-    int resolution() const { return mResolution; }
-    double voxelSize() const { return mVoxelSize; }
+    int resolution() const { return mLattice.resolution; }
+    double voxelSize() const { return mLattice.voxelSize(); }
 
 private:
-    int mResolution;
-    double mVoxelSize;
+    vdb::BoxLattice mLattice;
     std::vector<std::uint64_t> mMarked;  ///< sorted keys
 };
 

@@ -1,0 +1,110 @@
+// DistanceField::Sampler on a unit sphere (fine band at resolution 100, far field at 40): phi and
+// its gradient against the exact sphere distance |p| - 1, the gradient against central differences
+// inside one cell, the nearest triangle against a brute-force search, and the Hessian against the
+// sphere's (I - n n^T) / |p|.
+#include "brute_force.h"
+#include "render/scene_fixture.h"
+#include "test_support.h"
+
+#include <ivis/core/closest_point.h>
+#include <ivis/core/procedural_scenes.h>
+#include <ivis/render/distance_field.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace ivis::render {
+namespace {
+
+/// Unit sphere (subdivision 4, within 4e-4 of the sphere), its band and its far field.
+const test::SceneFixture& sphere() { return test::sphereWithFarField(); }
+
+double angleDeg(const glm::vec3& a, const glm::vec3& b)
+{
+    return glm::degrees(std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0)));
+}
+
+TEST(DistanceField, PhiAndGradientMatchTheSphereInTheBandAndTheFarField)
+{
+    const DistanceField field(sphere().volume);
+    ASSERT_TRUE(sphere().volume.farPhi) << "the far field must exist for this test";
+    auto sampler = field.sampler();
+    const float fine = field.voxelSize(), far = float(sphere().volume.farLattice().voxelSize());
+    // Radii inside the band (|phi| < 2 fine voxels) and in the far field (0.25 to 0.55 outside).
+    for (const auto& [radius, tolerance, angleTolerance] :
+         {std::tuple{0.92f, 0.1f * fine, 3.0}, {1.0f, 0.1f * fine, 3.0}, {1.07f, 0.1f * fine, 3.0},
+          {1.25f, 0.1f * far, 6.0}, {1.55f, 0.1f * far, 6.0}}) {
+        for (const glm::vec3& n : test::fibonacciDirections(200)) {
+            const glm::vec3 p = radius * n;
+            glm::vec3 gradient;
+            const float phi = sampler.phiAndGradient(p, gradient);
+            EXPECT_NEAR(phi, radius - 1.0f, tolerance) << "at radius " << radius;
+            EXPECT_FLOAT_EQ(sampler.phi(p), phi);
+            EXPECT_LT(angleDeg(gradient, n), angleTolerance) << "at radius " << radius;
+            EXPECT_NEAR(glm::length(gradient), 1.0f, 0.05f) << "at radius " << radius;
+        }
+    }
+}
+
+TEST(DistanceField, GradientIsTheCentralDifferenceOfPhiInsideACell)
+{
+    const DistanceField field(sphere().volume);
+    auto sampler = field.sampler();
+    const vdb::BoxLattice fineLattice = sphere().volume.lattice(), farLattice = sphere().volume.farLattice();
+    for (const auto& [radius, lattice] : {std::pair{1.02, fineLattice}, {1.4, farLattice}}) {
+        const double h = 0.05 * lattice.voxelSize();
+        for (const glm::vec3& n : test::fibonacciDirections(50)) {
+            // The centre of the cell containing the point: +-h stays inside that cell.
+            glm::dvec3 p;
+            for (int a = 0; a < 3; ++a)
+                p[a] = lattice.worldFromIndex(std::floor(lattice.indexFromWorld(radius * n[a])) + 0.5);
+            glm::vec3 gradient;
+            sampler.phiAndGradient(glm::vec3(p), gradient);
+            for (int a = 0; a < 3; ++a) {
+                glm::dvec3 up = p, down = p;
+                up[a] += h;
+                down[a] -= h;
+                const double difference = (sampler.phi(glm::vec3(up)) - sampler.phi(glm::vec3(down))) / (2.0 * h);
+                EXPECT_NEAR(gradient[a], difference, 2e-3) << "axis " << a << " at radius " << radius;
+            }
+        }
+    }
+}
+
+TEST(DistanceField, NearestTriangleIsTheBruteForceClosestAtVoxelCentres)
+{
+    const vdb::SurfaceVolume& volume = sphere().volume;
+    const DistanceField field(volume);
+    auto sampler = field.sampler();
+    const test::BruteForceClosest brute(sphere().field.mesh);
+    const vdb::BoxLattice lattice = volume.lattice();
+    int checked = 0;
+    for (auto voxel = volume.phi->cbeginValueOn(); voxel; ++voxel) {
+        if (voxel.getCoord().x() % 3 != 0) continue;  // a third of the band keeps the test fast
+        const openvdb::Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
+        const glm::vec3 p(float(centre.x()), float(centre.y()), float(centre.z()));
+        const int triangle = sampler.nearestTriangle(p);
+        ASSERT_GE(triangle, 0);
+        std::int32_t expected = -1;
+        const double best = std::sqrt(brute.closest(glm::dvec3(p), &expected).distanceSquared);
+        if (triangle == expected) { ++checked; continue; }
+        // A tie (shared edge or vertex): the stored triangle must be as close.
+        const auto& t = sphere().field.mesh.triangles[std::size_t(triangle)];
+        const glm::dvec3 a(sphere().field.mesh.positions[t[0]]), b(sphere().field.mesh.positions[t[1]]),
+            c(sphere().field.mesh.positions[t[2]]);
+        EXPECT_NEAR(std::sqrt(core::closestPointOnTriangle(glm::dvec3(p), a, b, c).distanceSquared), best, 1e-6);
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+}
+
+}  // namespace
+}  // namespace ivis::render
