@@ -129,7 +129,7 @@ bool ViewerApp::pollLoader()
     std::printf("inversevis-view: %s\n", mVolumeText.c_str());
     std::fflush(stdout);
     mDirty = true;
-    if (mOptions.optimise == "alpha") startOptimiser(false);
+    if (mOptions.optimise == "parameters") startOptimiser(false);
     if (mOptions.optimise == "view") startOptimiser(true);
     return true;
 }

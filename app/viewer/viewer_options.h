@@ -28,7 +28,7 @@ struct ViewerOptions {
     int frames = 3;             ///< headless: frames rendered before the screenshot
     std::string regionPng;      ///< debug: region of the last frame as grey (0 background, 128 direct, 255 indirect)
     std::string uiScreenshot;   ///< debug: run the window with its panel, write it (panel included) once settled, exit
-    std::string optimise;       ///< "alpha" (the method's parameters) or "view": press that button once loaded
+    std::string optimise;       ///< "parameters" or "view": press that optimiser's button once loaded
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
     std::string cacheDir;       ///< volume cache folder ("" = $XDG_CACHE_HOME or ~/.cache/inversevis)
