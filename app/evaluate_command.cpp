@@ -1,5 +1,6 @@
-// `inversevis evaluate MESH...`: the paper's Table 1 (visibility at each method's best view, with
-// the front-only visibility) and Table 2 (viewpoint optimisation seconds per resolution).
+// `inversevis evaluate MESH...`: the paper's Table 1 with METHOD.md's measures at each method's best
+// view (surface visibility with its front-only part, paper-literal visibility, mapping coherence and,
+// with a scalar, hot-spot reveal) and Table 2 (viewpoint optimisation seconds per resolution).
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
@@ -11,6 +12,7 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/optimize/coherence.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
@@ -41,11 +43,49 @@ double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+/// A Markdown table with a row per mesh and a column per method.
+class MethodTable {
+public:
+    explicit MethodTable(const std::vector<std::string>& methods)
+    {
+        mText << "| Surface |";
+        for (const auto& m : methods) mText << " " << m << " |";
+        mText << "\n|---|";
+        for (std::size_t i = 0; i < methods.size(); ++i) mText << "---|";
+        mText << "\n";
+    }
+    /// @brief Starts the row of mesh @a stem.
+    void startRow(const std::string& stem) { mText << "| " << stem << " |"; }
+    /// @brief Adds the next method's cell.
+    void cell(const std::string& text) { mText << " " << text << " |"; }
+    /// @brief Ends the row.
+    void endRow() { mText << "\n"; }
+    std::string str() const { return mText.str(); }
+
+private:
+    std::ostringstream mText;
+};
+
 std::string percent(double fraction)
 {
     char buffer[16];
     std::snprintf(buffer, sizeof buffer, "%.1f", 100.0 * fraction);
     return buffer;
+}
+
+std::string fixed(double value, int digits)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+    return buffer;
+}
+
+/// "total (direct) [region, region, ...]" in percent.
+std::string revealText(const optimize::RevealValue& reveal)
+{
+    std::string text = percent(reveal.total) + " (" + percent(reveal.direct) + ") [";
+    for (std::size_t i = 0; i < reveal.perRegion.size(); ++i) text += (i ? ", " : "") + percent(reveal.perRegion[i]);
+    return text + "]";
 }
 
 }  // namespace
@@ -87,12 +127,10 @@ Command addEvaluateCommand(CLI::App& app)
         for (const std::string& m : options->methods) checkMethodFitsVolume(*render::makeMethod(m), volumeOptions);
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         nlohmann::json results = nlohmann::json::object();
-        std::ostringstream table1, table2;
-        table1 << "| Surface | ceiling |";
-        for (const auto& m : options->methods) table1 << " " << m << " |";
-        table1 << "\n|---|---|";
-        for (std::size_t i = 0; i < options->methods.size(); ++i) table1 << "---|";
-        table1 << "\n";
+        MethodTable visibility(options->methods), literal(options->methods), coherence(options->methods),
+            reveal(options->methods);
+        bool anyReveal = false;
+        std::ostringstream table2;
         table2 << "| Surface |";
         for (const auto& m : options->methods)
             for (int r : options->optResolutions) table2 << " " << m << " " << r << " |";
@@ -109,11 +147,11 @@ Command addEvaluateCommand(CLI::App& app)
             const std::string stem = core::sourceStem(mesh);
             optimize::EnergyOptions displayOptions = options->optimization.measureOptions(options->displayResolution, range);
             displayOptions.kind = optimize::EnergyKind::Visibility;
+            displayOptions.paperLiteral = true;
+            displayOptions.reveal = field.hasScalar();
+            anyReveal |= displayOptions.reveal;
             const optimize::EnergyEvaluator display(scene, displayOptions);
-            const optimize::VisibilityGrid& grid = *display.visibilityGrid();
-            const double ceiling = double(grid.reachableCount(field.mesh)) / double(std::max<std::size_t>(1, grid.markedCount()));
-            results[stem]["visibility_ceiling"] = ceiling;
-            table1 << "| " << stem << " | " << percent(ceiling) << " |";
+            for (MethodTable* table : {&visibility, &literal, &coherence, &reveal}) table->startRow(stem);
             table2 << "| " << stem << " |";
             for (const std::string& methodName : options->methods) {
                 const render::MethodPtr start = render::makeMethod(methodName);
@@ -147,13 +185,17 @@ Command addEvaluateCommand(CLI::App& app)
                 }
                 const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, options->fovYDeg);
                 const optimize::EnergyValue value = display.evaluate(camera, best.method);
-                entry["visibility"] = value.energy;
-                entry["front_visibility"] = value.front;
+                const optimize::Coherence coherent =
+                    optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
+                entry.update(measuresJson(value, coherent, displayOptions.reveal));
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
                 entry["params"] = render::methodToJson(*best.method);
                 if (!start->info().scannedParameter.empty()) entry["alpha_scan"] = options->optimization.alphaScan;
-                table1 << " " << percent(value.energy) << " (" << percent(value.front) << ") |";
+                visibility.cell(percent(value.energy) + " (" + percent(value.front) + ")");
+                literal.cell(percent(value.paperLiteral));
+                coherence.cell(fixed(coherent.value(), 3));
+                reveal.cell(displayOptions.reveal ? revealText(value.reveal) : "-");
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;
                     picture.width = picture.height =
@@ -167,16 +209,21 @@ Command addEvaluateCommand(CLI::App& app)
                 }
                 results[stem][methodName] = entry;
                 core::logInfo(stem + " " + methodName + ": visibility " + percent(value.energy) + "% (front " +
-                              percent(value.front) + "%)");
+                              percent(value.front) + "%), coherence " + fixed(coherent.value(), 3));
             }
-            table1 << "\n";
+            for (MethodTable* table : {&visibility, &literal, &coherence, &reveal}) table->endRow();
             table2 << "\n";
         }
         if (!options->json.empty()) writeJsonFile(results, options->json);
-        const std::string markdown = "## Visibility in percent at each method's best view (front-only in brackets)\n\n"
-                                     "ceiling: the marked voxels the surface itself passes through (no method visits more)\n\n" +
-                                     table1.str() + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" +
-                                     table2.str();
+        std::string markdown =
+            "## Surface visibility in percent at each method's best view (front-only in brackets)\n\n" +
+            visibility.str() + "\n## Paper-literal visibility in percent (visited / marked voxels), same views\n\n" +
+            literal.str() + "\n## Mapping coherence at " + std::to_string(options->displayResolution) + "^2 pixels, same views\n\n" +
+            coherence.str();
+        if (anyReveal)
+            markdown += "\n## Hot-spot reveal in percent of the important surface: total (direct) [each region]\n\n" +
+                        reveal.str();
+        markdown += "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + table2.str();
         if (!options->markdown.empty())
             core::writeAtomically(options->markdown, [&](const std::string& path) {
                 std::ofstream out(path);

@@ -18,6 +18,17 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
             {"params", render::methodToJson(*view.method)}};
 }
 
+nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::Coherence& coherence, bool withReveal)
+{
+    nlohmann::json json = {{"visibility", value.energy},
+                           {"paper_literal", value.paperLiteral},
+                           {"front_visibility", value.front},
+                           {"coherence", coherence.value()}};
+    if (withReveal)
+        json["reveal"] = {{"total", value.reveal.total}, {"direct", value.reveal.direct}, {"per_region", value.reveal.perRegion}};
+    return json;
+}
+
 void writeJsonFile(const nlohmann::json& json, const std::string& path)
 {
     core::writeAtomically(path, [&](const std::string& temporary) {

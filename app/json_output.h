@@ -2,6 +2,7 @@
 /// @brief JSON forms of the engine's results, and writing a JSON file atomically.
 #pragma once
 
+#include <ivis/optimize/coherence.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,10 @@ namespace ivis::app {
 
 /// @brief One visited view: angles, energy, front-only energy, accepted, parameters.
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
+
+/// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,
+///        coherence and, when @a withReveal, reveal (total, direct, per_region).
+nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::Coherence& coherence, bool withReveal);
 
 /// @brief Writes @a json (indented) to @a path through a temporary file.
 /// @throw InputError naming the path when it cannot be written

@@ -14,8 +14,16 @@ void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag, st
     else
         command.add_option("mesh", source, help)->required();
     auto* scalar = command.add_option("--scalar", load.read.scalarName, "Per-vertex PLY property to show");
-    command.add_option("--scalar-file", load.read.scalarFile, "Text file with one scalar value per vertex")
-        ->excludes(scalar);
+    auto* scalarFile =
+        command.add_option("--scalar-file", load.read.scalarFile, "Text file with one scalar value per vertex")
+            ->excludes(scalar);
+    command
+        .add_option("--hotspots", load.hotSpots,
+                    "Show N Gaussian hot spots instead of a scalar: the first two at the ends of the mesh's thinnest "
+                    "principal axis, the next along the middle and the longest axis (reveal measure)")
+        ->check(CLI::Range(1, 6))
+        ->excludes(scalar)
+        ->excludes(scalarFile);
     command.add_flag("--cap-holes", load.capHoles, "Close open boundary loops (caps are never coloured)");
     command.add_option(resolutionFlag, volume.resolution,
                        "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +

@@ -50,8 +50,8 @@ void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOption
         if (value < render::escapeDistance(float(volume.farFieldReach))) continue;
         char text[256];
         std::snprintf(text, sizeof text,
-                      "%s %g is at or beyond the volume's --reach %g: it would lie outside the distance field (raise "
-                      "--reach above it)",
+                      "%s %g is not below the volume's --reach %g (the curved rays escape at 0.999 of it): it would lie "
+                      "outside the distance field (raise --reach above it)",
                       spec.option().c_str(), double(value), volume.farFieldReach);
         throw ValueError(text);
     }

@@ -15,6 +15,8 @@
 namespace ivis::app {
 
 /// @brief The method and its parameters as given on the command line.
+/// @note CLI11 writes into the object addTo() registered: copy it only after parsing, and call
+///       create() while the CLI::App lives (it asks the options which were given).
 struct MethodOptions {
     std::string method = render::defaultMethod()->name();
     std::map<std::string, std::vector<float>> values;  ///< by parameter key, as given

@@ -17,7 +17,7 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
     command.add_option("--steps", steps, "Annealing proposals after the start view")->capture_default_str();
     command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")->capture_default_str();
-    command.add_option("--gradient", gradient, "auto, analytic (InverseVis + scalar) or forward differences")
+    command.add_option("--gradient", gradient, "auto, analytic (curved-ray methods, scalar energy) or forward differences")
         ->check(CLI::IsMember({"auto", "analytic", "forward"}))
         ->capture_default_str();
     command.add_option("--ascent-iterations", ascentIterations, "Line searches per view at most")
@@ -28,8 +28,8 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "--opt-res; the best view's parameters are ascended again there)")
         ->check(CLI::Range(4, 8192));
     command.add_option("--alpha-scan", alphaScan,
-                       "inversevis: try this many alphas evenly on [0, 4] before each ascent and start from the "
-                       "best (beyond the paper; default none)")
+                       "Try this many values of the method's scanned parameter (inversevis: alpha) evenly over its "
+                       "bounds before each ascent and start from the best (beyond the paper; default none)")
         ->check(CLI::Range(2, 400));
 }
 

@@ -10,6 +10,7 @@
 #include <ivis/core/progress_bar.h>
 #include <ivis/core/errors.h>
 #include <ivis/optimize/annealing_plot.h>
+#include <ivis/optimize/coherence.h>
 #include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -73,11 +74,16 @@ Command addOptimizeCommand(CLI::App& app)
         // The best view at display resolution: picture and energy.
         const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, start.fovYDeg);
         renderOptions.method = best.method;
-        core::writePng(render::renderImage(scene, camera, renderOptions, &progress).image, options->output,
-                       renderOptions.shading.transparentBackground);
+        const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
+        core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
         const optimize::EnergyOptions displayOptions =
             options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
         const optimize::EnergyValue display = optimize::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.method);
+        optimize::EnergyOptions measureOptions = displayOptions;
+        measureOptions.kind = optimize::EnergyKind::Visibility;
+        measureOptions.paperLiteral = true;
+        measureOptions.reveal = field.hasScalar();
+        const optimize::EnergyValue measured = optimize::EnergyEvaluator(scene, measureOptions).evaluate(camera, best.method);
         if (!options->plot.empty()) core::writePng(optimize::plotVisitedViews(result), options->plot, false);
 
         nlohmann::json visited = nlohmann::json::array();
@@ -100,6 +106,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"display_energy_value", display.energy},
             {"display_front_energy_value", display.front},
             {"mean_importance", best.value.meanImportance},
+            {"measures", measuresJson(measured, optimize::mappingCoherence(picture.layers), measureOptions.reveal)},
             {"output", options->output},
             {"visited", visited}};
         if (!options->json.empty()) writeJsonFile(json, options->json);

@@ -7,6 +7,7 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
+#include <ivis/optimize/coherence.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
@@ -75,6 +76,7 @@ Command addRenderCommand(CLI::App& app)
                                       {"rays_landed", s.raysLanded},
                                       {"mean_steps", s.meanSteps()},
                                       {"nan_pixels", s.nanPixels},
+                                      {"coherence", optimize::mappingCoherence(result.layers).value()},
                                       {"theta", angles.x},
                                       {"phi", angles.y},
                                       {"volume_resolution", volume.options.resolution},

@@ -51,6 +51,7 @@ public:
     core::Image readColour() const { return mTarget.readColour(); }
     /// @brief The last frame's regions (0 background, 1 direct, 2 indirect), row 0 at the top.
     std::vector<std::uint8_t> readRegion() const { return mTarget.readRegion(); }
+    /// @brief Size of the offscreen target in pixels.
     int width() const { return mTarget.width(); }
     int height() const { return mTarget.height(); }
 

@@ -32,6 +32,7 @@ public:
     core::Image readColour() const;
     /// @brief The regions (0 background, 1 direct, 2 indirect), row 0 at the top.
     std::vector<std::uint8_t> readRegion() const;
+    /// @brief Size of the offscreen target in pixels.
     int width() const { return mWidth; }
     int height() const { return mHeight; }
 

@@ -47,6 +47,7 @@ public:
                     std::vector<double> parametersTo, double startTime, double seconds = 1.0);
     /// @brief True between start and end.
     bool active(double now) const { return mActive && now < mStart + mSeconds + 1e-9; }
+    /// @brief True from the start until stop().
     bool started() const { return mActive; }
     /// @brief State at time @a now (the end state after the end).
     void at(double now, OrbitCamera& camera, std::vector<double>& parameters) const;

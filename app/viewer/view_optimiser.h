@@ -47,7 +47,7 @@ struct OptimiserSettings {
     core::ScalarRange importanceRange; ///< scalar values mapped to importance 0 and 1 (scalar energy)
 };
 
-/// @brief "optimise alpha": optimize::optimizeParameters (gradient ascent with golden-section line
+/// @brief The parameter optimiser ("optimise alpha", ...): optimize::optimizeParameters (gradient ascent with golden-section line
 ///        searches) of the current method's optimised parameters (as its description says) at the
 ///        current camera. A method without any is only evaluated.
 ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);

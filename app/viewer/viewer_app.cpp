@@ -63,7 +63,7 @@ ViewerApp::~ViewerApp()
 {
     mCancelJob = true;
     if (mJob.valid() && mJob.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
-        std::printf("inversevis-view: waiting for the running optimisation to finish (it cannot be interrupted)\n");
+        std::printf("inversevis-view: stopping the running optimisation at its next line search or proposal\n");
         std::fflush(stdout);
         mJob.wait();
     }
@@ -262,6 +262,7 @@ void ViewerApp::pollOptimiser(double time)
         std::fflush(stdout);
         // The optimised parameters ease to the result unless the method was switched meanwhile.
         const bool sameMethod = render::sameFixedParameters(*result.state.method, *mMethod);
+        mAnimatedMethod = mMethod->name();
         const OrbitCamera to = OrbitCamera::fromCamera(result.state.camera, false);
         mAnimation = CameraAnimation(mOrbit, sameMethod ? render::optimisedParameters(*mMethod) : std::vector<double>{},
                                      to, sameMethod ? render::optimisedParameters(*result.state.method) : std::vector<double>{},
@@ -379,7 +380,8 @@ int ViewerApp::runInteractive()
         if (mAnimation.started()) {
             std::vector<double> parameters;
             mAnimation.at(time, mOrbit, parameters);
-            if (!parameters.empty()) mMethod = render::withOptimisedParameters(*mMethod, parameters);
+            if (!parameters.empty() && mMethod->name() == mAnimatedMethod)  // unless switched meanwhile
+                mMethod = render::withOptimisedParameters(*mMethod, parameters);
             if (!mAnimation.active(time)) mAnimation.stop();
             mDirty = true;
         }

@@ -64,6 +64,7 @@ private:
     ViewerOptions mOptions;
     std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
     render::MethodPtr mMethod;
+    std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
     core::ScalarRange mDataRange;
     OrbitCamera mOrbit;

@@ -49,6 +49,7 @@ void ViewerOptions::validate() const
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
+    checkMethodFitsVolume(*view.renderOptions().method, mesh.volumeOptions());
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
         throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");
 }

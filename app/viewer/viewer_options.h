@@ -36,7 +36,8 @@ struct ViewerOptions {
 
     /// @brief Registers every option on @a app.
     void addTo(CLI::App& app);
-    /// @brief Throws InputError / ValueError for values CLI11 does not check (sizes, frames, budget).
+    /// @brief Throws InputError / ValueError for values CLI11 does not check (sizes, frames, budget,
+    ///        the method's parameters and the hull offset against the volume's reach).
     void validate() const;
     /// @brief True when the program renders without a user (screenshot or benchmark).
     bool headless() const { return !screenshot.empty() || benchmark; }

@@ -1,4 +1,4 @@
-// InverseVis curved rays (render/src/curved_ray.cpp, ScreenMap::inverseVis); the methods that use
+// InverseVis curved rays (render/src/curved_ray.cpp, render::CurvedRayMap::map); the methods that use
 // them differ only in the alpha they launch with (method_inversevis*.glsl).
 uniform float uStep;
 uniform float uEscape;          // 0.999 * reach
@@ -30,7 +30,7 @@ bool integrateCurvedRay(inout vec3 p, inout vec3 v)
     return false;
 }
 
-// ScreenMap::seedFromRay: where the view ray leaves the hull, and the gradient of phi there.
+// CurvedRayMap::start: where the view ray leaves the hull, and the gradient of phi there.
 bool hullSeed(vec3 origin, vec3 direction, out vec3 seed, out vec3 gradient)
 {
     if (!findHullExit(origin, direction, seed)) return false;
@@ -38,7 +38,7 @@ bool hullSeed(vec3 origin, vec3 direction, out vec3 seed, out vec3 gradient)
     return true;
 }
 
-// ScreenMap::traceFrom: launches from the hull seed with @a alpha; a ray that does not land is
+// CurvedRayMap::trace: launches from the hull seed with @a alpha; a ray that does not land is
 // relaunched with half its alpha, up to @a retries times.
 bool landCurvedRay(vec3 seed, vec3 gradient, vec3 direction, float alpha, int retries, out vec3 colour)
 {

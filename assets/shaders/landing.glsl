@@ -2,7 +2,7 @@
 uniform float uIndirectBrightness;
 uniform float uEpsilon;         // landing threshold: phi < this
 
-// ScreenMap::landedAt + Shader::shade for an indirect pixel: the nearest voxel's triangle, the
+// render::landedAt + Shader::shade for an indirect pixel: the nearest voxel's triangle, the
 // exact closest point on it (core::closestPointOnTriangle), colour x 0.6 x (0.7 + 0.3 facing).
 vec3 closestBarycentric(vec3 p, int triangle)
 {
@@ -56,7 +56,7 @@ vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
     return albedo(triangle, value) * uIndirectBrightness * (0.7 + 0.3 * facing);
 }
 
-// ScreenMap::landedAt finds the exact closest surface point of p with a BVH query bounded by the
+// render::landedAt finds the exact closest surface point of p with a BVH query bounded by the
 // distance to the triangle stored at the nearest voxel. Here: the closest point on the closest of
 // the triangles stored at the 8 voxels around p (the nearest one among them). The exact closest
 // triangle of a point within half a voxel of the surface is, but for near-ties, one of those.

@@ -4,7 +4,7 @@ uniform vec3 uAlphaProfile;     // a0, a1, a2
 uniform float uMaxAlpha;        // the profile's clamp
 uniform int uRetries;           // relaunches at half alpha of a ray that does not land
 
-// AlphaProfile::at of the seed's alignment c = r . g / |g| (ScreenMap::alphaOf, ScreenMap::seedFromRay).
+// AlphaProfile::at of the seed's alignment c = r . g / |g| (AdaptiveInverseVisMethod::launchVelocity).
 float profileAlpha(vec3 gradient, vec3 viewDirection)
 {
     float len = length(gradient);
@@ -12,7 +12,7 @@ float profileAlpha(vec3 gradient, vec3 viewDirection)
     return clamp(uAlphaProfile.x + c * (uAlphaProfile.y + c * uAlphaProfile.z), 0.0, uMaxAlpha);
 }
 
-// The indirect ray of @a pixel: ScreenMap::inverseVis with the profile's alpha and uRetries retries.
+// The indirect ray of @a pixel: CurvedRayMap::map with the profile's alpha and uRetries retries.
 bool indirectRay(vec2 pixel, out vec3 colour)
 {
     colour = vec3(0.0);

@@ -1,7 +1,7 @@
-// inversevis: curved rays from the hull, all launched with the one alpha (render::CurvedRayParams).
+// inversevis: curved rays from the hull, all launched with the one alpha (render::InverseVisMethod).
 uniform float uAlpha;
 
-// The indirect ray of @a pixel: ScreenMap::inverseVis with alpha = uAlpha and no retries.
+// The indirect ray of @a pixel: CurvedRayMap::map with alpha = uAlpha and no retries.
 bool indirectRay(vec2 pixel, out vec3 colour)
 {
     colour = vec3(0.0);

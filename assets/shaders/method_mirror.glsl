@@ -1,5 +1,5 @@
 // mirror: a quadratic height-field mirror behind the object (render/src/quadratic_mirror.cpp,
-// ScreenMap::mirror).
+// MirrorMethod's MirrorMap::map).
 // ---- quadratic mirror (render::MirrorParams)
 uniform float uMirrorW[5];
 uniform float uMirrorZm;        // apex height in eye space

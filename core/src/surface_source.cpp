@@ -2,6 +2,7 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/hole_capping.h>
+#include <ivis/core/hot_spots.h>
 #include <ivis/core/log.h>
 #include <ivis/core/procedural_scenes.h>
 
@@ -30,6 +31,10 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         if (loops > 0) logInfo(source + ": capped " + std::to_string(loops) + " boundary loops");
     }
     normalize(field);
+    if (options.hotSpots > 0) {
+        field.values = hotSpotValues(field.mesh, placeHotSpots(field.mesh, options.hotSpots));
+        field.name = "hotspots";
+    }
     return field;
 }
 

@@ -11,12 +11,9 @@ nlohmann::json methodToJson(const Method& method)
     const ParameterValues values = method.values();
     for (const ParameterSpec& spec : method.info().parameters) {
         const std::vector<float>& v = values.at(spec.key);
-        if (spec.integer)
-            json[spec.key] = int(v[0]);
-        else if (v.size() == 1)
-            json[spec.key] = v[0];
-        else
-            json[spec.key] = v;
+        nlohmann::json value = nlohmann::json::array();
+        for (float component : v) value.push_back(spec.integer ? nlohmann::json(int(component)) : nlohmann::json(component));
+        json[spec.key] = v.size() == 1 ? value[0] : value;
     }
     return json;
 }

@@ -449,29 +449,47 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     EXPECT_EQ(report.at("params").at("method"), "inversevis-adaptive");
     EXPECT_EQ(report.at("params").at("alpha_profile").size(), 3u);
     EXPECT_GT(report.at("display_energy_value").get<double>(), report.at("display_front_energy_value").get<double>());
+    const nlohmann::json& measures = report.at("measures");
+    EXPECT_EQ(measures.at("visibility"), report.at("display_energy_value")) << "the energy is the surface visibility";
+    for (const char* key : {"paper_literal", "front_visibility", "coherence"}) EXPECT_TRUE(measures.contains(key)) << key;
     for (const char* file : {"best.png", "views.png"}) EXPECT_TRUE(fs::exists(output(file))) << file;
 }
 
-TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
+TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
 {
-    const CliResult result = runCli("evaluate scene:sphere --volume-res 64 --methods front,inversevis "
+    const CliResult result = runCli(render("scene:vessel-tree", "--method inversevis-adaptive --stats-json " +
+                                                                 quoted(output("s.json"))));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(output("s.json")));
+    EXPECT_EQ(stats.at("method"), "inversevis-adaptive");
+    EXPECT_EQ(stats.at("alpha_profile").size(), 3u);
+    EXPECT_FALSE(stats.contains("alpha")) << "only the method's own parameters";
+    EXPECT_FALSE(stats.contains("mirror_w"));
+    EXPECT_GT(stats.at("coherence").get<double>(), 0.0);
+    EXPECT_LE(stats.at("coherence").get<double>(), 1.0);
+}
+
+TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)
+{
+    const CliResult result = runCli("evaluate scene:sphere --hotspots 2 --volume-res 64 --methods front,inversevis "
                                     "--opt-res 16,24 --ascent-res 16 --steps 2 --display-res 64 --cache-dir " +
                                     quoted(output("")) +
                                     " --json " + quoted(output("e.json")) + " --markdown " + quoted(output("e.md")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("e.json"))).at("sphere");
-    const double ceiling = report.at("visibility_ceiling").get<double>();
-    EXPECT_GT(ceiling, 0.5);
-    EXPECT_LT(ceiling, 0.9);
     for (const char* method : {"front", "inversevis"}) {
         const nlohmann::json& entry = report.at(method);
-        EXPECT_LE(entry.at("visibility").get<double>(), ceiling) << method;
+        for (const char* key : {"visibility", "paper_literal", "front_visibility", "coherence"}) {
+            EXPECT_GE(entry.at(key).get<double>(), 0.0) << method << " " << key;
+            EXPECT_LE(entry.at(key).get<double>(), 1.0) << method << " " << key;
+        }
         EXPECT_LE(entry.at("front_visibility").get<double>(), entry.at("visibility").get<double>()) << method;
+        EXPECT_EQ(entry.at("reveal").at("per_region").size(), 2u) << "two hot spots";
+        EXPECT_LE(entry.at("reveal").at("direct").get<double>(), entry.at("reveal").at("total").get<double>());
         EXPECT_EQ(entry.at("seconds").size(), 2u) << method;
         EXPECT_TRUE(entry.at("optimum_shift_deg").contains("24")) << method;
         for (const char* resolution : {"16", "24"}) {
             const nlohmann::json& optimum = entry.at("by_resolution").at(resolution);
-            EXPECT_LE(optimum.at("visibility").get<double>(), ceiling) << method << " " << resolution;
             EXPECT_TRUE(optimum.contains("theta") && optimum.contains("phi") && optimum.contains("params"));
         }
         EXPECT_EQ(entry.at("by_resolution").at("16").at("visibility"), entry.at("visibility")) << method;
@@ -479,9 +497,11 @@ TEST_F(Cli, EvaluateReportsEveryMethodBelowTheCeiling)
         EXPECT_EQ(entry.at("ascent_res"), nlohmann::json({{"16", 16}, {"24", 16}})) << method;
         for (const char* key : {"theta", "phi", "params"}) EXPECT_TRUE(entry.contains(key)) << method << " " << key;
     }
+    EXPECT_EQ(report.at("front").at("coherence"), 1.0) << "no indirect pixel, no tear";
     EXPECT_GT(report.at("inversevis").at("visibility").get<double>(), report.at("front").at("visibility").get<double>());
     EXPECT_EQ(report.at("inversevis").at("alpha_scan"), 0) << "the paper's ascent unless --alpha-scan";
     EXPECT_NE(result.out.find("| sphere |"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("Hot-spot reveal"), std::string::npos) << result.out;
     EXPECT_TRUE(fs::exists(output("e.md")));
 }
 

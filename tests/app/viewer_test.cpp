@@ -212,7 +212,7 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
 }
 
 // The interactive path: the ImGui panel, the background loader, the "optimise alpha" (parameters) button pressed
-// by --optimise (render::optimizeParameters on a background thread), the animation toward its result
+// by --optimise (optimize::optimizeParameters on a background thread), the animation toward its result
 // and the window read back with the panel.
 TEST(Viewer, PanelRunsTheParameterOptimiser)
 {

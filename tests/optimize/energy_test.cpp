@@ -95,44 +95,46 @@ TEST(Energy, AlphaDerivativeMatchesFiniteDifferencesOnVesselTree)
     for (float alpha : {0.3f, 0.5f}) expectSmoothPixelsMatch(test::vesselScene(), core::Camera::fromAngles(90.0, 0.0), alpha);
 }
 
-TEST(Energy, VisibilityCountsMarkedVoxelsOfLandingPoints)
+TEST(Energy, SurfaceVisibilityCountsTheSurfaceVoxelsOfLandingPoints)
 {
     const auto& fixture = test::sphereScene();
     EnergyOptions options;
-    options.resolution = 800;  // enough rays to visit every voxel of the visible cap
+    options.resolution = 2000;  // rays land in a voxel in proportion to its surface area: the slivers a
+                                // sphere cuts off a voxel's corner need rays 1/16 voxel apart
+    options.paperLiteral = true;
     const EnergyEvaluator evaluator(*fixture.scene, options);
-    const VisibilityGrid& grid = *evaluator.visibilityGrid();
-    // Marked voxels of the icosphere (within 0.001 of the unit sphere): centres with
-    // ||c| - 1| < one voxel, up to that tolerance.
+    const SurfaceVoxels& voxels = *evaluator.surfaceVoxels();
+    // Voxels the unit sphere crosses (the icosphere lies within 0.001 of it): every voxel whose
+    // centre is within half a voxel of the sphere, none whose centre is beyond half its diagonal.
     std::size_t atLeast = 0, atMost = 0;
-    const int r = grid.resolution();
-    const double vs = grid.voxelSize();
-    for (int k = 0; k < r; ++k)
-        for (int j = 0; j < r; ++j)
-            for (int i = 0; i < r; ++i) {
-                const glm::dvec3 c(-2.5 + (i + 0.5) * vs, -2.5 + (j + 0.5) * vs, -2.5 + (k + 0.5) * vs);
+    const vdb::BoxLattice& lattice = voxels.lattice();
+    const double vs = lattice.voxelSize();
+    for (int k = 0; k < lattice.resolution; ++k)
+        for (int j = 0; j < lattice.resolution; ++j)
+            for (int i = 0; i < lattice.resolution; ++i) {
+                const glm::dvec3 c(lattice.worldFromIndex(double(i)), lattice.worldFromIndex(double(j)),
+                                   lattice.worldFromIndex(double(k)));
                 const double d = std::abs(glm::length(c) - 1.0);
-                atLeast += d < vs - 0.001 ? 1 : 0;
-                atMost += d < vs + 0.001 ? 1 : 0;
+                atLeast += d < 0.5 * vs - 0.001 ? 1 : 0;
+                atMost += d < 0.5 * std::sqrt(3.0) * vs + 0.001 ? 1 : 0;
             }
-    EXPECT_GE(grid.markedCount(), atLeast);
-    EXPECT_LE(grid.markedCount(), atMost);
-    // Front view from (0, 0, 2.5): the cap z > 0.4 is visible. Its voxels, found by sampling the
-    // cap densely, bound the measure (rays land only in voxels the surface passes through, a
-    // subset of the two-voxel-thick marked shell).
-    auto capFraction = [&](double zMin) {
-        std::vector<std::uint64_t> keys;
-        const int samples = 400000;
-        for (int i = 0; i < samples; ++i) {  // Fibonacci points on the unit sphere
-            const double z = 1.0 - 2.0 * (i + 0.5) / samples, r = std::sqrt(1.0 - z * z);
-            const double a = i * 2.399963229728653;
-            if (z > zMin) keys.push_back(grid.keyOf(glm::vec3(float(r * std::cos(a)), float(r * std::sin(a)), float(z))));
-        }
-        return double(grid.countMarked(keys)) / double(grid.markedCount());
+    EXPECT_GE(voxels.count(), atLeast);
+    EXPECT_LE(voxels.count(), atMost);
+    // Front view from (0, 0, 2.5): the cap z > 0.4 is visible, 30% of the sphere's area. Its surface
+    // voxels bound the measure; grazing pixels near the rim are sparse.
+    const core::TriangleMesh& mesh = fixture.field.mesh;
+    auto capFraction = [&](float zMin) {
+        const SurfaceVoxels cap(mesh, lattice.resolution, [&](std::size_t t, const glm::vec3& b) {
+            const auto& v = mesh.triangles[t];
+            return b.x * mesh.positions[v[0]].z + b.y * mesh.positions[v[1]].z + b.z * mesh.positions[v[2]].z > zMin;
+        });
+        return double(cap.count()) / double(voxels.count());
     };
     const EnergyValue front = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), makeMethod("front"));
-    EXPECT_GT(front.energy, 0.9 * capFraction(0.41));  // grazing pixels near the rim are sparse
-    EXPECT_LT(front.energy, capFraction(0.39));
+    EXPECT_GT(front.energy, 0.97 * capFraction(0.41f));
+    EXPECT_LT(front.energy, capFraction(0.39f));
+    EXPECT_NEAR(front.energy, 0.3, 0.015) << "the analytic cap fraction (1 - 0.4) / 2";
+    EXPECT_LT(front.paperLiteral, front.energy) << "the literal measure counts marked voxels without surface";
     EXPECT_DOUBLE_EQ(front.energy, front.front);
     EXPECT_EQ(front.pixelsIndirect, 0u);
     const EnergyValue inverse = evaluator.evaluate(core::Camera::fromAngles(90.0, 0.0), makeMethod("inversevis"));

@@ -11,7 +11,7 @@
 namespace ivis::optimize {
 namespace {
 
-TEST(VisibilityGrid, MarkedAndReachableVoxelsOfASquareMatchBruteForce)
+TEST(VisibilityGrid, MarkedAndSurfaceVoxelsOfASquareMatchBruteForce)
 {
     const float lo = -0.4901f, hi = 0.5103f, z = 0.0155f;  // off the voxel boundaries
     core::TriangleMesh square;
@@ -34,7 +34,7 @@ TEST(VisibilityGrid, MarkedAndReachableVoxelsOfASquareMatchBruteForce)
                 crossed += inLayer && overlaps;
             }
     EXPECT_EQ(grid.markedCount(), marked);
-    EXPECT_EQ(grid.reachableCount(square), crossed);
+    EXPECT_EQ(SurfaceVoxels(square, 200).count(), crossed);
     EXPECT_LT(double(crossed), 0.55 * double(marked)) << "the square crosses about half its marked shell";
 }
 

@@ -40,7 +40,11 @@ EnergyEvaluator::EnergyEvaluator(const RenderScene& scene, const EnergyOptions& 
     if (options.kind == EnergyKind::Scalar && !scene.field().hasScalar())
         throw InputError(scene.field().sourcePath + ": the scalar energy needs a scalar field (--scalar NAME)");
     if (options.kind == EnergyKind::Visibility)
-        mVisibility = std::make_unique<VisibilityGrid>(scene.mesh(), scene.bvh(), options.visibilityResolution);
+        mSurface = std::make_unique<SurfaceVoxels>(scene.mesh(), options.visibilityResolution);
+    if (options.kind == EnergyKind::Visibility && options.reveal)
+        mReveal = std::make_unique<RevealMeasure>(scene.field(), options.importanceRange, options.visibilityResolution);
+    if (options.kind == EnergyKind::Visibility && options.paperLiteral)
+        mLiteral = std::make_unique<VisibilityGrid>(scene.mesh(), scene.bvh(), options.visibilityResolution);
 }
 
 float EnergyEvaluator::importance(const SurfacePoint& point) const
@@ -72,8 +76,8 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
                 curved ? curved->landing(pixel.start, sampler) : screen.indirect(pixel.x, pixel.y, sampler);
             if (m.region != Region::Indirect) continue;
             ++tally.pixelsIndirect;
-            if (mVisibility)
-                tally.allKeys.push_back(mVisibility->keyOf(m.point.position));
+            if (mSurface)
+                tally.allKeys.push_back(mSurface->keyOf(m.point.position));
             else
                 tally.indirect += importance(m.point);
         }
@@ -82,8 +86,8 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
     Tally total;
     value.pixelsDirect = samples.direct().size();
     for (const SurfacePoint& point : samples.direct()) {
-        if (mVisibility)
-            total.directKeys.push_back(mVisibility->keyOf(point.position));
+        if (mSurface)
+            total.directKeys.push_back(mSurface->keyOf(point.position));
         else
             total.direct += importance(point);
     }
@@ -94,10 +98,11 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
         total.allKeys.insert(total.allKeys.end(), tally.allKeys.begin(), tally.allKeys.end());
     }
     const int n = samples.frame().width();
-    if (mVisibility) {
-        const double marked = double(std::max<std::size_t>(1, mVisibility->markedCount()));
-        value.energy = double(mVisibility->countMarked(total.allKeys)) / marked;
-        value.front = double(mVisibility->countMarked(total.directKeys)) / marked;
+    if (mSurface) {
+        value.energy = mSurface->fractionSeen(total.allKeys);
+        value.front = mSurface->fractionSeen(total.directKeys);
+        if (mLiteral) value.paperLiteral = mLiteral->fractionVisited(total.allKeys);
+        if (mReveal) value.reveal = mReveal->measure(total.directKeys, total.allKeys);
     } else {
         const double pixelArea = 4.0 / (double(n) * n);  // NDC [-1,1]^2
         value.energy = (mOptions.gamma * total.direct + total.indirect) * pixelArea;

@@ -55,45 +55,11 @@ VisibilityGrid::VisibilityGrid(const core::TriangleMesh& mesh, const core::Trian
         if (marked[n]) mMarked.push_back(candidates[n]);
 }
 
-std::uint64_t VisibilityGrid::keyOf(const glm::vec3& p) const
+double VisibilityGrid::fractionVisited(std::vector<std::uint64_t>& keys) const
 {
-    std::uint64_t index[3];
-    for (int a = 0; a < 3; ++a) {
-        const double i = std::floor(mLattice.cellFromWorld(double(p[a])));
-        if (!(i >= 0.0 && i < mLattice.resolution)) return kNoVoxel;
-        index[a] = std::uint64_t(i);
-    }
-    const std::uint64_t n = std::uint64_t(mLattice.resolution);
-    return (index[2] * n + index[1]) * n + index[0];
+    return mMarked.empty() ? 0.0 : double(countMarked(keys)) / double(mMarked.size());
 }
 
-std::size_t VisibilityGrid::reachableCount(const core::TriangleMesh& mesh) const
-{
-    std::vector<std::vector<std::uint64_t>> perTriangle(mesh.triangles.size());
-    const double spacing = mLattice.voxelSize() / 8.0;
-    tbb::parallel_for(std::size_t(0), mesh.triangles.size(), [&](std::size_t t) {
-        const glm::vec3 a = mesh.positions[mesh.triangles[t][0]], b = mesh.positions[mesh.triangles[t][1]],
-                        c = mesh.positions[mesh.triangles[t][2]];
-        const double longest = std::max({glm::length(b - a), glm::length(c - a), glm::length(c - b)});
-        const int n = std::max(1, int(std::ceil(longest / spacing)));
-        for (int i = 0; i <= n; ++i)
-            for (int j = 0; i + j <= n; ++j)
-                perTriangle[t].push_back(keyOf(a + (float(i) / n) * (b - a) + (float(j) / n) * (c - a)));
-        std::sort(perTriangle[t].begin(), perTriangle[t].end());
-        perTriangle[t].erase(std::unique(perTriangle[t].begin(), perTriangle[t].end()), perTriangle[t].end());
-    });
-    std::vector<std::uint64_t> keys;
-    for (const auto& triangleKeys : perTriangle) keys.insert(keys.end(), triangleKeys.begin(), triangleKeys.end());
-    return countMarked(keys);
-}
-
-std::size_t VisibilityGrid::countMarked(std::vector<std::uint64_t>& keys) const
-{
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    std::size_t count = 0;
-    for (std::uint64_t key : keys) count += std::binary_search(mMarked.begin(), mMarked.end(), key) ? 1 : 0;
-    return count;
-}
+std::size_t VisibilityGrid::countMarked(std::vector<std::uint64_t>& keys) const { return countIn(mMarked, keys); }
 
 }  // namespace ivis::optimize

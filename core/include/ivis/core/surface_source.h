@@ -16,10 +16,12 @@ inline constexpr const char* kScenePrefix = "scene:";
 struct SurfaceLoadOptions {
     MeshReadOptions read;   ///< scalar selection (files only)
     bool capHoles = false;  ///< close boundary loops with caps tagged as non-data
+    int hotSpots = 0;       ///< when > 0, the scalar is this many generated hot spots (core::placeHotSpots)
 };
 
 /// @brief Reads the file (or generates the scene), logs dropped degenerate triangles, caps holes
-///        when asked, and normalises into [-1,1]^3.
+///        when asked, normalises into [-1,1]^3 and, when asked, puts hot spots on it as its scalar
+///        ("hotspots", in [0, 1]; cap vertices included, caps are never coloured).
 /// @throw InputError for bad files or scene names (message names the source)
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options = {});
 

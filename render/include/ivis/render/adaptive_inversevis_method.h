@@ -32,6 +32,7 @@ const MethodInfo& adaptiveInverseVisMethodInfo();
 /// @brief InverseVis with the alpha profile.
 class AdaptiveInverseVisMethod final : public CurvedRayMethod {
 public:
+    /// @brief The method with rays @a ray and the alpha profile @a profile.
     AdaptiveInverseVisMethod(const CurvedRayParams& ray, const AlphaProfile& profile)
         : CurvedRayMethod(ray), mProfile(profile)
     {

@@ -21,7 +21,7 @@ struct CurvedRayStart {
 /// @brief How a launch velocity moves with the optimised parameters: along one direction,
 ///        dv0 / dparameter_k = perParameter[k] * direction.
 struct LaunchSensitivity {
-    glm::vec3 direction{0.0f};
+    glm::vec3 direction{0.0f};         ///< the direction in velocity space the launch moves along
     std::vector<double> perParameter;  ///< one entry per optimised component (optimisedParameters order)
 };
 
@@ -41,6 +41,7 @@ ParameterValues curvedRayValues(const CurvedRayParams& params);
 /// @brief A method whose indirect rays are curved rays from the hull.
 class CurvedRayMethod : public Method {
 public:
+    /// @brief A curved-ray method whose rays integrate with @a params.
     explicit CurvedRayMethod(const CurvedRayParams& params) : mRay(params) {}
     /// @brief Step size, hull offset, step cap and landing threshold of the rays.
     const CurvedRayParams& rayParams() const { return mRay; }
@@ -63,6 +64,7 @@ private:
 /// @warning Thread-safe given one DistanceField::Sampler per thread.
 class CurvedRayMap final : public IndirectMap {
 public:
+    /// @brief The curved rays of @a method seen through @a frame (scene and method must outlive it).
     CurvedRayMap(const RenderScene& scene, const core::CameraFrame& frame, const CurvedRayMethod& method);
 
     PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const override;
@@ -77,6 +79,7 @@ public:
     /// @brief landedAt() for this view.
     PixelMapping landedAt(const CurvedRayEnd& end, DistanceField::Sampler& sampler) const;
 
+    /// @brief The method whose rays these are.
     const CurvedRayMethod& method() const { return mMethod; }
     /// @brief The landing threshold used.
     float epsilon() const { return mEpsilon; }

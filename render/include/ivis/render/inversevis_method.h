@@ -14,6 +14,7 @@ const MethodInfo& inverseVisMethodInfo();
 /// @brief The paper's InverseVis with one alpha.
 class InverseVisMethod final : public CurvedRayMethod {
 public:
+    /// @brief The method with rays @a ray and initial velocity scale @a alpha.
     InverseVisMethod(const CurvedRayParams& ray, float alpha) : CurvedRayMethod(ray), mAlpha(alpha) {}
     const MethodInfo& info() const override { return inverseVisMethodInfo(); }
     ParameterValues values() const override;

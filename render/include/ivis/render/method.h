@@ -52,7 +52,7 @@ struct LineSearch {
 struct MethodInfo {
     std::string name;                     ///< command-line name, e.g. "inversevis"
     std::string help;                     ///< one line for --help
-    std::vector<ParameterSpec> parameters;
+    std::vector<ParameterSpec> parameters;  ///< every parameter, in the order --help and JSON list them
     /// The scalar energy's gradient is analytic (tangent-linear curved rays); otherwise, and for
     /// the visibility energy always, the ascent uses forward differences.
     bool tangentLinearGradient = false;
@@ -69,7 +69,9 @@ struct MethodInfo {
 };
 
 /// @brief The per-view part of a method: where the indirect ray of a pixel lands.
-/// @warning map() is const and thread-safe given one DistanceField::Sampler per thread.
+/// @warning It refers to the scene and to the method that made it: both must outlive it (ScreenMap
+///          keeps the method alive). map() is const and thread-safe given one
+///          DistanceField::Sampler per thread.
 class IndirectMap {
 public:
     virtual ~IndirectMap() = default;

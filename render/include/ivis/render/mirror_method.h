@@ -14,6 +14,7 @@ const MethodInfo& mirrorMethodInfo();
 /// @brief The quadratic mirror with its parameters.
 class MirrorMethod final : public Method {
 public:
+    /// @brief The mirror @a params.
     explicit MirrorMethod(const MirrorParams& params) : mParams(params) {}
     const MethodInfo& info() const override { return mirrorMethodInfo(); }
     ParameterValues values() const override;

@@ -14,6 +14,7 @@ const MethodInfo& ringMapMethodInfo();
 /// @brief The ring map with its parameters.
 class RingMapMethod final : public Method {
 public:
+    /// @brief The rings of @a params.
     explicit RingMapMethod(const RingParams& params) : mParams(params) {}
     const MethodInfo& info() const override { return ringMapMethodInfo(); }
     ParameterValues values() const override;

@@ -31,8 +31,6 @@ public:
 
     /// @brief The curved rays of this view (null unless the method traces curved rays).
     const CurvedRayMap* curvedRays() const { return mCurved; }
-    const Method& method() const { return *mMethod; }
-    const core::CameraFrame& frame() const { return mFrame; }
 
 private:
     const RenderScene& mScene;

@@ -18,6 +18,7 @@ namespace ivis::vdb {
 
 /// @brief Volume resolutions accepted by validate() (voxels across the box).
 inline constexpr int kMinResolution = 16;
+/// @brief See kMinResolution.
 inline constexpr int kMaxResolution = 4096;
 
 /// @brief Whether the distance carries an inside/outside sign.

@@ -1,12 +1,15 @@
 /// @file energy.h
 /// @brief The energy of what a view shows (METHOD.md, "Energy"):
 ///        E = gamma * sum over I+ of s(P(i)) + sum over I- of s(P(i)), times the pixel area,
-///        with s the normalised scalar ("scalar") or the paper's voxel visibility ("visibility").
+///        with s the normalised scalar ("scalar"), or the surface visibility of METHOD.md's
+///        measures ("visibility", surface_voxels.h).
 /// @warning EnergyEvaluator is immutable after construction; evaluate() is thread-safe.
 #pragma once
 
 #include <ivis/core/camera.h>
 #include <ivis/core/colormap.h>
+#include <ivis/optimize/reveal.h>
+#include <ivis/optimize/surface_voxels.h>
 #include <ivis/optimize/view_samples.h>
 #include <ivis/optimize/visibility_grid.h>
 #include <ivis/render/method.h>
@@ -20,7 +23,7 @@ namespace ivis::optimize {
 /// @brief Which importance the energy sums.
 enum class EnergyKind {
     Scalar,     ///< s = scalar normalised to [0,1] by the importance range
-    Visibility  ///< fraction of marked voxels that some ray lands in
+    Visibility  ///< surface visibility: fraction of the surface voxels some ray lands in
 };
 
 /// @brief Kind from its name ("scalar", "visibility"); throws InputError otherwise.
@@ -34,13 +37,17 @@ struct EnergyOptions {
     float gamma = 1.0f;              ///< weight of the directly visible part
     int resolution = 100;            ///< optimisation resolution: rays per image side
     int visibilityResolution = 200;  ///< voxels per side of the visibility grid (paper: 200)
+    bool paperLiteral = false;       ///< visibility kind: also measure the paper-literal figure
+    bool reveal = false;             ///< visibility kind, with a scalar: also measure the hot-spot reveal
     core::ScalarRange importanceRange{0.0f, 1.0f};  ///< scalar values mapped to importance 0 and 1
 };
 
 /// @brief One measurement of a view.
 struct EnergyValue {
-    double energy = 0.0;      ///< the energy (visibility: fraction of marked voxels)
+    double energy = 0.0;      ///< the energy (visibility: surface visibility)
     double front = 0.0;       ///< the same measure counting direct pixels only
+    double paperLiteral = 0.0;  ///< visited / marked voxels (when EnergyOptions::paperLiteral)
+    RevealValue reveal;         ///< hot-spot reveal (when EnergyOptions::reveal)
     double meanImportance = 0.0;  ///< mean s over pixels that show the surface (scalar kind)
     std::size_t pixelsDirect = 0;
     std::size_t pixelsIndirect = 0;
@@ -62,15 +69,23 @@ public:
     /// @brief Importance in [0,1] of a surface point (0 for caps, NaN data or no scalar).
     float importance(const render::SurfacePoint& point) const;
 
+    /// @brief How this evaluator measures.
     const EnergyOptions& options() const { return mOptions; }
+    /// @brief The scene it measures.
     const render::RenderScene& scene() const { return mScene; }
-    /// @brief The visibility grid (null for the scalar kind).
-    const VisibilityGrid* visibilityGrid() const { return mVisibility.get(); }
+    /// @brief The surface voxels of the visibility kind (null for the scalar kind).
+    const SurfaceVoxels* surfaceVoxels() const { return mSurface.get(); }
+    /// @brief The reveal measure (null unless EnergyOptions::reveal).
+    const RevealMeasure* revealMeasure() const { return mReveal.get(); }
+    /// @brief The paper-literal grid (null unless EnergyOptions::paperLiteral).
+    const VisibilityGrid* literalGrid() const { return mLiteral.get(); }
 
 private:
     const render::RenderScene& mScene;
     EnergyOptions mOptions;
-    std::unique_ptr<VisibilityGrid> mVisibility;
+    std::unique_ptr<SurfaceVoxels> mSurface;
+    std::unique_ptr<VisibilityGrid> mLiteral;
+    std::unique_ptr<RevealMeasure> mReveal;
 };
 
 }  // namespace ivis::optimize

@@ -13,6 +13,7 @@ namespace ivis::optimize {
 ///        integrateCurvedRayTangent).
 class HessianSampler {
 public:
+    /// @brief Reads @a sampler (which must outlive it).
     explicit HessianSampler(render::DistanceField::Sampler& sampler) : mSampler(sampler) {}
     /// @brief phi and gradient as DistanceField::Sampler::phiAndGradient, and the symmetric Hessian
     ///        by central differences of the gradient over one voxel of the grid that serves p. (The

@@ -28,6 +28,7 @@ public:
     /// @brief True when @a method differs from the preparing one only in its optimised parameters.
     bool compatibleWith(const render::Method& method) const;
 
+    /// @brief The camera frame at resolution^2 pixels.
     const core::CameraFrame& frame() const { return mFrame; }
     /// @brief Surface points of the direct pixels.
     const std::vector<render::SurfacePoint>& direct() const { return mDirect; }

@@ -1,0 +1,45 @@
+/// @file reveal.h
+/// @brief Hot-spot reveal (METHOD.md, "The measures", 3): for a scalar field, the important surface
+///        is where the importance exceeds 0.5; reveal is the share of its surface voxels seen,
+///        directly and in total, and per important region (26-connected groups of its voxels,
+///        e.g. each hot spot of core::placeHotSpots).
+#pragma once
+
+#include <ivis/core/colormap.h>
+#include <ivis/core/surface_field.h>
+#include <ivis/optimize/surface_voxels.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ivis::optimize {
+
+/// @brief One reveal measurement.
+struct RevealValue {
+    double direct = 0.0;             ///< share of the important voxels seen by direct pixels
+    double total = 0.0;              ///< share seen by any pixel
+    std::vector<double> perRegion;   ///< share of each region seen by any pixel, largest region first
+};
+
+/// @brief The important surface voxels of a field and its regions.
+class RevealMeasure {
+public:
+    /// @brief Samples the surface as SurfaceVoxels does, keeping the samples whose interpolated
+    ///        importance (@a range-normalised scalar; caps and NaN count 0) exceeds 0.5.
+    /// @throw InputError for a field without scalar
+    RevealMeasure(const core::SurfaceField& field, const core::ScalarRange& range, int resolution = 200);
+
+    /// @brief Reveal for the voxels seen directly (@a direct) and by all pixels (@a all); both
+    ///        sorted and deduplicated in place.
+    RevealValue measure(std::vector<std::uint64_t>& direct, std::vector<std::uint64_t>& all) const;
+    /// @brief Number of important surface voxels.
+    std::size_t count() const { return mImportant.count(); }
+    /// @brief Number of important regions.
+    std::size_t regionCount() const { return mRegions.size(); }
+
+private:
+    SurfaceVoxels mImportant;
+    std::vector<std::vector<std::uint64_t>> mRegions;
+};
+
+}  // namespace ivis::optimize

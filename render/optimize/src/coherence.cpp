@@ -1,0 +1,63 @@
+#include <ivis/optimize/coherence.h>
+
+#include <ivis/render/screen_map.h>
+
+#include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
+
+namespace ivis::optimize {
+
+Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<glm::vec3>& points, int width,
+                           int height, double maxDistance)
+{
+    Coherence result;
+    const double limitSquared = maxDistance * maxDistance;
+    auto count = [&](std::size_t a, std::size_t b) {
+        if (!indirect[a] || !indirect[b]) return;
+        ++result.pairs;
+        const glm::dvec3 d = glm::dvec3(points[a]) - glm::dvec3(points[b]);
+        if (glm::dot(d, d) <= limitSquared) ++result.coherent;
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = std::size_t(y) * width + x;
+            if (x + 1 < width) count(i, i + 1);
+            if (y + 1 < height) count(i, i + std::size_t(width));
+        }
+    return result;
+}
+
+Coherence mappingCoherence(const core::ImageLayers& layers, double maxDistance)
+{
+    const std::vector<float>& region = layers.channel("region");
+    const std::vector<float>&x = layers.channel("P.X"), &y = layers.channel("P.Y"), &z = layers.channel("P.Z");
+    std::vector<char> indirect(region.size());
+    std::vector<glm::vec3> points(region.size());
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        indirect[i] = region[i] == float(render::Region::Indirect);
+        points[i] = {x[i], y[i], z[i]};
+    }
+    return mappingCoherence(indirect, points, layers.width(), layers.height(), maxDistance);
+}
+
+Coherence measureCoherence(const render::RenderScene& scene, const core::Camera& camera,
+                           const render::MethodPtr& method, int resolution)
+{
+    const core::CameraFrame frame(camera, resolution, resolution);
+    const render::ScreenMap screen(scene, frame, method);
+    const std::size_t pixels = std::size_t(resolution) * resolution;
+    std::vector<char> indirect(pixels, 0);
+    std::vector<glm::vec3> points(pixels);
+    tbb::parallel_for(0, resolution, [&](int y) {
+        render::DistanceField::Sampler sampler = scene.distance().sampler();
+        for (int x = 0; x < resolution; ++x) {
+            const render::PixelMapping m = screen.map(x + 0.5, y + 0.5, sampler);
+            const std::size_t i = std::size_t(y) * resolution + x;
+            indirect[i] = m.region == render::Region::Indirect;
+            points[i] = m.point.position;
+        }
+    });
+    return mappingCoherence(indirect, points, resolution, resolution);
+}
+
+}  // namespace ivis::optimize

@@ -1,0 +1,57 @@
+// Mapping coherence on hand-made P layers with known tears, and on a render's layers.
+#include "render/scene_fixture.h"
+
+#include <ivis/optimize/coherence.h>
+#include <ivis/render/method_registry.h>
+#include <ivis/render/renderer.h>
+
+#include <gtest/gtest.h>
+
+namespace ivis::optimize {
+namespace {
+
+TEST(MappingCoherence, CountsTheTornPairsOfAHandMadeLayer)
+{
+    // 5 x 4 pixels; column 4 is background. Columns 0-1 show points near x = 0, columns 2-3 near
+    // x = 1: the 4 horizontal pairs across columns 1|2 are torn.
+    //   a a b b .
+    //   a a b b .
+    //   a a b b .
+    //   a a b b .
+    const int width = 5, height = 4;
+    std::vector<char> indirect(width * height, 0);
+    std::vector<glm::vec3> points(width * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < 4; ++x) {
+            indirect[y * width + x] = 1;
+            points[y * width + x] = glm::vec3(x < 2 ? 0.01f * x : 1.0f + 0.01f * x, 0.02f * y, 0.0f);
+        }
+    const Coherence c = mappingCoherence(indirect, points, width, height);
+    EXPECT_EQ(c.pairs, 4u * 3u + 3u * 4u);  // 3 horizontal pairs per row, 3 vertical per column
+    EXPECT_EQ(c.coherent, c.pairs - 4u);
+    EXPECT_DOUBLE_EQ(c.value(), 20.0 / 24.0);
+    EXPECT_DOUBLE_EQ(mappingCoherence(std::vector<char>(4, 0), std::vector<glm::vec3>(4), 2, 2).value(), 1.0)
+        << "no pair, no tear";
+    points[0] = glm::vec3(0.0f, 0.0f, 0.09f);  // within 0.1 of its neighbours (0.01, 0, 0) and (0, 0.02, 0)
+    EXPECT_EQ(mappingCoherence(indirect, points, width, height).coherent, c.coherent);
+    points[0] = glm::vec3(0.0f, 0.0f, 0.2f);  // now beyond: two more torn pairs
+    EXPECT_EQ(mappingCoherence(indirect, points, width, height).coherent, c.coherent - 2u);
+}
+
+TEST(MappingCoherence, OfARenderEqualsTheMeasureOfItsView)
+{
+    const auto& fixture = test::vesselScene();
+    render::RenderOptions options;
+    options.width = options.height = 96;
+    options.method = render::makeMethod("inversevis");
+    const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
+    const render::RenderResult result = render::renderImage(*fixture.scene, camera, options);
+    const Coherence fromLayers = mappingCoherence(result.layers);
+    const Coherence direct = measureCoherence(*fixture.scene, camera, options.method, 96);
+    EXPECT_GT(fromLayers.pairs, 1000u);
+    EXPECT_EQ(fromLayers.pairs, direct.pairs);
+    EXPECT_EQ(fromLayers.coherent, direct.coherent);
+}
+
+}  // namespace
+}  // namespace ivis::optimize
