@@ -5,12 +5,14 @@
 #include "json_output.h"
 #include "mesh_options.h"
 #include "method_options.h"
+#include "evaluation_report.h"
 #include "optimization_options.h"
 
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
+#include <ivis/core/progress_bar.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/render/method_json.h>
@@ -43,49 +45,30 @@ double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
 }
 
-/// A Markdown table with a row per mesh and a column per method.
-class MethodTable {
-public:
-    explicit MethodTable(const std::vector<std::string>& methods)
-    {
-        mText << "| Surface |";
-        for (const auto& m : methods) mText << " " << m << " |";
-        mText << "\n|---|";
-        for (std::size_t i = 0; i < methods.size(); ++i) mText << "---|";
-        mText << "\n";
+/// Writes @a text to @a path through a temporary file.
+void writeTextFile(const std::string& text, const std::string& path)
+{
+    core::writeAtomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary);
+        out << text;
+        if (!out) throw std::runtime_error("write failed");
+    });
+}
+
+/// True when @a results holds, for @a stem, the measures of every method and its seconds at every
+/// resolution.
+bool finished(const nlohmann::json& results, const std::string& stem, const std::vector<std::string>& methods,
+              const std::vector<int>& resolutions)
+{
+    if (!results.contains(stem)) return false;
+    for (const std::string& m : methods) {
+        const nlohmann::json& entry = results.at(stem).contains(m) ? results.at(stem).at(m) : nlohmann::json();
+        for (const char* key : {"visibility", "paper_literal", "front_visibility", "coherence", "seconds"})
+            if (!entry.is_object() || !entry.contains(key)) return false;
+        for (int r : resolutions)
+            if (!entry.at("seconds").contains(std::to_string(r))) return false;
     }
-    /// @brief Starts the row of mesh @a stem.
-    void startRow(const std::string& stem) { mText << "| " << stem << " |"; }
-    /// @brief Adds the next method's cell.
-    void cell(const std::string& text) { mText << " " << text << " |"; }
-    /// @brief Ends the row.
-    void endRow() { mText << "\n"; }
-    std::string str() const { return mText.str(); }
-
-private:
-    std::ostringstream mText;
-};
-
-std::string percent(double fraction)
-{
-    char buffer[16];
-    std::snprintf(buffer, sizeof buffer, "%.1f", 100.0 * fraction);
-    return buffer;
-}
-
-std::string fixed(double value, int digits)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
-    return buffer;
-}
-
-/// "total (direct) [region, region, ...]" in percent.
-std::string revealText(const optimize::RevealValue& reveal)
-{
-    std::string text = percent(reveal.total) + " (" + percent(reveal.direct) + ") [";
-    for (std::size_t i = 0; i < reveal.perRegion.size(); ++i) text += (i ? ", " : "") + percent(reveal.perRegion[i]);
-    return text + "]";
+    return true;
 }
 
 }  // namespace
@@ -102,6 +85,7 @@ Command addEvaluateCommand(CLI::App& app)
         double fovYDeg = core::kDefaultFovYDeg;
         OptimizationOptions optimization;
         std::string json, markdown, pictures, cacheDir = ".";
+        bool resume = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("evaluate", "Visibility and timing tables of the methods (paper Tab. 1, 2)");
@@ -113,8 +97,10 @@ Command addEvaluateCommand(CLI::App& app)
         ->capture_default_str();
     command->add_option("--fov", options->fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
     options->optimization.addTo(*command);
-    command->add_option("--json", options->json, "Results as JSON");
-    command->add_option("--markdown", options->markdown, "Results as Markdown tables");
+    command->add_option("--json", options->json, "Results as JSON (written after each mesh)");
+    command->add_option("--markdown", options->markdown, "Results as Markdown tables (written after each mesh)");
+    command->add_flag("--resume", options->resume,
+                      "Keep the meshes the --json file already holds for every method and evaluate the others");
     command->add_option("--pictures", options->pictures, "Folder for each method's picture at its best view");
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
         ->check(CLI::Range(16, 8192));
@@ -125,23 +111,29 @@ Command addEvaluateCommand(CLI::App& app)
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         for (const std::string& m : options->methods) checkMethodFitsVolume(*render::makeMethod(m), volumeOptions);
+        if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
+        for (const std::string& path : {options->json, options->markdown})
+            if (!path.empty()) checkOutputFolder(path);
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         nlohmann::json results = nlohmann::json::object();
-        MethodTable visibility(options->methods), literal(options->methods), coherence(options->methods),
-            reveal(options->methods);
-        bool anyReveal = false;
-        std::ostringstream table2;
-        table2 << "| Surface |";
-        for (const auto& m : options->methods)
-            for (int r : options->optResolutions) table2 << " " << m << " " << r << " |";
-        table2 << "\n|---|";
-        for (std::size_t i = 0; i < options->methods.size() * options->optResolutions.size(); ++i) table2 << "---|";
-        table2 << "\n";
+        if (options->resume && std::filesystem::exists(options->json)) {
+            std::ifstream in(options->json);
+            results = nlohmann::json::parse(in, nullptr, false);
+            if (!results.is_object()) throw InputError(options->json + ": not the JSON of an evaluation (--resume)");
+        }
+        ReportLayout layout{{}, options->methods, options->optResolutions, options->displayResolution};
+        for (const std::string& mesh : options->meshes) layout.stems.push_back(core::sourceStem(mesh));
+        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
 
         for (const std::string& mesh : options->meshes) {
+            if (finished(results, core::sourceStem(mesh), options->methods, options->optResolutions)) {
+                core::logInfo(core::sourceStem(mesh) + ": kept from " + options->json + " (--resume)");
+                continue;
+            }
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution));
+                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution),
+                &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);
             const std::string stem = core::sourceStem(mesh);
@@ -149,10 +141,8 @@ Command addEvaluateCommand(CLI::App& app)
             displayOptions.kind = optimize::EnergyKind::Visibility;
             displayOptions.paperLiteral = true;
             displayOptions.reveal = field.hasScalar();
-            anyReveal |= displayOptions.reveal;
             const optimize::EnergyEvaluator display(scene, displayOptions);
-            for (MethodTable* table : {&visibility, &literal, &coherence, &reveal}) table->startRow(stem);
-            table2 << "| " << stem << " |";
+            nlohmann::json meshResults = nlohmann::json::object();
             for (const std::string& methodName : options->methods) {
                 const render::MethodPtr start = render::makeMethod(methodName);
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
@@ -163,11 +153,10 @@ Command addEvaluateCommand(CLI::App& app)
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const optimize::AnnealingResult run = optimize::annealViewpoint(
                         evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
-                        options->optimization.ascentOptions(), ascentEvaluator.get());
+                        options->optimization.ascentOptions(), ascentEvaluator.get(), &progress);
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
                     entry["ascent_res"][std::to_string(resolution)] =
                         ascentEvaluator ? options->optimization.ascentResolution : resolution;
-                    table2 << " " << std::lround(run.seconds * 10.0) / 10.0 << " |";
                     const optimize::VisitedView& optimum = run.bestView();
                     const optimize::EnergyValue measured =
                         display.evaluate(core::Camera::fromAngles(optimum.thetaDeg, optimum.phiDeg, core::kCameraDistance, options->fovYDeg),
@@ -192,10 +181,6 @@ Command addEvaluateCommand(CLI::App& app)
                 entry["phi"] = best.phiDeg;
                 entry["params"] = render::methodToJson(*best.method);
                 if (!start->info().scannedParameter.empty()) entry["alpha_scan"] = options->optimization.alphaScan;
-                visibility.cell(percent(value.energy) + " (" + percent(value.front) + ")");
-                literal.cell(percent(value.paperLiteral));
-                coherence.cell(fixed(coherent.value(), 3));
-                reveal.cell(displayOptions.reveal ? revealText(value.reveal) : "-");
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;
                     picture.width = picture.height =
@@ -207,29 +192,18 @@ Command addEvaluateCommand(CLI::App& app)
                     core::writePng(render::renderImage(scene, camera, picture).image, path, false);
                     entry["picture"] = path;
                 }
-                results[stem][methodName] = entry;
-                core::logInfo(stem + " " + methodName + ": visibility " + percent(value.energy) + "% (front " +
-                              percent(value.front) + "%), coherence " + fixed(coherent.value(), 3));
+                meshResults[methodName] = entry;
+                char line[160];
+                std::snprintf(line, sizeof line, ": visibility %.1f%% (front %.1f%%), coherence %.3f", 100.0 * value.energy,
+                              100.0 * value.front, coherent.value());
+                core::logInfo(stem + " " + methodName + line);
             }
-            for (MethodTable* table : {&visibility, &literal, &coherence, &reveal}) table->endRow();
-            table2 << "\n";
+            results[stem] = meshResults;  // only whole meshes: an interrupted one is evaluated again
+            if (!options->json.empty()) writeJsonFile(results, options->json);
+            if (!options->markdown.empty()) writeTextFile(evaluationMarkdown(results, layout), options->markdown);
         }
-        if (!options->json.empty()) writeJsonFile(results, options->json);
-        std::string markdown =
-            "## Surface visibility in percent at each method's best view (front-only in brackets)\n\n" +
-            visibility.str() + "\n## Paper-literal visibility in percent (visited / marked voxels), same views\n\n" +
-            literal.str() + "\n## Mapping coherence at " + std::to_string(options->displayResolution) + "^2 pixels, same views\n\n" +
-            coherence.str();
-        if (anyReveal)
-            markdown += "\n## Hot-spot reveal in percent of the important surface: total (direct) [each region]\n\n" +
-                        reveal.str();
-        markdown += "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + table2.str();
-        if (!options->markdown.empty())
-            core::writeAtomically(options->markdown, [&](const std::string& path) {
-                std::ofstream out(path);
-                out << markdown;
-                if (!out) throw std::runtime_error("write failed");
-            });
+        const std::string markdown = evaluationMarkdown(results, layout);
+        if (!options->markdown.empty()) writeTextFile(markdown, options->markdown);
         std::cout << markdown;
     }};
 }

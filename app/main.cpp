@@ -1,7 +1,9 @@
 // The `inversevis` command-line program: parses arguments and maps errors to exit statuses.
 #include "commands.h"
+#include "version.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/core/log.h>
 
 #include <iostream>
@@ -10,6 +12,7 @@
 int main(int argc, char** argv)
 {
     CLI::App app{"inversevis: scalar fields on both sides of a surface mesh"};
+    app.set_version_flag("--version", ivis::app::versionText("inversevis"), "Print the version and those of OpenVDB, Embree and OpenEXR");
     app.require_subcommand(1);
     app.fallthrough();  // global flags (-q) may follow the subcommand
     bool quiet = false;
@@ -19,6 +22,7 @@ int main(int argc, char** argv)
                                                        ivis::app::addRenderCommand(app),
                                                        ivis::app::addOptimizeCommand(app),
                                                        ivis::app::addEvaluateCommand(app)};
+    ivis::core::installInterruptHandler();
     try {
         app.parse(argc, argv);
         if (quiet) ivis::core::setLogLevel(ivis::core::LogLevel::Warning);

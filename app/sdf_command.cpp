@@ -3,6 +3,7 @@
 #include "mesh_options.h"
 
 #include <ivis/core/log.h>
+#include <ivis/core/progress_bar.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <nlohmann/json.hpp>
@@ -35,8 +36,9 @@ Command addSdfCommand(CLI::App& app)
                                      ? defaultVolumePath(".", options->mesh.source, volumeOptions.resolution)
                                      : options->output;
         vdb::CacheOutcome outcome{};
+        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);
         const vdb::SurfaceVolume volume =
-            vdb::loadOrBuildVolume(field.mesh, volumeOptions, path, nullptr, &outcome);
+            vdb::loadOrBuildVolume(field.mesh, volumeOptions, path, &progress, &outcome);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
         const nlohmann::json out = {

@@ -41,15 +41,13 @@ std::string sharedMesh(const std::string& name)
     return path.string();
 }
 
-namespace {
-std::string slurp(const std::string& path)
+std::string readFile(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     std::stringstream buffer;
     buffer << in.rdbuf();
     return buffer.str();
 }
-}  // namespace
 
 CliResult runCli(const std::string& arguments)
 {
@@ -59,8 +57,8 @@ CliResult runCli(const std::string& arguments)
     const int raw = std::system(command.c_str());
     CliResult result;
     result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    result.out = slurp(out);
-    result.err = slurp(err);
+    result.out = readFile(out);
+    result.err = readFile(err);
     return result;
 }
 
@@ -80,6 +78,38 @@ std::vector<glm::vec3> fibonacciDirections(int count)
         out.emplace_back(float(ring * std::cos(angle)), float(ring * std::sin(angle)), float(z));
     }
     return out;
+}
+
+Child startCli(const std::string& arguments)
+{
+    static std::atomic<int> counter{0};
+    Child child;
+    const std::string stem = (fs::temp_directory_path() / ("ivis-child-" + std::to_string(::getpid()) + "-" +
+                                                          std::to_string(counter++))).string();
+    child.out = stem + ".out";
+    child.err = stem + ".err";
+    // exec: the shell becomes the program, so a signal sent to the pid reaches it.
+    const std::string command = std::string("exec '") + IVIS_CLI_PATH + "' " + arguments + " >'" + child.out + "' 2>'" +
+                                child.err + "'";
+    child.pid = ::fork();
+    if (child.pid == 0) {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    return child;
+}
+
+CliResult waitCli(const Child& child)
+{
+    int raw = 0;
+    ::waitpid(child.pid, &raw, 0);
+    CliResult result;
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    result.out = readFile(child.out);
+    result.err = readFile(child.err);
+    fs::remove(child.out);
+    fs::remove(child.err);
+    return result;
 }
 
 }  // namespace ivis::test

@@ -41,6 +41,20 @@ CliResult runCli(const std::string& arguments);
 /// @brief @a count unit directions spread evenly over the sphere (Fibonacci lattice).
 std::vector<glm::vec3> fibonacciDirections(int count);
 
+/// @brief A running `inversevis` and where its output goes.
+struct Child {
+    int pid = -1;
+    std::string out, err;  ///< files holding its stdout and stderr
+};
+
+/// @brief Starts the `inversevis` program with @a arguments (a shell-quoted string) without waiting.
+Child startCli(const std::string& arguments);
+/// @brief Waits for @a child and returns its exit status and output.
+CliResult waitCli(const Child& child);
+
+/// @brief The whole content of @a path ("" when it cannot be read).
+std::string readFile(const std::string& path);
+
 /// @brief Writes @a text to @a path (binary-safe).
 void writeFile(const std::string& path, const std::string& text);
 

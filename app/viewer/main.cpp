@@ -1,6 +1,7 @@
 // `inversevis-view`: the interactive viewer; parses arguments and maps errors to exit statuses.
 #include "viewer_app.h"
 #include "viewer_options.h"
+#include "../version.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
@@ -14,6 +15,8 @@ int main(int argc, char** argv)
     CLI::App app{"inversevis-view: both sides of a surface, live, on the GPU"};
     ivis::app::ViewerOptions options;
     options.addTo(app);
+    app.set_version_flag("--version", ivis::app::versionText("inversevis-view"),
+                         "Print the version and those of OpenVDB, Embree and OpenEXR");
     try {
         app.parse(argc, argv);
         options.validate();

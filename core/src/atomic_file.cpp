@@ -17,6 +17,10 @@ void writeAtomically(const std::string& path, const std::function<void(const std
         std::error_code error;
         std::filesystem::rename(temporary, path, error);
         if (error) throw std::runtime_error(error.message());
+    } catch (const Cancelled&) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw;
     } catch (const std::exception& e) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);

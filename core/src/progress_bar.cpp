@@ -1,5 +1,6 @@
 #include <ivis/core/progress_bar.h>
 
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/core/log.h>
 
 #include <cstdio>
@@ -31,6 +32,7 @@ void ProgressBar::end()
 
 bool ProgressBar::wasInterrupted(int percent)
 {
+    if (interruptRequested()) return true;
     if (!mEnabled || percent < 0 || percent <= mShownPercent) return false;
     if (std::chrono::steady_clock::now() - mStart < std::chrono::seconds(1)) return false;
     std::lock_guard<std::mutex> lock(mMutex);

@@ -6,9 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -228,6 +230,14 @@ TEST_F(Cli, UnknownRenderMethod)
 {
     expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--method ring"),
                    {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis, inversevis-adaptive)"});
+}
+
+TEST_F(Cli, VersionNamesTheLibraries)
+{
+    const CliResult result = runCli("--version");
+    EXPECT_EQ(result.status, 0) << result.err;
+    for (const char* part : {"inversevis 0.", "OpenVDB 10.", "Embree 3.", "OpenEXR 3."})
+        EXPECT_NE(result.out.find(part), std::string::npos) << part << " not in: " << result.out;
 }
 
 TEST_F(Cli, MethodParameterOutOfItsBounds)
@@ -503,6 +513,54 @@ TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)
     EXPECT_NE(result.out.find("| sphere |"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("Hot-spot reveal"), std::string::npos) << result.out;
     EXPECT_TRUE(fs::exists(output("e.md")));
+}
+
+TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
+{
+    const std::string common = "evaluate scene:sphere scene:torus --volume-res 48 --methods front,inversevis --opt-res 16 "
+                               "--steps 1 --display-res 32 --cache-dir " + quoted(output("")) + " --json " +
+                               quoted(output("e.json")) + " --markdown " + quoted(output("e.md"));
+    const CliResult full = runCli(common);
+    ASSERT_EQ(full.status, 0) << full.err;
+    const std::string tables = test::readFile(output("e.md"));
+    nlohmann::json partial = nlohmann::json::parse(std::ifstream(output("e.json")));
+    const nlohmann::json torus = partial.at("torus");
+    partial.erase("torus");
+    std::ofstream(output("e.json")) << partial.dump();
+
+    const CliResult resumed = runCli(common + " --resume");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("sphere: kept from"), std::string::npos) << resumed.err;
+    EXPECT_EQ(resumed.err.find("torus: kept from"), std::string::npos) << resumed.err;
+    const nlohmann::json again = nlohmann::json::parse(std::ifstream(output("e.json")));
+    ASSERT_TRUE(again.contains("torus"));
+    EXPECT_EQ(again.at("torus").at("inversevis").at("visibility"), torus.at("inversevis").at("visibility"))
+        << "deterministic for the seed";
+    EXPECT_EQ(test::readFile(output("e.md")).substr(0, tables.find("## Viewpoint")), tables.substr(0, tables.find("## Viewpoint")))
+        << "the same tables (the seconds may differ)";
+    expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
+}
+
+TEST_F(Cli, EvaluateStopsOnCtrlCKeepingTheFinishedMeshes)
+{
+    const std::string json = output("e.json");
+    const std::string common = "--volume-res 64 --methods inversevis-adaptive --opt-res 100 --display-res 32 "
+                               "--cache-dir " + quoted(output("")) + " --json " + quoted(json);
+    ASSERT_EQ(runCli("evaluate scene:sphere --steps 1 " + common).status, 0);
+    // The sphere is kept; Ctrl-C arrives in the vessel tree's long annealing.
+    const test::Child child = test::startCli("evaluate scene:sphere scene:vessel-tree --resume --steps 1000 " + common);
+    usleep(2000000);
+    const auto pressed = std::chrono::steady_clock::now();
+    kill(child.pid, SIGINT);
+    const CliResult result = test::waitCli(child);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pressed).count();
+    EXPECT_EQ(result.status, 130) << result.err;
+    EXPECT_LT(seconds, 1.0) << "stops within a second";
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(json));
+    EXPECT_TRUE(report.contains("sphere"));
+    EXPECT_FALSE(report.contains("vessel-tree"));
+    for (const std::string& name : contents(output("")))
+        EXPECT_EQ(name.find(".tmp."), std::string::npos) << name << " left behind";
 }
 
 TEST_F(Cli, EvaluateRejectsAnUnknownMethodBeforeWork)

@@ -55,6 +55,7 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
         throw ValueError("the analytic gradient exists only for the curved-ray methods with the scalar energy");
     auto methodAt = [&](const std::vector<double>& point) { return render::withOptimisedParameters(*start, point); };
     auto energyAt = [&](const std::vector<double>& point) {
+        if (interrupter && interrupter->wasInterrupted()) throw Cancelled("parameter ascent cancelled");
         ++result.evaluations;
         return evaluator.evaluate(samples, methodAt(point));
     };
@@ -82,7 +83,6 @@ AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Ca
     }
 
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
-        if (interrupter && interrupter->wasInterrupted()) throw Cancelled("parameter ascent cancelled");
         std::vector<double> gradient(x.size(), 0.0);
         if (analytic) {
             gradient = curvedRayGradient(evaluator, camera, methodAt(x));

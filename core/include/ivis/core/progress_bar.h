@@ -1,6 +1,7 @@
 /// @file progress_bar.h
 /// @brief An Interrupter that draws a one-line progress bar on stderr once an operation has run
-///        for a second, only when stderr is a terminal and the log level allows Info.
+///        for a second, only when stderr is a terminal and the log level allows Info, and that
+///        cancels the operation once Ctrl-C was pressed (interrupt_signal.h).
 /// @warning wasInterrupted is safe to call from several threads.
 #pragma once
 
@@ -13,7 +14,7 @@
 
 namespace ivis::core {
 
-/// @brief Terminal progress bar; never cancels.
+/// @brief Terminal progress bar; cancels after SIGINT.
 class ProgressBar : public Interrupter {
 public:
     /// @brief Draws nothing when @a enabled is false (e.g. --quiet).

@@ -51,7 +51,7 @@ double goldenSectionMaximize(const std::function<double(double)>& f, double lo, 
 
 /// @brief Optimises the optimised parameters of @a start for @a camera (a method without any is
 ///        only evaluated).
-/// @param interrupter optional cancel, asked once per line search
+/// @param interrupter optional cancel, asked before every energy evaluation
 /// @throw ValueError for an analytic gradient the method or energy does not have; Cancelled when interrupted
 AscentResult optimizeParameters(const EnergyEvaluator& evaluator, const core::Camera& camera,
                                 const render::MethodPtr& start, const AscentOptions& options = {},

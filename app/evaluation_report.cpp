@@ -1,0 +1,100 @@
+#include "evaluation_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+namespace ivis::app {
+namespace {
+
+std::string percent(double fraction)
+{
+    char buffer[16];
+    std::snprintf(buffer, sizeof buffer, "%.1f", 100.0 * fraction);
+    return buffer;
+}
+
+std::string fixed(double value, int digits)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
+    return buffer;
+}
+
+/// "total (direct) [region, region, ...]" in percent, or "-" without a reveal.
+std::string revealText(const nlohmann::json& entry)
+{
+    if (!entry.contains("reveal")) return "-";
+    const nlohmann::json& reveal = entry.at("reveal");
+    std::string text = percent(reveal.at("total")) + " (" + percent(reveal.at("direct")) + ") [";
+    const nlohmann::json& regions = reveal.at("per_region");
+    for (std::size_t i = 0; i < regions.size(); ++i) text += (i ? ", " : "") + percent(regions[i]);
+    return text + "]";
+}
+
+/// A Markdown table with a row per mesh and a column per method, each cell @a cell(entry).
+std::string methodTable(const nlohmann::json& results, const ReportLayout& layout,
+                        const std::function<std::string(const nlohmann::json&)>& cell)
+{
+    std::ostringstream text;
+    text << "| Surface |";
+    for (const auto& m : layout.methods) text << " " << m << " |";
+    text << "\n|---|";
+    for (std::size_t i = 0; i < layout.methods.size(); ++i) text << "---|";
+    text << "\n";
+    for (const std::string& stem : layout.stems) {
+        if (!results.contains(stem)) continue;
+        text << "| " << stem << " |";
+        for (const auto& m : layout.methods) text << " " << cell(results.at(stem).at(m)) << " |";
+        text << "\n";
+    }
+    return text.str();
+}
+
+/// Table 2: seconds per method and optimisation resolution.
+std::string secondsTable(const nlohmann::json& results, const ReportLayout& layout)
+{
+    std::ostringstream text;
+    text << "| Surface |";
+    for (const auto& m : layout.methods)
+        for (int r : layout.optResolutions) text << " " << m << " " << r << " |";
+    text << "\n|---|";
+    for (std::size_t i = 0; i < layout.methods.size() * layout.optResolutions.size(); ++i) text << "---|";
+    text << "\n";
+    for (const std::string& stem : layout.stems) {
+        if (!results.contains(stem)) continue;
+        text << "| " << stem << " |";
+        for (const auto& m : layout.methods)
+            for (int r : layout.optResolutions)
+                text << " " << std::lround(results.at(stem).at(m).at("seconds").at(std::to_string(r)).get<double>() * 10.0) / 10.0
+                     << " |";
+        text << "\n";
+    }
+    return text.str();
+}
+
+}  // namespace
+
+std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout)
+{
+    bool anyReveal = false;
+    for (const std::string& stem : layout.stems)
+        if (results.contains(stem))
+            for (const auto& m : layout.methods) anyReveal |= results.at(stem).at(m).contains("reveal");
+    std::string markdown =
+        "## Surface visibility in percent at each method's best view (front-only in brackets)\n\n" +
+        methodTable(results, layout, [](const nlohmann::json& e) {
+            return percent(e.at("visibility")) + " (" + percent(e.at("front_visibility")) + ")";
+        }) +
+        "\n## Paper-literal visibility in percent (visited / marked voxels), same views\n\n" +
+        methodTable(results, layout, [](const nlohmann::json& e) { return percent(e.at("paper_literal")); }) +
+        "\n## Mapping coherence at " + std::to_string(layout.displayResolution) + "^2 pixels, same views\n\n" +
+        methodTable(results, layout, [](const nlohmann::json& e) { return fixed(e.at("coherence"), 3); });
+    if (anyReveal)
+        markdown += "\n## Hot-spot reveal in percent of the important surface: total (direct) [each region]\n\n" +
+                    methodTable(results, layout, revealText);
+    return markdown + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + secondsTable(results, layout);
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,27 @@
+/// @file evaluation_report.h
+/// @brief The Markdown tables of `inversevis evaluate`, made from its results JSON, so that a run
+///        resumed from a partial JSON writes the same tables as an uninterrupted one.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+
+/// @brief What the tables show and in which order.
+struct ReportLayout {
+    std::vector<std::string> stems;    ///< mesh rows, in the order of the command line
+    std::vector<std::string> methods;  ///< method columns
+    std::vector<int> optResolutions;   ///< Table 2's resolutions per method
+    int displayResolution = 1000;      ///< where the measures were taken
+};
+
+/// @brief Table 1 (surface visibility with its front-only part), the paper-literal visibility,
+///        the mapping coherence, the hot-spot reveal (when some mesh has it) and Table 2 (seconds),
+///        with a row per mesh of @a layout that @a results holds (results[stem][method] as
+///        evaluate writes it).
+std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout);
+
+}  // namespace ivis::app

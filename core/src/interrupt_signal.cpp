@@ -1,0 +1,23 @@
+#include <ivis/core/interrupt_signal.h>
+
+#include <atomic>
+#include <csignal>
+
+namespace ivis::core {
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+
+extern "C" void onInterrupt(int /*signal*/)
+{
+    gInterrupted = true;
+    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the program at once
+}
+
+}  // namespace
+
+void installInterruptHandler() { std::signal(SIGINT, onInterrupt); }
+
+bool interruptRequested() { return gInterrupted; }
+
+}  // namespace ivis::core
