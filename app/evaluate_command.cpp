@@ -89,7 +89,7 @@ Command addEvaluateCommand(CLI::App& app)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("evaluate", "Visibility and timing tables of the methods (paper Tab. 1, 2)");
-    options->mesh.addTo(*command, "--volume-res", &options->meshes);
+    options->mesh.addTo(*command, &options->meshes);
     command->add_option("--methods", options->methods, "Methods to compare (default: every method)")->delimiter(',')->capture_default_str();
     command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions")->delimiter(',')
         ->capture_default_str();

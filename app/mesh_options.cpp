@@ -6,7 +6,7 @@
 
 namespace ivis::app {
 
-void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag, std::vector<std::string>* sources)
+void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources)
 {
     const std::string help = "Mesh file (.obj .off .ply .stl) or scene:sphere|torus|vessel-tree";
     if (sources)
@@ -25,7 +25,7 @@ void MeshOptions::addTo(CLI::App& command, const std::string& resolutionFlag, st
         ->excludes(scalar)
         ->excludes(scalarFile);
     command.add_flag("--cap-holes", load.capHoles, "Close open boundary loops (caps are never coloured)");
-    command.add_option(resolutionFlag, volume.resolution,
+    command.add_option("--volume-res", volume.resolution,
                        "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +
                            std::to_string(vdb::kMaxResolution) + ")")
         ->capture_default_str();

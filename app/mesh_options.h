@@ -19,10 +19,10 @@ struct MeshOptions {
     vdb::VolumeOptions volume;
     std::string distance = "auto";  ///< auto | signed | unsigned
 
-    /// @brief Registers MESH, --scalar, --scalar-file, --cap-holes and the volume's options.
-    /// @param resolutionFlag name of the resolution flag ("--res" for sdf, "--volume-res" elsewhere)
+    /// @brief Registers MESH, --scalar, --scalar-file, --hotspots, --cap-holes and the volume's
+    ///        options (--volume-res, --band, --reach, --distance).
     /// @param sources when given, the command takes one or more meshes into it instead of one MESH
-    void addTo(CLI::App& command, const std::string& resolutionFlag, std::vector<std::string>* sources = nullptr);
+    void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr);
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
 };

@@ -33,7 +33,7 @@ Command addOptimizeCommand(CLI::App& app)
     auto options = std::make_shared<Options>();
     CLI::App* command =
         app.add_subcommand("optimize", "Find the best viewpoint and method parameters (simulated annealing)");
-    options->mesh.addTo(*command, "--volume-res");
+    options->mesh.addTo(*command);
     options->view.addTo(*command);
     options->optimization.addTo(*command);
     command->add_option("--opt-res", options->optResolution, "Optimisation resolution (rays per side)")

@@ -31,7 +31,7 @@ Command addRenderCommand(CLI::App& app)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a method's picture to PNG (and EXR layers)");
-    options->mesh.addTo(*command, "--volume-res");
+    options->mesh.addTo(*command);
     options->view.addTo(*command);
     command->add_option("-o,--output", options->output, "PNG file")->capture_default_str();
     command->add_option("--exr", options->exr, "Multi-layer OpenEXR file (linear colour + per-pixel layers)");

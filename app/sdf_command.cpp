@@ -23,7 +23,7 @@ Command addSdfCommand(CLI::App& app)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
-    options->mesh.addTo(*command, "--res");
+    options->mesh.addTo(*command);
     command->add_option("-o,--output", options->output, "Volume file (default: <mesh>.res<N>.vdb here)");
     command->add_flag("--json", options->json, "Print one JSON object");
 

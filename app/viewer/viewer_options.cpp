@@ -10,7 +10,7 @@ namespace ivis::app {
 
 void ViewerOptions::addTo(CLI::App& app)
 {
-    mesh.addTo(app, "--volume-res");
+    mesh.addTo(app);
     view.addTo(app);
     optimization.addTo(app);
     app.add_option("--opt-res", optResolution, "Optimisation resolution (rays per side) of the optimise buttons")
@@ -27,7 +27,7 @@ void ViewerOptions::addTo(CLI::App& app)
     app.add_option("--ui-screenshot", uiScreenshot,
                    "Run the window with its panel; once loading and optimising are done and --frames frames "
                    "drawn, write the window (panel included) to this PNG and exit");
-    app.add_option("--optimise", optimise, "Press the parameter optimiser's button or 'optimise view' once the volume is loaded")
+    app.add_option("--optimize", optimise, "Press the parameter optimiser's button or 'optimise view' once the volume is loaded")
         ->check(CLI::IsMember({"parameters", "view"}));
     app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();

@@ -71,10 +71,10 @@ protected:
     /// Path of output file @a name.
     std::string output(const std::string& name) const { return mOutputs.file(name); }
 
-    /// `sdf MESH --res 48 -o OUT/s.vdb EXTRA`.
+    /// `sdf MESH --volume-res 48 -o OUT/s.vdb EXTRA`.
     std::string sdf(const std::string& mesh, const std::string& extra = "") const
     {
-        return "sdf " + quoted(mesh) + " --res 48 -o " + quoted(output("s.vdb")) + " " + extra;
+        return "sdf " + quoted(mesh) + " --volume-res 48 -o " + quoted(output("s.vdb")) + " " + extra;
     }
     /// `render MESH --res 32x32 --volume-res 48 -o OUT/x.png EXTRA` (the volume cache goes to OUT too).
     std::string render(const std::string& mesh, const std::string& extra = "") const
@@ -295,12 +295,12 @@ TEST_F(Cli, BadImageResolution)
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
     expectRejected("render " + quoted(mesh) + " --volume-res 48 --res 10y10 -o " + quoted(output("x.png")),
                    {"--res '10y10': expected WIDTHxHEIGHT"});
-    expectRejected("sdf " + quoted(mesh) + " --res 10y10 -o " + quoted(output("s.vdb")), {"--res", "10y10"});
+    expectRejected("sdf " + quoted(mesh) + " --volume-res 10y10 -o " + quoted(output("s.vdb")), {"--volume-res", "10y10"});
 }
 
 TEST_F(Cli, OutOfRangeVolumeResolution)
 {
-    expectRejected("sdf " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) + " --res 8 -o " +
+    expectRejected("sdf " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) + " --volume-res 8 -o " +
                        quoted(output("s.vdb")),
                    {"volume resolution 8 is out of range"});
 }
@@ -348,7 +348,7 @@ TEST_F(Cli, WritingIntoAMissingFolderLeavesNothing)
     const std::string exr = output("no-such-folder") + "/x.exr";
     expectRejected(render(mesh, "--exr " + quoted(exr)), {exr + ": cannot write"});
     const std::string volume = output("no-such-folder") + "/s.vdb";
-    expectRejected("sdf " + quoted(mesh) + " --res 48 -o " + quoted(volume), {volume + ": cannot write"});
+    expectRejected("sdf " + quoted(mesh) + " --volume-res 48 -o " + quoted(volume), {volume + ": cannot write"});
 
     ASSERT_FALSE(fs::exists("/nonexistent"));
     expectBadInput(runCli("render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o /nonexistent/x.png"),
@@ -398,7 +398,7 @@ TEST_F(Cli, InfoReportsTheOpenLeftAtrium)
 
 TEST_F(Cli, SdfJsonReportsTheVolumeAndReusesItsCache)
 {
-    const std::string arguments = "sdf scene:sphere --res 64 --json -o " + quoted(output("s.vdb"));
+    const std::string arguments = "sdf scene:sphere --volume-res 64 --json -o " + quoted(output("s.vdb"));
     const CliResult first = runCli(arguments);
     ASSERT_EQ(first.status, 0) << first.err;
     const nlohmann::json report = nlohmann::json::parse(first.out);  // exactly one JSON value
@@ -421,14 +421,14 @@ TEST_F(Cli, SdfJsonReportsTheVolumeAndReusesItsCache)
 
 TEST_F(Cli, SdfOfTheOpenVesselTreeIsUnsignedUnlessCapped)
 {
-    const CliResult open = runCli("sdf scene:vessel-tree --res 64 --json -o " + quoted(output("open.vdb")));
+    const CliResult open = runCli("sdf scene:vessel-tree --volume-res 64 --json -o " + quoted(output("open.vdb")));
     ASSERT_EQ(open.status, 0) << open.err;
     const nlohmann::json openReport = nlohmann::json::parse(open.out);
     EXPECT_EQ(openReport.at("open_mesh"), true);
     EXPECT_EQ(openReport.at("unsigned_distance"), true);
 
     const CliResult capped =
-        runCli("sdf scene:vessel-tree --res 64 --json --cap-holes -o " + quoted(output("capped.vdb")));
+        runCli("sdf scene:vessel-tree --volume-res 64 --json --cap-holes -o " + quoted(output("capped.vdb")));
     ASSERT_EQ(capped.status, 0) << capped.err;
     const nlohmann::json cappedReport = nlohmann::json::parse(capped.out);
     EXPECT_EQ(cappedReport.at("open_mesh"), false);
