@@ -17,7 +17,9 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
     method.addTo(command);
-    command.add_option("--colormap", colormap, "viridis, coolwarm or grey")->capture_default_str();
+    std::string names;
+    for (const std::string& name : core::colormapNames()) names += (names.empty() ? "" : ", ") + name;
+    command.add_option("--colormap", colormap, "Colour map: " + names)->capture_default_str();
     command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2);
     command.add_option("--units", units, "Units shown on the colour bar");
     command.add_flag("--no-legend", noLegend, "No colour bar");

@@ -1,6 +1,6 @@
 /// @file embedded_shaders.h
 /// @brief The files of assets/shaders/, embedded into the program at build time: CMake runs
-///        embed_shaders.cmake whenever one of them changes, which writes embedded_shaders.cpp (in the
+///        assets/embed_files.cmake whenever one of them changes, which writes embedded_shaders.cpp (in the
 ///        build folder) with each file's text as a raw string literal.
 #pragma once
 

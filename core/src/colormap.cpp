@@ -1,5 +1,7 @@
 #include <ivis/core/colormap.h>
 
+#include "embedded_colormaps.h"
+
 #include <ivis/core/errors.h>
 #include <ivis/core/image.h>
 
@@ -100,6 +102,23 @@ glm::vec3 coolWarmSrgb(double t)
     return srgbFromMsh(glm::mix(white, warm, 2.0 * t - 1.0));
 }
 
+/// The colour map of an embedded table "<name>.txt": one sRGB "r g b" line per knot, "#" lines skipped.
+Colormap tableColormap(const detail::EmbeddedFile& file)
+{
+    std::string name = file.name;
+    name = name.substr(0, name.rfind('.'));
+    std::vector<glm::vec3> knots;
+    std::istringstream lines(file.text);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream values(line);
+        glm::vec3 c;
+        if (!(values >> c.r >> c.g >> c.b)) throw ValueError("colour map table " + std::string(file.name) + ": bad line '" + line + "'");
+        knots.push_back(c);
+    }
+    return Colormap(name, std::move(knots));
+}
+
 std::vector<Colormap> makeBuiltins()
 {
     std::vector<glm::vec3> viridis;
@@ -107,8 +126,10 @@ std::vector<Colormap> makeBuiltins()
     constexpr int kCoolWarmSteps = 256;
     std::vector<glm::vec3> coolWarm;
     for (int i = 0; i <= kCoolWarmSteps; ++i) coolWarm.push_back(coolWarmSrgb(double(i) / kCoolWarmSteps));
-    return {Colormap("viridis", std::move(viridis)), Colormap("coolwarm", std::move(coolWarm)),
-            Colormap("grey", {glm::vec3(0.0f), glm::vec3(1.0f)})};
+    std::vector<Colormap> maps = {Colormap("viridis", std::move(viridis)), Colormap("coolwarm", std::move(coolWarm)),
+                                  Colormap("grey", {glm::vec3(0.0f), glm::vec3(1.0f)})};
+    for (const detail::EmbeddedFile& file : detail::embeddedFiles()) maps.push_back(tableColormap(file));
+    return maps;
 }
 
 const std::vector<Colormap>& builtins()

@@ -308,7 +308,7 @@ TEST_F(Cli, OutOfRangeVolumeResolution)
 TEST_F(Cli, UnknownColourMap)
 {
     expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--colormap jet"),
-                   {"unknown colour map 'jet' (known: viridis, coolwarm, grey)"});
+                   {"unknown colour map 'jet' (known: viridis, coolwarm, grey, blue-white-red, inferno, magma, plasma, turbo)"});
 }
 
 TEST_F(Cli, RangeLoMustBeBelowHi)

@@ -91,16 +91,42 @@ TEST(Colormap, ViridisLuminanceIncreases)
         EXPECT_GT(luminance(viridis.at(i / 100.0f)), luminance(viridis.at((i - 1) / 100.0f))) << i;
 }
 
+TEST(Colormap, PublishedTablesMatchTheirSources)
+{
+    // First, middle (entry 128 of 256 at t = 128/255) and last entries of the published tables.
+    expectNear(srgbAt(colormap("magma"), 0.0f), {0.001462f, 0.000466f, 0.013866f}, 1e-5f);
+    expectNear(srgbAt(colormap("magma"), 1.0f), {0.987053f, 0.991438f, 0.749504f}, 1e-5f);
+    expectNear(srgbAt(colormap("inferno"), 1.0f), {0.988362f, 0.998364f, 0.644924f}, 1e-5f);
+    expectNear(srgbAt(colormap("plasma"), 0.0f), {0.050383f, 0.029803f, 0.527975f}, 1e-5f);
+    expectNear(srgbAt(colormap("turbo"), 0.0f), {0.18995f, 0.07176f, 0.23217f}, 1e-5f);
+    expectNear(srgbAt(colormap("turbo"), 128.0f / 255.0f), {0.64362f, 0.98999f, 0.23356f}, 1e-5f);
+    expectNear(srgbAt(colormap("turbo"), 1.0f), {0.47960f, 0.01583f, 0.01055f}, 1e-5f);
+    // ColorBrewer RdBu reversed: #053061 ... #f7f7f7 at the middle ... #67001f.
+    expectNear(srgbAt(colormap("blue-white-red"), 0.0f), {5 / 255.0f, 48 / 255.0f, 97 / 255.0f}, 1e-5f);
+    expectNear(srgbAt(colormap("blue-white-red"), 0.5f), {247 / 255.0f, 247 / 255.0f, 247 / 255.0f}, 1e-5f);
+    expectNear(srgbAt(colormap("blue-white-red"), 1.0f), {103 / 255.0f, 0.0f, 31 / 255.0f}, 1e-5f);
+}
+
+TEST(Colormap, SequentialTablesGrowInLuminance)
+{
+    for (const char* name : {"magma", "inferno", "plasma"}) {
+        const Colormap& map = colormap(name);
+        for (int i = 1; i <= 100; ++i)
+            EXPECT_GT(luminance(map.at(i / 100.0f)), luminance(map.at((i - 1) / 100.0f))) << name << " " << i;
+    }
+}
+
 TEST(Colormap, NamesAndUnknownName)
 {
-    EXPECT_EQ(colormapNames(), (std::vector<std::string>{"viridis", "coolwarm", "grey"}));
+    EXPECT_EQ(colormapNames(), (std::vector<std::string>{"viridis", "coolwarm", "grey", "blue-white-red", "inferno",
+                                                         "magma", "plasma", "turbo"}));
     EXPECT_EQ(colormap(kDefaultColormap).name(), "viridis");
     EXPECT_EQ(&colormap("coolwarm"), &colormap("coolwarm"));
     try {
         colormap("jet");
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "unknown colour map 'jet' (known: viridis, coolwarm, grey)");
+        EXPECT_STREQ(e.what(), "unknown colour map 'jet' (known: viridis, coolwarm, grey, blue-white-red, inferno, magma, plasma, turbo)");
     }
     EXPECT_THROW(Colormap("one", {glm::vec3(0.0f)}), ValueError);
 }

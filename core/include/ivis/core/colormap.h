@@ -1,5 +1,6 @@
 /// @file colormap.h
-/// @brief Named colour maps (viridis, coolwarm, grey) and the scalar range that feeds them.
+/// @brief Named colour maps (viridis, coolwarm, grey and the published tables of assets/colormaps:
+///        blue-white-red, inferno, magma, plasma, turbo) and the scalar range that feeds them.
 /// @note Colour maps return LINEAR-light RGB; encode to sRGB only when writing 8-bit images.
 #pragma once
 
@@ -31,13 +32,13 @@ private:
     std::vector<glm::vec3> mSrgbKnots;
 };
 
-/// @brief Names colormap() accepts, default first: viridis, coolwarm, grey.
+/// @brief Names colormap() accepts, default first: viridis, coolwarm, grey, then the tables.
 std::vector<std::string> colormapNames();
 
 /// @brief The built-in map called @a name: "viridis" (matplotlib), "coolwarm" (Moreland's
 ///        diverging map, Msh interpolation through white), "grey" (black to white, even in sRGB).
 /// @return a reference valid for the whole program
-/// @throw InputError "unknown colour map 'x' (known: viridis, coolwarm, grey)"
+/// @throw InputError "unknown colour map 'x' (known: viridis, coolwarm, grey, ...)"
 /// @warning Thread-safe; the maps are built on first use.
 const Colormap& colormap(const std::string& name);
 
