@@ -8,7 +8,6 @@
 #include "evaluation_report.h"
 #include "optimization_options.h"
 
-#include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
@@ -43,16 +42,6 @@ double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
     };
     const double c = glm::dot(direction(theta1, phi1), direction(theta2, phi2));
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
-}
-
-/// Writes @a text to @a path through a temporary file.
-void writeTextFile(const std::string& text, const std::string& path)
-{
-    core::writeAtomically(path, [&](const std::string& temporary) {
-        std::ofstream out(temporary);
-        out << text;
-        if (!out) throw std::runtime_error("write failed");
-    });
 }
 
 /// True when @a results holds, for @a stem, the measures of every method and its seconds at every

@@ -29,13 +29,15 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::
     return json;
 }
 
-void writeJsonFile(const nlohmann::json& json, const std::string& path)
+void writeTextFile(const std::string& text, const std::string& path)
 {
     core::writeAtomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
-        out << json.dump(2) << "\n";
+        out << text;
         if (!out) throw std::runtime_error("write failed");
     });
 }
+
+void writeJsonFile(const nlohmann::json& json, const std::string& path) { writeTextFile(json.dump(2) + "\n", path); }
 
 }  // namespace ivis::app

@@ -18,6 +18,10 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 ///        coherence and, when @a withReveal, reveal (total, direct, per_region).
 nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::Coherence& coherence, bool withReveal);
 
+/// @brief Writes @a text to @a path through a temporary file.
+/// @throw InputError naming the path when it cannot be written
+void writeTextFile(const std::string& text, const std::string& path);
+
 /// @brief Writes @a json (indented) to @a path through a temporary file.
 /// @throw InputError naming the path when it cannot be written
 void writeJsonFile(const nlohmann::json& json, const std::string& path);

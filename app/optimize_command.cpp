@@ -78,12 +78,16 @@ Command addOptimizeCommand(CLI::App& app)
         core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
         const optimize::EnergyOptions displayOptions =
             options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
-        const optimize::EnergyValue display = optimize::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.method);
         optimize::EnergyOptions measureOptions = displayOptions;
         measureOptions.kind = optimize::EnergyKind::Visibility;
         measureOptions.paperLiteral = true;
         measureOptions.reveal = field.hasScalar();
         const optimize::EnergyValue measured = optimize::EnergyEvaluator(scene, measureOptions).evaluate(camera, best.method);
+        // The visibility energy is the measure itself: measure it once.
+        const optimize::EnergyValue display =
+            displayOptions.kind == optimize::EnergyKind::Visibility
+                ? measured
+                : optimize::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.method);
         if (!options->plot.empty()) core::writePng(optimize::plotVisitedViews(result), options->plot, false);
 
         nlohmann::json visited = nlohmann::json::array();

@@ -1,7 +1,6 @@
 # Writes OUTPUT, a C++ file defining NAMESPACE::embeddedFiles() (declared in HEADER, returning
 # std::vector<EmbeddedFile> of {name, text}) with the text of every file in INPUTS as a raw string
-# literal. Run by an add_custom_command (app/CMakeLists.txt for the shaders, core/CMakeLists.txt for
-# the colour maps):
+# literal. Run by ivis_embed_files() (top-level CMakeLists.txt) for the shaders and the colour maps:
 #   cmake -DOUTPUT=<file.cpp> -DINPUTS=<a;b;...> -DHEADER=<x.h> -DNAMESPACE=<ns> -P embed_files.cmake
 set(delimiter "embedded")
 set(entries "")

@@ -158,8 +158,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);
     const render::Method& method = *frame.method;
     setParameterUniforms(p, method);
-    const render::CurvedRayParams ray;  // the landing threshold of every method's rays
-    p.set("uEpsilon", ray.landingEpsilon > 0.0f ? ray.landingEpsilon : 0.5f * volume.textureVoxelSize);
+    p.set("uEpsilon", 0.5f * volume.textureVoxelSize);  // rays land within half a voxel (render::landingEpsilon)
     if (const render::CurvedRayMethod* curved = method.curved()) {
         const float hullOffset = curved->rayParams().hullOffset;
         p.set("uMaxAlpha", render::kMaxAlpha);
