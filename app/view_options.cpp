@@ -25,6 +25,8 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_flag("--no-legend", noLegend, "No colour bar");
     command.add_flag("--no-outline", noOutline, "No outline around the directly visible object");
     command.add_flag("--no-shadows", noShadows, "No shadow rays");
+    command.add_flag("--unshaded-indirect", unshadedIndirect,
+                     "Show the indirect part in flat colour (read its colours against the bar) instead of lit from the arriving rays");
     command.add_flag("--transparent", transparent, "Transparent background (PNG alpha)");
 }
 
@@ -50,6 +52,7 @@ render::RenderOptions ViewOptions::renderOptions() const
     core::colormap(colormap);  // validates the name
     if (range.size() == 2) options.shading.range = core::scalarRangeFromUser(range[0], range[1]);
     options.shading.shadows = !noShadows;
+    options.shading.shadeIndirect = !unshadedIndirect;
     options.shading.transparentBackground = transparent;
     options.outline = !noOutline;
     options.legend = !noLegend;

@@ -31,6 +31,7 @@ struct ViewOptions {
     bool noLegend = false;
     bool noOutline = false;
     bool noShadows = false;
+    bool unshadedIndirect = false;
     bool transparent = false;
 
     /// @brief Registers every option on @a command.

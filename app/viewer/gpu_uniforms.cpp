@@ -104,6 +104,10 @@ void setSharedUniforms(GlProgram& program, const GpuFrame& frame, const core::Ca
     program.set("uEye", toFloat(frame.camera.eye));
     program.set("uForward", toFloat(camera.forward()));
     program.set("uOrtho", frame.camera.orthographic);
+    program.set("uToLight", toFloat(glm::normalize(-0.35 * camera.right() + 0.55 * camera.upVector() -
+                                                   0.75 * camera.forward())));
+    program.set("uAmbient", shading.ambient);
+    program.set("uShadows", shading.shadows);
 }
 
 }  // namespace
@@ -139,10 +143,6 @@ void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::
 {
     setSharedUniforms(program, frame, camera);
     program.set("uClipFromWorld", clipFromWorld(camera));
-    program.set("uToLight", toFloat(glm::normalize(-0.35 * camera.right() + 0.55 * camera.upVector() -
-                                                   0.75 * camera.forward())));
-    program.set("uAmbient", frame.shading.ambient);
-    program.set("uShadows", frame.shading.shadows);
 }
 
 void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::CameraFrame& camera,
@@ -156,6 +156,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uRight", toFloat(camera.right()));
     p.set("uUp", toFloat(camera.upVector()));
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);
+    p.set("uShadeIndirect", frame.shading.shadeIndirect);
     const render::Method& method = *frame.method;
     setParameterUniforms(p, method);
     p.set("uEpsilon", 0.5f * volume.textureVoxelSize);  // rays land within half a voxel (render::landingEpsilon)

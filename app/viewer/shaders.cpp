@@ -39,7 +39,7 @@ std::string meshVertex() { return compose({"mesh_vertex.glsl"}); }
 
 std::string meshFragment()
 {
-    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "mesh_fragment.glsl"});
+    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "shading.glsl", "mesh_fragment.glsl"});
 }
 
 std::string fullScreenVertex() { return compose({"full_screen_vertex.glsl"}); }
@@ -48,7 +48,7 @@ bool hasIndirectFragment(const std::string& method) { return findFile("method_" 
 
 std::string indirectFragment(const std::string& method)
 {
-    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "camera_ray.glsl", "landing.glsl",
+    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "shading.glsl", "camera_ray.glsl", "landing.glsl",
                     "hull_search.glsl", "curved_ray.glsl", "method_" + method + ".glsl", "indirect_main.glsl"});
 }
 

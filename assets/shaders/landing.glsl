@@ -1,9 +1,10 @@
 // Where an indirect ray lands on the surface, and the colour shown there.
 uniform float uIndirectBrightness;
+uniform bool uShadeIndirect;   // light indirect pixels from their arriving ray (else flat colour)
 uniform float uEpsilon;         // landing threshold: phi < this
 
 // render::landedAt + Shader::shade for an indirect pixel: the nearest voxel's triangle, the
-// exact closest point on it (core::closestPointOnTriangle), colour x 0.6 x (0.7 + 0.3 facing).
+// exact closest point on it (core::closestPointOnTriangle), lit from the arriving ray and dimmed.
 vec3 closestBarycentric(vec3 p, int triangle)
 {
     uvec3 v = triangleVertices(triangle);
@@ -42,6 +43,15 @@ vec3 closestBarycentric(vec3 p, int triangle)
     return vec3(1.0 - v2 - w2, v2, w2);
 }
 
+// render::Shader::toLightAlong: the key light of a camera looking along @a arrival, upright like the view's.
+vec3 toLightAlong(vec3 arrival)
+{
+    vec3 right = cross(arrival, uUp);
+    right = length(right) > 1e-3 ? normalize(right) : uRight;
+    vec3 up = cross(right, arrival);
+    return normalize(-0.35 * right + 0.55 * up - 0.75 * arrival);
+}
+
 // Colour of an indirect pixel that shows point @a barycentric of @a triangle, seen along @a arrival.
 vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
 {
@@ -49,11 +59,13 @@ vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
     arrival = len > 0.0 ? arrival / len : uForward;
     vec3 normal = shadingNormal(triangle, barycentric);
     if (dot(normal, arrival) > 0.0) normal = -normal;
-    float facing = -dot(normal, arrival);
     uvec3 v = triangleVertices(triangle);
     float value = barycentric.x * vertexPosition[v.x].w + barycentric.y * vertexPosition[v.y].w +
                   barycentric.z * vertexPosition[v.z].w;
-    return albedo(triangle, value) * uIndirectBrightness * (0.7 + 0.3 * facing);
+    vec3 position = barycentric.x * vertexPosition[v.x].xyz + barycentric.y * vertexPosition[v.y].xyz +
+                    barycentric.z * vertexPosition[v.z].xyz;
+    float light = uShadeIndirect ? lighting(position, normal, toLightAlong(arrival)) : 1.0;
+    return albedo(triangle, value) * uIndirectBrightness * light;
 }
 
 // render::landedAt finds the exact closest surface point of p with a BVH query bounded by the

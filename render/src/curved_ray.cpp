@@ -46,6 +46,34 @@ bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, cons
     return false;
 }
 
+bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance)
+{
+    float tEnter, tExit;
+    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
+    const float tolerance = 0.25f * sampler.field().voxelSize();
+    float best = hullOffset, tBest = tEnter;
+    for (float t = tEnter; t < tExit;) {
+        const float phi = sampler.phi(origin + t * direction);
+        if (phi < best) best = phi, tBest = t;
+        // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
+        t += std::max(phi - best, tolerance);
+    }
+    if (!(best < hullOffset)) return false;
+    // Golden-section search for the minimum around the best sample.
+    float lo = std::max(tEnter, tBest - 2.0f * tolerance), hi = std::min(tExit, tBest + 2.0f * tolerance);
+    const float ratio = 0.6180340f;
+    while (hi - lo > 1e-5f) {
+        const float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+        if (sampler.phi(origin + a * direction) < sampler.phi(origin + b * direction)) hi = b;
+        else lo = a;
+    }
+    const float t = 0.5f * (lo + hi);
+    seed = origin + t * direction;
+    distance = sampler.phi(seed);
+    return distance < hullOffset;
+}
+
 glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirection, float alpha)
 {
     const float length = glm::length(gradient);

@@ -45,14 +45,21 @@ CurvedRayMap::CurvedRayMap(const RenderScene& scene, const core::CameraFrame& fr
 bool CurvedRayMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
     const glm::vec3 direction(ray.direction);
-    if (!findHullExit(sampler, glm::vec3(ray.origin), direction, mMethod.rayParams().hullOffset, mHullBox, start.seed))
+    const float hullOffset = mMethod.rayParams().hullOffset;
+    if (mMethod.seedRule() == SeedRule::ClosestApproach) {
+        float distance;
+        if (!findClosestApproach(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed, distance))
+            return false;
+        start.ring = distance / hullOffset;
+    } else if (!findHullExit(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed)) {
         return false;
+    }
     glm::vec3 gradient;
     sampler.phiAndGradient(start.seed, gradient);
     start.velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
     const float length = glm::length(gradient);
     start.alignment = length > 0.0f ? glm::dot(direction, gradient) / length : 0.0f;
-    return true;
+    return mMethod.aim(*this, start, sampler);
 }
 
 bool CurvedRayMap::start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const

@@ -7,6 +7,7 @@
 #include <ivis/render/inversevis_method.h>
 #include <ivis/render/mirror_method.h>
 #include <ivis/render/ring_map_method.h>
+#include <ivis/render/wrap_inversevis_method.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,7 @@ const std::vector<const MethodInfo*>& methodRegistry()
     // One line per method: adding a method is its file pair and a line here.
     static const std::vector<const MethodInfo*> registry = {
         &frontMethodInfo(),  &backfacesMethodInfo(),  &ringMapMethodInfo(),
-        &mirrorMethodInfo(), &inverseVisMethodInfo(), &adaptiveInverseVisMethodInfo()};
+        &mirrorMethodInfo(), &inverseVisMethodInfo(), &adaptiveInverseVisMethodInfo(), &wrapInverseVisMethodInfo()};
     return registry;
 }
 

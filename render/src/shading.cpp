@@ -12,8 +12,27 @@ Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const S
     : mScene(scene),
       mOptions(options),
       mColormap(core::colormap(options.colormap)),
-      mToLight(glm::normalize(glm::vec3(-0.35 * frame.right() + 0.55 * frame.upVector() - 0.75 * frame.forward())))
+      mToLight(glm::normalize(glm::vec3(-0.35 * frame.right() + 0.55 * frame.upVector() - 0.75 * frame.forward()))),
+      mUp(frame.upVector()),
+      mRight(frame.right())
 {
+}
+
+glm::vec3 Shader::toLightAlong(const glm::vec3& arrival) const
+{
+    // The key light placed for a camera looking along the arrival, upright like the real one.
+    glm::vec3 right = glm::cross(arrival, mUp);
+    right = glm::length(right) > 1e-3f ? glm::normalize(right) : mRight;
+    const glm::vec3 up = glm::cross(right, arrival);
+    return glm::normalize(-0.35f * right + 0.55f * up - 0.75f * arrival);
+}
+
+float Shader::lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight,
+                       DistanceField::Sampler& sampler) const
+{
+    float diffuse = std::max(0.0f, glm::dot(normal, toLight));
+    if (diffuse > 0.0f && mOptions.shadows) diffuse *= shadowFactor(sampler, position, normal, toLight);
+    return mOptions.ambient + (1.0f - mOptions.ambient) * diffuse;
 }
 
 glm::vec3 Shader::albedo(const SurfacePoint& point, bool& isNan) const
@@ -40,13 +59,14 @@ glm::vec4 Shader::shade(const PixelMapping& mapping, DistanceField::Sampler& sam
     if (glm::dot(normal, mapping.arrival) > 0.0f) normal = -normal;  // the side the point is seen from
 
     if (mapping.region == Region::Indirect) {
-        const float facing = -glm::dot(normal, mapping.arrival);
-        return glm::vec4(base * mOptions.indirectBrightness * (0.7f + 0.3f * facing), 1.0f);
+        // Lit as a camera looking along the arriving ray would light it, so the back side's
+        // folds and ridges show; dimmed so that it reads as behind.
+        const float light = mOptions.shadeIndirect
+                                ? lighting(mapping.point.position, normal, toLightAlong(mapping.arrival), sampler)
+                                : 1.0f;
+        return glm::vec4(base * mOptions.indirectBrightness * light, 1.0f);
     }
-    float diffuse = std::max(0.0f, glm::dot(normal, mToLight));
-    if (diffuse > 0.0f && mOptions.shadows)
-        diffuse *= shadowFactor(sampler, mapping.point.position, normal, mToLight);
-    return glm::vec4(base * (mOptions.ambient + (1.0f - mOptions.ambient) * diffuse), 1.0f);
+    return glm::vec4(base * lighting(mapping.point.position, normal, mToLight, sampler), 1.0f);
 }
 
 }  // namespace ivis::render

@@ -229,7 +229,7 @@ TEST_F(Cli, UnknownScalarNameListsTheNamesThatExist)
 TEST_F(Cli, UnknownRenderMethod)
 {
     expectRejected(render(sharedMesh("vampy_artery_cfd_pressure.ply"), "--method ring"),
-                   {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis, inversevis-adaptive)"});
+                   {"unknown method 'ring' (known: front, backfaces, neugebauer, mirror, inversevis, inversevis-adaptive, inversevis-wrap)"});
 }
 
 TEST_F(Cli, VersionNamesTheLibraries)

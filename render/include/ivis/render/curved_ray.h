@@ -38,6 +38,13 @@ struct CurvedRayEnd {
 bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
                   float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed);
 
+/// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
+///        comes within @a hullOffset of it: phi sampled along the ray inside @a hullBox, skipping
+///        by the 1-Lipschitz bound, then refined by golden-section search.
+/// @return false when the ray never comes within hullOffset of the surface
+bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance);
+
 /// @brief A box around the hull {phi = hullOffset} of @a mesh: its bounds grown by the offset
 ///        plus one voxel, clipped to the volume's box.
 core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize);

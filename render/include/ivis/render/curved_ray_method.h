@@ -16,6 +16,14 @@ struct CurvedRayStart {
     glm::vec3 seed{};              ///< farthest crossing of the view ray with the hull
     glm::vec3 velocityPerAlpha{};  ///< g x (r x g), g = grad phi / |grad phi|: the view direction's part tangential to the hull
     float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
+    float ring = 0.0f;             ///< phi at the seed / phi0 (closest-approach seeds: 0 at the silhouette, 1 at the hull)
+    float alpha = 0.0f;            ///< launch speed the method chose for this ray (CurvedRayMethod::aim)
+};
+
+/// @brief Where on its view ray a curved ray starts.
+enum class SeedRule {
+    HullExit,        ///< the farthest crossing with the hull (the paper)
+    ClosestApproach  ///< the point of the view ray closest to the surface, within the hull
 };
 
 /// @brief How a launch velocity moves with the optimised parameters: along one direction,
@@ -38,6 +46,8 @@ CurvedRayParams curvedRayParamsFrom(const ParameterValues& values);
 /// @brief Values of the ray parameters, keyed as curvedRaySpecs().
 ParameterValues curvedRayValues(const CurvedRayParams& params);
 
+class CurvedRayMap;
+
 /// @brief A method whose indirect rays are curved rays from the hull.
 class CurvedRayMethod : public Method {
 public:
@@ -47,6 +57,14 @@ public:
     const CurvedRayParams& rayParams() const { return mRay; }
     /// @brief Initial velocity of launch @a launch (0 first) of the ray from @a start.
     virtual glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const = 0;
+    /// @brief Where the rays start (the paper: the hull exit).
+    virtual SeedRule seedRule() const { return SeedRule::HullExit; }
+    /// @brief Chooses this ray's own launch (start.alpha) once it is seeded; the default: nothing.
+    /// @return false when the pixel gets no ray after all (it shows the background)
+    virtual bool aim(const CurvedRayMap& /*rays*/, CurvedRayStart& /*start*/, DistanceField::Sampler& /*sampler*/) const
+    {
+        return true;
+    }
     /// @brief How often a ray that does not land is launched again.
     virtual int relaunches() const { return 0; }
     /// @brief The sensitivity of launch @a launch's velocity to the optimised parameters.
@@ -79,6 +97,8 @@ public:
     /// @brief landedAt() for this view.
     PixelMapping landedAt(const CurvedRayEnd& end, DistanceField::Sampler& sampler) const;
 
+    /// @brief The scene the rays fall onto.
+    const RenderScene& scene() const { return mScene; }
     /// @brief The method whose rays these are.
     const CurvedRayMethod& method() const { return mMethod; }
     /// @brief The landing threshold used.

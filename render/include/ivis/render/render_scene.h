@@ -4,11 +4,13 @@
 #pragma once
 
 #include <ivis/core/surface_field.h>
-#include <ivis/render/distance_field.h>
 #include <ivis/core/triangle_bvh.h>
+#include <ivis/render/distance_field.h>
+#include <ivis/render/local_radius.h>
 #include <ivis/render/surface_point.h>
 #include <ivis/vdb/surface_volume.h>
 
+#include <mutex>
 #include <vector>
 
 namespace ivis::render {
@@ -28,6 +30,13 @@ public:
     const core::TriangleBvh& bvh() const { return mBvh; }
     /// @brief Area-weighted vertex normals of the mesh (for smooth shading).
     const std::vector<glm::vec3>& normals() const { return mNormals; }
+    /// @brief vertexLocalRadii() of the mesh capped at the normalised half-extent 1, computed on
+    ///        first use (thread-safe).
+    const std::vector<float>& localRadii() const
+    {
+        std::call_once(mLocalRadiiOnce, [this] { mLocalRadii = vertexLocalRadii(mesh(), mBvh, mNormals, 1.0f); });
+        return mLocalRadii;
+    }
 
 private:
     const core::SurfaceField& mField;
@@ -35,6 +44,8 @@ private:
     DistanceField mDistance;
     core::TriangleBvh mBvh;
     std::vector<glm::vec3> mNormals;
+    mutable std::once_flag mLocalRadiiOnce;
+    mutable std::vector<float> mLocalRadii;
 };
 
 }  // namespace ivis::render

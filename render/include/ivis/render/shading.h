@@ -1,6 +1,7 @@
 /// @file shading.h
 /// @brief Colours a pixel mapping: the scalar through a colour map, a key light with ambient and
-///        soft shadows for direct pixels, a dimmed "back side" look for indirect ones.
+///        soft shadows for direct pixels; indirect ones lit the same way from their arriving ray
+///        and dimmed so that they read as the back side.
 #pragma once
 
 #include <ivis/core/camera.h>
@@ -20,7 +21,8 @@ struct ShadingOptions {
     std::string colormap = "viridis";
     core::ScalarRange range{0.0f, 1.0f};  ///< scalar values mapped to the ends of the colour map
     float ambient = 0.3f;                 ///< light reaching every direct pixel
-    float indirectBrightness = 0.6f;      ///< indirect pixels: colour x this, so they read as behind
+    float indirectBrightness = 0.75f;     ///< indirect pixels: colour x this, so they read as behind
+    bool shadeIndirect = true;            ///< light indirect pixels from their arriving ray (else flat colour)
     bool shadows = true;                  ///< shadow rays sphere-traced through the level set
     bool transparentBackground = false;
     glm::vec3 background{1.0f};
@@ -41,6 +43,11 @@ public:
     const glm::vec3& toLight() const { return mToLight; }
 
 private:
+    /// The key light of a camera looking along @a arrival (upright like the view's camera).
+    glm::vec3 toLightAlong(const glm::vec3& arrival) const;
+    /// Ambient plus shadowed diffuse light at a point whose @a normal faces the viewer.
+    float lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight,
+                   DistanceField::Sampler& sampler) const;
     /// Surface colour of a point: colour map of its scalar, or the NaN / no-data colours.
     glm::vec3 albedo(const SurfacePoint& point, bool& isNan) const;
 
@@ -48,6 +55,8 @@ private:
     ShadingOptions mOptions;
     const core::Colormap& mColormap;
     glm::vec3 mToLight;
+    glm::vec3 mUp;     ///< the camera's up vector
+    glm::vec3 mRight;  ///< the camera's right vector
 };
 
 }  // namespace ivis::render

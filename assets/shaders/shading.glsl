@@ -1,0 +1,36 @@
+// Light of a surface point (render::Shader::lighting): ambient plus diffuse toward a key light,
+// with soft shadows sphere-traced through phi.
+uniform vec3 uToLight;         // the view's key light
+uniform float uAmbient;
+uniform bool uShadows;
+
+// render::shadowFactor: soft shadow toward the key light, sphere-traced through phi; on an unsigned
+// field a wall thinner than a step shows up as phi falling then rising within two voxels.
+float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
+{
+    const float kSoftness = 8.0;
+    float hitDistance = 0.5 * uVoxel;
+    vec3 start = point + 2.0 * uVoxel * normal;
+    float lit = 1.0;
+    float t = uVoxel;
+    float previousSlope = 0.0;
+    for (int step = 0; step < 512 && t < 6.0; ++step) {
+        vec3 gradient;
+        float phi = phiAndGradient(start + t * toLight, gradient);
+        if (phi < hitDistance) return 0.0;
+        float slope = dot(gradient, toLight);
+        if (phi < 2.0 * uVoxel && previousSlope < 0.0 && slope > 0.0 && uUnsigned) return 0.0;
+        previousSlope = slope;
+        lit = min(lit, kSoftness * phi / t);
+        t += max(phi, 0.5 * uVoxel);
+    }
+    return clamp(lit, 0.0, 1.0);
+}
+
+// render::Shader::lighting: ambient plus shadowed diffuse at a point whose normal faces the viewer.
+float lighting(vec3 point, vec3 normal, vec3 toLight)
+{
+    float diffuse = max(0.0, dot(normal, toLight));
+    if (diffuse > 0.0 && uShadows && uVolumeReady) diffuse *= shadowFactor(point, normal, toLight);
+    return uAmbient + (1.0 - uAmbient) * diffuse;
+}

@@ -1,0 +1,46 @@
+/// @file wrap_inversevis_method.h
+/// @brief The `inversevis-wrap` method (beyond the paper): the back side unwraps outward from the
+///        silhouette. A ring pixel's curved ray starts where its view ray passes closest to the
+///        surface; the ring around each part is as wide as the part is thick; the further out
+///        across its ring the pixel lies, the faster and the more steeply outward the ray is
+///        launched, so it falls further round the back. A ray whose landing is not stable under
+///        a small change of its launch would tear the picture and is not drawn.
+#pragma once
+
+#include <ivis/render/curved_ray_method.h>
+
+namespace ivis::render {
+
+/// @brief Launch of the wrap rays across the ring coordinate t in [0, 1).
+struct WrapLaunch {
+    float ringScale = 4.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
+    float speed = 2.5f;      ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
+    float tilt = 0.5f;       ///< launch direction: view direction + tilt * t * grad phi (normalised)
+    float stableShift = 0.005f;  ///< largest |P(alpha - d) + P(alpha + d) - 2 P(alpha)|, d = 0.01 (else not drawn)
+};
+
+/// @brief Description of `inversevis-wrap`: wrap_speed (optimised), wrap_tilt, ring_scale,
+///        stable_shift, hull_offset, step, max_steps.
+const MethodInfo& wrapInverseVisMethodInfo();
+
+/// @brief Curved rays from the closest approach, launched by WrapLaunch.
+class WrapInverseVisMethod final : public CurvedRayMethod {
+public:
+    /// @brief The method with rays @a ray launched by @a launch.
+    WrapInverseVisMethod(const CurvedRayParams& ray, const WrapLaunch& launch) : CurvedRayMethod(ray), mLaunch(launch) {}
+    const MethodInfo& info() const override { return wrapInverseVisMethodInfo(); }
+    ParameterValues values() const override;
+    SeedRule seedRule() const override { return SeedRule::ClosestApproach; }
+    /// @brief Sets the ring coordinate from the local radius, the launch direction and alpha; false
+    ///        outside the ring or where the landing is unstable.
+    bool aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const override;
+    glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
+    bool launchSensitivity(const CurvedRayStart&, int, LaunchSensitivity&) const override { return false; }
+    /// @brief The launch rule.
+    const WrapLaunch& launch() const { return mLaunch; }
+
+private:
+    WrapLaunch mLaunch;
+};
+
+}  // namespace ivis::render

@@ -1,0 +1,45 @@
+// vertexLocalRadii against shapes whose thickness is known: a unit sphere (radius 1 everywhere) and
+// a torus (tube radius 0.3), and the cap where the inward ray leaves through an opening.
+#include <ivis/core/procedural_scenes.h>
+#include <ivis/core/triangle_bvh.h>
+#include <ivis/render/local_radius.h>
+#include <ivis/render/surface_point.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace ivis::render {
+namespace {
+
+std::vector<float> radiiOf(const core::TriangleMesh& mesh, float cap)
+{
+    const core::TriangleBvh bvh(mesh);
+    return vertexLocalRadii(mesh, bvh, vertexNormals(mesh), cap);
+}
+
+TEST(LocalRadius, IsTheRadiusOfASphere)
+{
+    const core::SurfaceField sphere = core::makeSphere(4);
+    for (float r : radiiOf(sphere.mesh, 5.0f)) EXPECT_NEAR(r, 1.0f, 0.01f);
+}
+
+TEST(LocalRadius, IsTheTubeRadiusOfATorus)
+{
+    const core::SurfaceField torus = core::makeTorus();
+    const std::vector<float> radii = radiiOf(torus.mesh, 5.0f);
+    for (float r : radii) EXPECT_NEAR(r, 0.3f, 0.01f);
+}
+
+TEST(LocalRadius, IsCappedWhereTheInwardRayLeavesThroughAnOpening)
+{
+    // A single triangle: every inward ray leaves, so every vertex gets the cap.
+    core::TriangleMesh mesh;
+    mesh.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    mesh.triangles = {{0u, 1u, 2u}};
+    mesh.dataTriangleCount = 1;
+    for (float r : radiiOf(mesh, 0.25f)) EXPECT_FLOAT_EQ(r, 0.25f);
+}
+
+}  // namespace
+}  // namespace ivis::render
