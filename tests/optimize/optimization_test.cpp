@@ -278,6 +278,35 @@ TEST(ViewpointAnnealing, AcceptsWorseViewsAtTheMetropolisRate)
         << accepted << " of " << worse << " worse views accepted, " << expected << " expected";
 }
 
+// The mirror's footprint moves with w: each view is measured at the framing of the parameters its
+// ascent ends with, and its energy is that of the picture shown there; a fixed field of view is
+// kept for every view.
+TEST(ViewpointAnnealing, EachViewIsMeasuredAtTheFramingOfItsFinalParameters)
+{
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(16));
+    AnnealingOptions options;
+    options.steps = 3;
+    AscentOptions ascent;
+    ascent.maxIterations = 1;
+    const AnnealingResult run = annealViewpoint(evaluator, makeMethod("mirror"), options, ascent);
+    int moved = 0;
+    for (std::size_t i = 0; i < run.visited.size(); ++i) {
+        const VisitedView& view = run.visited[i];
+        const core::Camera framed =
+            render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *view.method, 1.0);
+        EXPECT_EQ(view.camera.fovYDeg, framed.fovYDeg) << "view " << i;
+        EXPECT_EQ(view.value.energy, evaluator.evaluate(view.camera, view.method).energy) << "view " << i;
+        const core::Camera before =
+            render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *makeMethod("mirror"), 1.0);
+        moved += view.camera.fovYDeg != before.fovYDeg;
+    }
+    EXPECT_GT(moved, 0) << "w must move the framing for the test to mean anything";
+    options.fovYDeg = 50.0;
+    for (const VisitedView& view : annealViewpoint(evaluator, makeMethod("mirror"), options, ascent).visited)
+        EXPECT_EQ(view.camera.fovYDeg, 50.0);
+}
+
 TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscendedThere)
 {
     const auto& fixture = test::vesselScene();
