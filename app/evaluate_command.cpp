@@ -28,6 +28,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace ivis::app {
@@ -71,7 +72,7 @@ Command addEvaluateCommand(CLI::App& app)
         std::vector<int> optResolutions{100};
         int displayResolution = 1000;
         int pictureResolution = 0;
-        double fovYDeg = core::kDefaultFovYDeg;
+        std::optional<double> fovYDeg;  ///< none: each view framed for its method
         OptimizationOptions optimization;
         std::string json, markdown, pictures, cacheDir = ".";
         bool resume = false;
@@ -84,7 +85,8 @@ Command addEvaluateCommand(CLI::App& app)
         ->capture_default_str();
     command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
         ->capture_default_str();
-    command->add_option("--fov", options->fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
+    command->add_option("--fov", options->fovYDeg,
+                        "Vertical field of view (degrees); default: each view fitted to its method's picture");
     options->optimization.addTo(*command);
     command->add_option("--json", options->json, "Results as JSON (written after each mesh)");
     command->add_option("--markdown", options->markdown, "Results as Markdown tables (written after each mesh)");
@@ -147,11 +149,10 @@ Command addEvaluateCommand(CLI::App& app)
                     entry["ascent_res"][std::to_string(resolution)] =
                         ascentEvaluator ? options->optimization.ascentResolution : resolution;
                     const optimize::VisitedView& optimum = run.bestView();
-                    const optimize::EnergyValue measured =
-                        display.evaluate(core::Camera::fromAngles(optimum.thetaDeg, optimum.phiDeg, core::kCameraDistance, options->fovYDeg),
-                                     optimum.method);
+                    const optimize::EnergyValue measured = display.evaluate(optimum.camera, optimum.method);
                     entry["by_resolution"][std::to_string(resolution)] = {{"theta", optimum.thetaDeg},
                                                                           {"phi", optimum.phiDeg},
+                                                                          {"fov_y_deg", optimum.camera.fovYDeg},
                                                                           {"params", render::methodToJson(*optimum.method)},
                                                                           {"visibility", measured.energy}};
                     if (k == 0) {
@@ -161,13 +162,15 @@ Command addEvaluateCommand(CLI::App& app)
                             angleBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
                     }
                 }
-                const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, options->fovYDeg);
+                // Square pictures: the view as the annealing framed and measured it.
+                const core::Camera& camera = best.camera;
                 const optimize::EnergyValue value = display.evaluate(camera, best.method);
                 const optimize::Coherence coherent =
                     optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
                 entry.update(measuresJson(value, coherent, displayOptions.reveal));
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
+                entry["fov_y_deg"] = camera.fovYDeg;
                 entry["params"] = render::methodToJson(*best.method);
                 if (!start->info().scannedParameter.empty()) entry["alpha_scan"] = options->optimization.alphaScan;
                 if (!options->pictures.empty()) {

@@ -12,6 +12,7 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
 {
     return {{"theta", view.thetaDeg},
             {"phi", view.phiDeg},
+            {"fov_y_deg", view.camera.fovYDeg},
             {"energy", view.value.energy},
             {"front_energy", view.value.front},
             {"accepted", view.accepted},

@@ -11,7 +11,7 @@
 
 namespace ivis::app {
 
-/// @brief One visited view: angles, energy, front-only energy, accepted, parameters.
+/// @brief One visited view: angles, field of view, energy, front-only energy, accepted, parameters.
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
 /// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,

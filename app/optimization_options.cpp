@@ -52,7 +52,8 @@ optimize::EnergyOptions OptimizationOptions::measureOptions(int resolution, cons
     return options;
 }
 
-optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const
+optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg,
+                                                                 std::optional<double> fovYDeg) const
 {
     optimize::AnnealingOptions options;
     options.steps = steps;

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ivis::app {
@@ -38,8 +39,9 @@ struct OptimizationOptions {
     /// @brief The reported measure at @a resolution rays per side: the visibility grid is
     ///        --visibility-res (the paper's 200), whatever the optimisation used.
     optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
-    /// @brief Annealing options starting at (theta, phi) with field of view @a fovYDeg.
-    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, double fovYDeg) const;
+    /// @brief Annealing options starting at (theta, phi) with the fixed field of view @a fovYDeg
+    ///        (none: each view framed for its method).
+    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, std::optional<double> fovYDeg) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).
     optimize::AscentOptions ascentOptions() const;
     /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below

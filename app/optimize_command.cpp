@@ -28,6 +28,7 @@ Command addOptimizeCommand(CLI::App& app)
         std::string output = "best.png";
         std::string json;
         std::string plot;
+        std::string cameraOut;
         std::string cacheDir;
     };
     auto options = std::make_shared<Options>();
@@ -41,9 +42,12 @@ Command addOptimizeCommand(CLI::App& app)
     command->add_option("-o,--output", options->output, "Picture of the best view at --res")->capture_default_str();
     command->add_option("--json", options->json, "Result JSON: best view, parameters, energies, visited views");
     command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
+    command->add_option("--camera-out", options->cameraOut, "Camera JSON of the best view (default: <output>.camera.json)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
 
     return {command, [options] {
+        for (const std::string& path : {options->output, options->json, options->plot, options->cameraOut})
+            if (!path.empty()) checkOutputFolder(path);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
         if (start.orthographic)
@@ -67,15 +71,19 @@ Command addOptimizeCommand(CLI::App& app)
             options->optimization.ascentEvaluator(scene, options->optResolution, renderOptions.shading.range);
         const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
-            options->optimization.annealingOptions(startAngles.x, startAngles.y, start.fovYDeg),
+            options->optimization.annealingOptions(startAngles.x, startAngles.y,
+                                                   options->view.framed() ? std::nullopt : std::optional(start.fovYDeg)),
             options->optimization.ascentOptions(), ascentEvaluator.get(), &progress);
         const optimize::VisitedView& best = result.bestView();
 
-        // The best view at display resolution: picture and energy.
-        const core::Camera camera = core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, start.fovYDeg);
+        // The best view at display resolution, framed for the picture's size: picture, camera and energy.
+        const core::Camera camera =
+            options->view.pictureCamera(scene, best.camera, *best.method, renderOptions.width, renderOptions.height);
         renderOptions.method = best.method;
         const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
         core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
+        const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
+        core::writeCameraJson(camera, cameraPath);
         const optimize::EnergyOptions displayOptions =
             options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
         optimize::EnergyOptions measureOptions = displayOptions;
@@ -104,6 +112,9 @@ Command addOptimizeCommand(CLI::App& app)
             {"evaluations", result.evaluations},
             {"theta", best.thetaDeg},
             {"phi", best.phiDeg},
+            {"fov_y_deg", camera.fovYDeg},
+            {"framed", options->view.framed()},
+            {"camera", cameraPath},
             {"params", render::methodToJson(*best.method)},
             {"energy_value", best.value.energy},
             {"front_energy_value", best.value.front},
@@ -118,7 +129,8 @@ Command addOptimizeCommand(CLI::App& app)
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +
                       optimize::toString(energyOptions.kind) + " " + std::to_string(display.energy) + " (front " +
                       std::to_string(display.front) + ") at " + std::to_string(renderOptions.height) +
-                      " rays per side, " + std::to_string(result.seconds) + " s");
+                      " rays per side, " + options->view.describeFraming(camera) + ", " +
+                      std::to_string(result.seconds) + " s");
     }};
 }
 

@@ -44,7 +44,7 @@ Command addRenderCommand(CLI::App& app)
             if (!path.empty()) checkOutputFolder(path);
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
-        const core::Camera camera = options->view.camera();
+        const core::Camera requested = options->view.camera();
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
@@ -54,6 +54,8 @@ Command addRenderCommand(CLI::App& app)
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
+        const core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,
+                                                                renderOptions.width, renderOptions.height);
         const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
 
         core::writePng(result.image, options->output, renderOptions.shading.transparentBackground);
@@ -79,6 +81,8 @@ Command addRenderCommand(CLI::App& app)
                                       {"coherence", optimize::mappingCoherence(result.layers).value()},
                                       {"theta", angles.x},
                                       {"phi", angles.y},
+                                      {"fov_y_deg", camera.fovYDeg},
+                                      {"framed", options->view.framed()},
                                       {"volume_resolution", volume.options.resolution},
                                       {"volume_cache", volumePath},
                                       {"output", options->output},
@@ -88,7 +92,8 @@ Command addRenderCommand(CLI::App& app)
         if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
                       std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
-                      ", " + std::to_string(s.seconds) + " s render)");
+                      ", " + options->view.describeFraming(camera) + ", " + std::to_string(s.seconds) +
+                      " s render)");
     }};
 }
 

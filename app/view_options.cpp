@@ -1,6 +1,8 @@
 #include "view_options.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/log.h>
+#include <ivis/render/framing.h>
 
 #include <cstdio>
 
@@ -10,9 +12,12 @@ void ViewOptions::addTo(CLI::App& command)
 {
     command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")->capture_default_str();
     command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")->capture_default_str();
-    command.add_option("--fov", fovYDeg, "Vertical field of view (degrees)")->capture_default_str();
+    command.add_option("--fov", fovYDeg,
+                       "Vertical field of view (degrees); default: fitted to each picture, the object and the "
+                       "method's whole indirect region with a margin");
     command.add_flag("--ortho", orthographic, "Orthographic projection");
-    command.add_option("--camera", cameraFile, "Camera JSON (eye, target, up, fov_y_deg), instead of the angles")
+    command.add_option("--camera", cameraFile,
+                       "Camera JSON (eye, target, up, fov_y_deg), instead of the angles; its field of view is kept")
         ->check(CLI::ExistingFile);
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
@@ -33,10 +38,32 @@ void ViewOptions::addTo(CLI::App& command)
 core::Camera ViewOptions::camera() const
 {
     if (!cameraFile.empty()) return core::readCameraJson(cameraFile);
-    core::Camera camera = core::Camera::fromAngles(theta, phi, core::kCameraDistance, fovYDeg);
+    core::Camera camera =
+        core::Camera::fromAngles(theta, phi, core::kCameraDistance, fovYDeg.value_or(core::kDefaultFovYDeg));
     camera.orthographic = orthographic;
     camera.validate();
     return camera;
+}
+
+core::Camera ViewOptions::pictureCamera(const render::RenderScene& scene, const core::Camera& camera,
+                                        const render::Method& method, int width, int height) const
+{
+    if (!framed()) return camera;
+    bool fits = true;
+    const core::Camera framedCamera = render::frameView(scene, camera, method, double(width) / height, &fits);
+    if (!fits)
+        core::logWarning(method.name() + "'s picture from theta " + std::to_string(camera.angles().x) + " phi " +
+                         std::to_string(camera.angles().y) + " does not fit the widest framed field of view; it is "
+                         "cut at the frame");
+    return framedCamera;
+}
+
+std::string ViewOptions::describeFraming(const core::Camera& camera) const
+{
+    char text[96];
+    if (camera.orthographic) std::snprintf(text, sizeof text, "half height %.3f", camera.orthoHalfHeight);
+    else std::snprintf(text, sizeof text, "field of view %.1f degrees", camera.fovYDeg);
+    return std::string(text) + (framed() ? ", framed" : ", fixed");
 }
 
 render::RenderOptions ViewOptions::renderOptions() const

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ namespace ivis::app {
 struct ViewOptions {
     double theta = 90.0;
     double phi = 0.0;
-    double fovYDeg = core::kDefaultFovYDeg;
+    std::optional<double> fovYDeg;  ///< --fov; none: each picture's field of view is framed
     bool orthographic = false;
     std::string cameraFile;
     std::string resolution = "1000x1000";
@@ -36,8 +37,18 @@ struct ViewOptions {
 
     /// @brief Registers every option on @a command.
     void addTo(CLI::App& command);
-    /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho.
+    /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho (75 degrees
+    ///        until framed without --fov).
     core::Camera camera() const;
+    /// @brief True when each picture's field of view is fitted to it (neither --fov nor --camera).
+    bool framed() const { return !fovYDeg && cameraFile.empty(); }
+    /// @brief @a camera for a @a width x @a height picture of @a method: its field of view fitted
+    ///        to the picture (render::frameView) when framed(), else unchanged. Warns when the
+    ///        picture needs more than the widest framed field of view.
+    core::Camera pictureCamera(const render::RenderScene& scene, const core::Camera& camera,
+                               const render::Method& method, int width, int height) const;
+    /// @brief "field of view 52.3 degrees, framed" (or "fixed"; orthographic: its half height).
+    std::string describeFraming(const core::Camera& camera) const;
     /// @brief Render options from the flags alone, every value checked, so that a bad flag fails
     ///        before a mesh is read; the scalar range is --range's (the default when not given).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)

@@ -43,6 +43,7 @@ void OrbitCamera::orbit(double dx, double dy)
 void OrbitCamera::zoom(double steps)
 {
     fixed.reset();
+    framed = false;
     const double factor = std::pow(0.9, steps);
     distance = std::clamp(distance * factor, 0.3, 20.0);
     orthoHalfHeight = std::clamp(orthoHalfHeight * factor, 0.05, 20.0);
@@ -52,11 +53,20 @@ void OrbitCamera::pan(double dx, double dy, int viewportHeight)
 {
     const core::Camera current = camera();
     fixed.reset();
+    framed = false;
     const core::CameraFrame frame(current, std::max(1, viewportHeight), std::max(1, viewportHeight));
     const double halfHeight =
         orthographic ? orthoHalfHeight : distance * std::tan(0.5 * fovYDeg * M_PI / 180.0);
     const double worldPerPixel = 2.0 * halfHeight / std::max(1, viewportHeight);
     target += worldPerPixel * (-dx * frame.right() + dy * frame.upVector());
+}
+
+void OrbitCamera::frameAgain()
+{
+    fixed.reset();
+    distance = core::kCameraDistance;
+    target = glm::dvec3(0.0);
+    framed = true;
 }
 
 CameraAnimation::CameraAnimation(const OrbitCamera& from, std::vector<double> parametersFrom, const OrbitCamera& to,

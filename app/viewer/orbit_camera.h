@@ -1,6 +1,7 @@
 /// @file orbit_camera.h
 /// @brief The viewer's camera: an eye on a sphere around a target (the CLI's --theta/--phi
-///        convention), turned, zoomed and panned with the mouse, and eased toward a new view.
+///        convention), turned, zoomed and panned with the mouse, and eased toward a new view; its
+///        field of view framed for the picture (the viewer fits it each frame) until a zoom or pan.
 #pragma once
 
 #include <ivis/core/camera.h>
@@ -23,6 +24,8 @@ struct OrbitCamera {
     double orthoHalfHeight = 1.6;
     /// A camera read from a file, shown exactly (its own up vector) until the user moves.
     std::optional<core::Camera> fixed;
+    /// The field of view (orthographic: the half height) is fitted to each frame's picture.
+    bool framed = false;
 
     /// @brief Orbit state of @a camera (kept exactly as @a fixed when @a keepExact).
     static OrbitCamera fromCamera(const core::Camera& camera, bool keepExact);
@@ -30,11 +33,13 @@ struct OrbitCamera {
     core::Camera camera() const;
     /// @brief Turns by a mouse drag of (dx, dy) pixels (0.4 degree per pixel); theta stays in (0, 180).
     void orbit(double dx, double dy);
-    /// @brief Zooms by @a steps wheel clicks (10% each); distance in [0.3, 20].
+    /// @brief Zooms by @a steps wheel clicks (10% each); distance in [0.3, 20]. Ends the framing.
     void zoom(double steps);
     /// @brief Moves the target in the image plane by a drag of (dx, dy) pixels of a viewport
-    ///        @a viewportHeight pixels high, so the point under the cursor follows it.
+    ///        @a viewportHeight pixels high, so the point under the cursor follows it. Ends the framing.
     void pan(double dx, double dy, int viewportHeight);
+    /// @brief Back on the radius-2.5 sphere around the origin (same angles), framed.
+    void frameAgain();
 };
 
 /// @brief Eases from one orbit state (and a method's optimised parameters) to another in

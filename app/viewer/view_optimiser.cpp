@@ -3,6 +3,7 @@
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
 
 #include <chrono>
@@ -42,10 +43,12 @@ ViewOptimiser parameterOptimiser(const OptimiserSettings& settings)
         const auto begin = std::chrono::steady_clock::now();
         const optimize::EnergyEvaluator evaluator(
             scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
-        const optimize::EnergyValue before = evaluator.evaluate(start.camera, start.method);
-        const optimize::AscentResult ascent =
-            optimize::optimizeParameters(evaluator, start.camera, start.method,
-                                         settings.optimization.ascentOptions(), &interrupter);
+        // The optimiser's square samples, framed as the viewer frames the view.
+        const core::Camera camera =
+            settings.framed ? render::frameView(scene, start.camera, *start.method, 1.0) : start.camera;
+        const optimize::EnergyValue before = evaluator.evaluate(camera, start.method);
+        const optimize::AscentResult ascent = optimize::optimizeParameters(
+            evaluator, camera, start.method, settings.optimization.ascentOptions(), &interrupter);
         OptimiserResult result;
         result.state = {start.camera, ascent.method};
         result.energyBefore = before.energy;
@@ -70,16 +73,19 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
         const optimize::EnergyEvaluator evaluator(
             scene, settings.optimization.energyOptions(settings.resolution, settings.importanceRange));
         const glm::dvec2 angles = start.camera.angles();
-        const optimize::EnergyValue before = evaluator.evaluate(start.camera, start.method);
+        const core::Camera camera =
+            settings.framed ? render::frameView(scene, start.camera, *start.method, 1.0) : start.camera;
+        const optimize::EnergyValue before = evaluator.evaluate(camera, start.method);
         const auto ascentEvaluator =
             settings.optimization.ascentEvaluator(scene, settings.resolution, settings.importanceRange);
         const optimize::AnnealingResult annealing = optimize::annealViewpoint(
-            evaluator, start.method, settings.optimization.annealingOptions(angles.x, angles.y, start.camera.fovYDeg),
+            evaluator, start.method,
+            settings.optimization.annealingOptions(angles.x, angles.y,
+                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg)),
             settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter);
         const optimize::VisitedView& best = annealing.bestView();
         OptimiserResult result;
-        result.state.camera =
-            core::Camera::fromAngles(best.thetaDeg, best.phiDeg, core::kCameraDistance, start.camera.fovYDeg);
+        result.state.camera = best.camera;
         result.state.method = best.method;
         result.energyBefore = before.energy;
         result.energyAfter = best.value.energy;

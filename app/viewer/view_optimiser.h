@@ -45,6 +45,7 @@ struct OptimiserSettings {
     OptimizationOptions optimization;  ///< energy, annealing schedule, ascent
     int resolution = 100;              ///< rays per image side while optimising (paper: 100 or 1000)
     core::ScalarRange importanceRange; ///< scalar values mapped to importance 0 and 1 (scalar energy)
+    bool framed = false;               ///< each view framed for its method (render::frameView), as the viewer shows it
 };
 
 /// @brief The parameter optimiser ("optimise alpha", ...): optimize::optimizeParameters (gradient ascent with golden-section line

@@ -9,6 +9,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/render/framing.h>
 #include <ivis/render/surface_point.h>
 
 #include <epoxy/gl.h>
@@ -55,6 +56,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field)
     mOptimiser.resolution = mOptions.optResolution;
     mOptions.optimization.energyOptions(mOptions.optResolution, mShading.range);  // validates --energy
     mOrbit = OrbitCamera::fromCamera(mOptions.view.camera(), !mOptions.view.cameraFile.empty());
+    mOrbit.framed = mOptions.view.framed();
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
 }
@@ -154,8 +156,25 @@ GpuFrame ViewerApp::frame(int width, int height) const
     return f;
 }
 
+void ViewerApp::frameOrbit(int width, int height)
+{
+    const core::Camera camera = mOrbit.camera();
+    const double aspect = double(width) / double(height);
+    try {
+        const core::Camera framed =
+            mLoaded ? render::frameView(*mLoaded->scene, camera, *mMethod, aspect)
+                    : render::fitCamera(camera, render::offsetMeshExtent(mField->mesh, camera, 0.0), aspect);
+        mOrbit.fovYDeg = framed.fovYDeg;
+        mOrbit.orthoHalfHeight = framed.orthoHalfHeight;
+    } catch (const ValueError& e) {
+        mOrbit.framed = false;
+        mStatus = std::string("framing off: ") + e.what();
+    }
+}
+
 void ViewerApp::renderFrame(int width, int height)
 {
+    if (mOrbit.framed) frameOrbit(width, height);
     const GpuFrame f = frame(width, height);
     mLastFrameMs = timedMs([&] { mRenderer->render(f); });
 }
@@ -243,6 +262,7 @@ void ViewerApp::startOptimiser(bool view)
     if (!mLoaded || mJob.valid()) return;
     mCancelJob = false;
     mOptimiser.importanceRange = mShading.range;
+    mOptimiser.framed = mOrbit.framed;
     const ViewOptimiser optimiser = view ? viewpointOptimiser(mOptimiser) : parameterOptimiser(mOptimiser);
     mJobName = view ? "optimise view" : "optimise " + mMethod->name();
     mStatus = mJobName + ": running on the CPU...";
@@ -294,6 +314,11 @@ void ViewerApp::handleInput()
     }
     if (!io.WantCaptureKeyboard) {
         if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) takeNumberedScreenshot();
+        if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
+            mAnimation.stop();
+            mOrbit.frameAgain();
+            mDirty = true;
+        }
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
     }
 }
@@ -351,9 +376,20 @@ void ViewerApp::drawPanel()
     ImGui::Separator();
     ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
                 mRenderer->width(), mRenderer->height());
-    ImGui::Text("camera theta %.1f phi %.1f distance %.2f", mOrbit.thetaDeg, mOrbit.phiDeg, mOrbit.distance);
+    bool framed = mOrbit.framed;
+    if (ImGui::Checkbox("frame the picture (F)", &framed)) {
+        mAnimation.stop();
+        if (framed) mOrbit.frameAgain();
+        else mOrbit.framed = false;
+        mDirty = true;
+    }
+    tooltip("render::frameView each frame: the field of view fitted to the object and the method's whole indirect "
+            "region (hull, rings or mirror footprint) with a margin, the eye back on the radius-2.5 sphere; a zoom "
+            "or pan ends it");
+    ImGui::Text("camera theta %.1f phi %.1f distance %.2f, field of view %.1f", mOrbit.thetaDeg, mOrbit.phiDeg,
+                mOrbit.distance, mOrbit.fovYDeg);
     ImGui::TextDisabled("%s", mGlRenderer.c_str());
-    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; P: screenshot");
+    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot");
     ImGui::PopTextWrapPos();
     ImGui::End();
     if (changed) mDirty = true;

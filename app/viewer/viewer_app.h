@@ -46,6 +46,9 @@ private:
     bool pollLoader();
     void waitForScene();
     GpuFrame frame(int width, int height) const;
+    /// Fits the orbit's field of view to the picture of a width x height frame (the object alone
+    /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
+    void frameOrbit(int width, int height);
     void renderFrame(int width, int height);
     void writeScreenshot(const std::string& path, const std::string& regionPath);
     /// Writes inversevis-view-<mesh>-<n>.png and reports it (or the error) in the panel.

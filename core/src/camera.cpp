@@ -58,22 +58,26 @@ CameraFrame::CameraFrame(const Camera& camera, int width, int height) : mCamera(
 
 CameraRay CameraFrame::ray(double x, double y) const
 {
-    const double sx = (2.0 * x / mWidth - 1.0) * mHalfHeight * mAspect;
-    const double sy = (1.0 - 2.0 * y / mHeight) * mHalfHeight;
-    if (mCamera.orthographic) return {mCamera.eye + sx * mRight + sy * mUp, mForward};
-    return {mCamera.eye, glm::normalize(mForward + sx * mRight + sy * mUp)};
+    return rayThrough({(2.0 * x / mWidth - 1.0) * mHalfHeight * mAspect, (1.0 - 2.0 * y / mHeight) * mHalfHeight});
+}
+
+CameraRay CameraFrame::rayThrough(const glm::dvec2& point) const
+{
+    if (mCamera.orthographic) return {mCamera.eye + point.x * mRight + point.y * mUp, mForward};
+    return {mCamera.eye, glm::normalize(mForward + point.x * mRight + point.y * mUp)};
+}
+
+glm::dvec2 CameraFrame::imagePlane(const glm::dvec3& world) const
+{
+    const glm::dvec3 d = world - mCamera.eye;
+    const glm::dvec2 point(glm::dot(d, mRight), glm::dot(d, mUp));
+    return mCamera.orthographic ? point : point / glm::dot(d, mForward);
 }
 
 glm::dvec2 CameraFrame::project(const glm::dvec3& world) const
 {
-    const glm::dvec3 d = world - mCamera.eye;
-    const double depth = glm::dot(d, mForward);
-    double sx = glm::dot(d, mRight), sy = glm::dot(d, mUp);
-    if (!mCamera.orthographic) {
-        sx /= depth;
-        sy /= depth;
-    }
-    return {(sx / (mHalfHeight * mAspect) + 1.0) * 0.5 * mWidth, (1.0 - sy / mHalfHeight) * 0.5 * mHeight};
+    const glm::dvec2 s = imagePlane(world);
+    return {(s.x / (mHalfHeight * mAspect) + 1.0) * 0.5 * mWidth, (1.0 - s.y / mHalfHeight) * 0.5 * mHeight};
 }
 
 }  // namespace ivis::core

@@ -33,6 +33,11 @@ std::unique_ptr<IndirectMap> CurvedRayMethod::indirectMap(const RenderScene& sce
     return std::make_unique<CurvedRayMap>(scene, frame, *this);
 }
 
+PictureExtent CurvedRayMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+{
+    return offsetMeshExtent(scene.mesh(), camera, mRay.hullOffset);
+}
+
 CurvedRayMap::CurvedRayMap(const RenderScene& scene, const core::CameraFrame& frame, const CurvedRayMethod& method)
     : mScene(scene),
       mFrame(frame),

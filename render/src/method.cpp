@@ -22,4 +22,9 @@ std::unique_ptr<IndirectMap> Method::indirectMap(const RenderScene& /*scene*/, c
     return nullptr;
 }
 
+PictureExtent Method::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+{
+    return offsetMeshExtent(scene.mesh(), camera, 0.0);
+}
+
 }  // namespace ivis::render

@@ -50,6 +50,12 @@ std::unique_ptr<IndirectMap> MirrorMethod::indirectMap(const RenderScene& scene,
     return std::make_unique<MirrorMap>(scene, frame, mParams);
 }
 
+PictureExtent MirrorMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+{
+    const PictureExtent footprint{mirrorFootprint(camera, mParams, scene.bvh(), core::bounds(scene.mesh())), glm::dvec2(0.0)};
+    return Method::pictureExtent(scene, camera).united(footprint);
+}
+
 const MethodInfo& mirrorMethodInfo()
 {
     static const MethodInfo info = [] {

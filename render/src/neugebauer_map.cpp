@@ -1,5 +1,6 @@
 #include <ivis/render/neugebauer_map.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -7,20 +8,43 @@
 
 namespace ivis::render {
 
+namespace {
+
+/// The projected ring centre and the silhouette radius around it, on the image plane.
+struct Silhouette {
+    glm::dvec2 centre{0.0};
+    double radius = 0.0;
+};
+
+Silhouette silhouette(const core::CameraFrame& frame, const core::TriangleMesh& mesh, const glm::vec3& centre)
+{
+    Silhouette s;
+    s.centre = frame.imagePlane(glm::dvec3(centre));
+    for (const glm::vec3& p : mesh.positions)
+        s.radius = std::max(s.radius, glm::length(frame.imagePlane(glm::dvec3(p)) - s.centre));
+    return s;
+}
+
+}  // namespace
+
 RingLayout layoutRings(const core::CameraFrame& frame, const core::TriangleMesh& mesh, const RingParams& params)
 {
     const double halfHeight = 0.5 * frame.height();
     RingLayout layout;
     layout.centre = frame.project(glm::dvec3(params.centre));
-    double silhouette = 0.0;
-    for (const glm::vec3& p : mesh.positions)
-        silhouette = std::max(silhouette, glm::length(frame.project(glm::dvec3(p)) - layout.centre));
-    layout.innerRadius = silhouette + params.silhouetteGap * halfHeight;
+    const double pixelsPerUnit = halfHeight / frame.imagePlaneHalfHeight();
+    layout.innerRadius = silhouette(frame, mesh, params.centre).radius * pixelsPerUnit + params.silhouetteGap * halfHeight;
     layout.outerRadius = layout.innerRadius + params.ringWidth * halfHeight;
     layout.backRadius = params.backRadius * halfHeight;
     const double margin = 0.04 * halfHeight;
     layout.backCentre = {margin + layout.backRadius, margin + layout.backRadius};
     return layout;
+}
+
+PictureExtent ringExtent(const core::Camera& camera, const core::TriangleMesh& mesh, const RingParams& params)
+{
+    const Silhouette s = silhouette(core::CameraFrame(camera, 1, 1), mesh, params.centre);
+    return {glm::abs(s.centre) + s.radius, glm::dvec2(params.silhouetteGap + params.ringWidth)};
 }
 
 bool ringRayDirection(const RingLayout& layout, const core::CameraFrame& frame, const glm::dvec2& pixel,

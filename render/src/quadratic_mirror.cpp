@@ -1,8 +1,17 @@
 #include <ivis/render/quadratic_mirror.h>
 
+#include <ivis/core/ray_box.h>
+#include <ivis/render/picture_extent.h>
+#include <ivis/vdb/box_lattice.h>
+
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <cmath>
+#include <limits>
 
 namespace ivis::render {
 namespace {
@@ -34,6 +43,32 @@ bool smallestPositiveRoot(double a, double b, double c, double& t)
     return t > 0.0;
 }
 
+/// Image-plane bounds of the centres of the cells of an n x n grid over [lo, hi] that pass @a test.
+struct GridHits {
+    glm::dvec2 lo{std::numeric_limits<double>::infinity()};
+    glm::dvec2 hi{-std::numeric_limits<double>::infinity()};
+    bool empty() const { return lo.x > hi.x; }
+};
+
+template <typename Test>
+GridHits gridHits(const glm::dvec2& lo, const glm::dvec2& hi, int n, const Test& test)
+{
+    const glm::dvec2 cell = (hi - lo) / double(n);
+    return tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, n), GridHits{},
+        [&](const tbb::blocked_range<int>& rows, GridHits hits) {
+            for (int j = rows.begin(); j != rows.end(); ++j)
+                for (int i = 0; i < n; ++i) {
+                    const glm::dvec2 point = lo + (glm::dvec2(i, j) + 0.5) * cell;
+                    if (!test(point)) continue;
+                    hits.lo = glm::min(hits.lo, point);
+                    hits.hi = glm::max(hits.hi, point);
+                }
+            return hits;
+        },
+        [](const GridHits& a, const GridHits& b) { return GridHits{glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)}; });
+}
+
 }  // namespace
 
 bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray, const MirrorParams& params,
@@ -55,6 +90,38 @@ bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray,
     hit.point = glm::vec3(camera.eye + toWorld(frame, m));
     hit.normal = glm::vec3(toWorld(frame, normal));
     return true;
+}
+
+glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
+                           const core::Bounds3& meshBounds)
+{
+    const core::CameraFrame frame(camera, 1, 1);
+    const float half = float(vdb::kBoxHalfExtent);
+    // A mirror ray that lands starts inside the volume's box (MirrorMap) and meets the mesh's bounds.
+    auto mayLand = [&](const glm::dvec2& point, MirrorHit& hit) {
+        if (!intersectMirror(frame, frame.rayThrough(point), params, hit)) return false;
+        if (glm::any(glm::greaterThan(glm::abs(hit.point), glm::vec3(half)))) return false;
+        float tEnter, tExit;
+        return core::rayBoxInterval(hit.point, hit.normal, meshBounds, tEnter, tExit);
+    };
+    const double widest = widestFramedHalfHeight(camera);
+    constexpr int kCoarse = 96, kFine = 128;
+    const GridHits candidates = gridHits(glm::dvec2(-widest), glm::dvec2(widest), kCoarse, [&](const glm::dvec2& p) {
+        MirrorHit hit;
+        return mayLand(p, hit);
+    });
+    if (candidates.empty()) return glm::dvec2(0.0);
+    const double coarseCell = 2.0 * widest / kCoarse;
+    const glm::dvec2 lo = glm::max(candidates.lo - coarseCell, glm::dvec2(-widest));
+    const glm::dvec2 hi = glm::min(candidates.hi + coarseCell, glm::dvec2(widest));
+    const GridHits footprint = gridHits(lo, hi, kFine, [&](const glm::dvec2& p) {
+        MirrorHit hit;
+        return mayLand(p, hit) && bvh.intersect(hit.point, hit.normal).hit();
+    });
+    if (footprint.empty()) return glm::dvec2(0.0);
+    const glm::dvec2 reach = glm::max(glm::abs(footprint.lo), glm::abs(footprint.hi)) + (hi - lo) / double(kFine);
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    return {reach.x < widest ? reach.x : kInfinity, reach.y < widest ? reach.y : kInfinity};
 }
 
 }  // namespace ivis::render

@@ -36,6 +36,11 @@ std::unique_ptr<IndirectMap> RingMapMethod::indirectMap(const RenderScene& scene
     return std::make_unique<RingMap>(scene, frame, mParams);
 }
 
+PictureExtent RingMapMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+{
+    return ringExtent(camera, scene.mesh(), mParams);
+}
+
 const MethodInfo& ringMapMethodInfo()
 {
     static const MethodInfo info = [] {
@@ -43,7 +48,8 @@ const MethodInfo& ringMapMethodInfo()
         i.name = "neugebauer";
         i.help = "ring map of Neugebauer et al. 2009 around the silhouette, with a back-side disc on the left";
         i.parameters = {{"ring_centre", "ring map centre x y z (normalised units)", {0.0f, 0.0f, 0.0f}, -2.5f, 2.5f},
-                        {"ring_width", "ring width r2 - r1 (fraction of the image half-height)", {0.3f}, 0.01f, 2.0f}};
+                        {"ring_width", "ring width r2 - r1 (fraction of the image half-height; at most 0.9, so that a framed "
+                         "picture keeps room for the object)", {0.3f}, 0.01f, 0.9f}};
         i.create = [](const ParameterValues& v) {
             RingParams params;
             const std::vector<float>& c = v.at("ring_centre");

@@ -463,6 +463,11 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     EXPECT_EQ(measures.at("visibility"), report.at("display_energy_value")) << "the energy is the surface visibility";
     for (const char* key : {"paper_literal", "front_visibility", "coherence"}) EXPECT_TRUE(measures.contains(key)) << key;
     for (const char* file : {"best.png", "views.png"}) EXPECT_TRUE(fs::exists(output(file))) << file;
+    // The best view is framed, and its camera file says so.
+    EXPECT_TRUE(report.at("framed").get<bool>());
+    const nlohmann::json camera = nlohmann::json::parse(std::ifstream(output("best.png.camera.json")));
+    EXPECT_EQ(camera.at("fov_y_deg"), report.at("fov_y_deg"));
+    EXPECT_NE(report.at("fov_y_deg").get<double>(), 75.0);
 }
 
 TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
@@ -477,6 +482,37 @@ TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
     EXPECT_FALSE(stats.contains("mirror_w"));
     EXPECT_GT(stats.at("coherence").get<double>(), 0.0);
     EXPECT_LE(stats.at("coherence").get<double>(), 1.0);
+}
+
+// Each picture is framed for its method (the rings need a wider field of view than the object
+// alone); the camera file it writes records that field of view and reproduces the very picture;
+// --fov fixes the field of view.
+TEST_F(Cli, RenderFramesEachPictureAndItsCameraFileReproducesIt)
+{
+    auto stats = [&](const std::string& extra, const std::string& name) {
+        const CliResult result = runCli("render scene:vessel-tree --volume-res 48 --res 32x32 --theta 60 --phi 40 " +
+                                        extra + " -o " + quoted(output(name + ".png")) + " --stats-json " +
+                                        quoted(output(name + ".json")));
+        EXPECT_EQ(result.status, 0) << result.err;
+        return nlohmann::json::parse(std::ifstream(output(name + ".json")));
+    };
+    const nlohmann::json ring = stats("--method neugebauer", "ring"), front = stats("--method front", "front");
+    EXPECT_TRUE(ring.at("framed").get<bool>());
+    EXPECT_GT(ring.at("fov_y_deg").get<double>(), front.at("fov_y_deg").get<double>() + 10.0);
+    const nlohmann::json camera = nlohmann::json::parse(std::ifstream(output("ring.png.camera.json")));
+    EXPECT_EQ(camera.at("fov_y_deg"), ring.at("fov_y_deg"));
+
+    const nlohmann::json again = stats("--method neugebauer --camera " + quoted(output("ring.png.camera.json")), "again");
+    EXPECT_FALSE(again.at("framed").get<bool>());
+    EXPECT_EQ(again.at("fov_y_deg"), ring.at("fov_y_deg"));
+    EXPECT_EQ(test::readFile(output("again.png")), test::readFile(output("ring.png"))) << "the same picture";
+
+    const nlohmann::json fixed = stats("--method neugebauer --fov 40", "fixed");
+    EXPECT_FALSE(fixed.at("framed").get<bool>());
+    EXPECT_EQ(fixed.at("fov_y_deg").get<double>(), 40.0);
+    fs::remove_all(output(""));
+    fs::create_directories(output(""));
+    expectRejected(render("scene:vessel-tree", "--method neugebauer --ring-width 1.2"), {"--ring-width", "1.2"});
 }
 
 TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)

@@ -6,6 +6,7 @@
 #include <ivis/core/image.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 #include <ivis/render/screen_map.h>
@@ -72,7 +73,7 @@ struct Agreement {
     std::size_t cpuIndirect = 0, gpuIndirect = 0;
 };
 
-/// Renders @a method on the CPU and in the viewer at 512x512 (theta 90, phi 0) and compares.
+/// Renders @a method on the CPU and in the viewer at 512x512 (theta 90, phi 0, framed) and compares.
 /// @param volumeResolution volume resolution of both
 /// @param viewerArguments further viewer arguments
 /// @param viewerOutput optional output: what the viewer printed
@@ -94,7 +95,9 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     options.shading.range = core::scalarRangeFromData(field.values);
     options.legend = false;
     options.outline = false;
-    const render::RenderResult cpu = render::renderImage(scene, core::Camera::fromAngles(90.0, 0.0), options);
+    // The viewer frames the view as the CLI does: the same field of view on the CPU and the GPU.
+    const core::Camera camera = render::frameView(scene, core::Camera::fromAngles(90.0, 0.0), *options.method, 1.0);
+    const render::RenderResult cpu = render::renderImage(scene, camera, options);
     const std::vector<float>& cpuRegion = cpu.layers.channel("region");
 
     const std::string shot = dir.file("gpu.png"), region = dir.file("gpu-region.png");

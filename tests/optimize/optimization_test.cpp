@@ -10,6 +10,7 @@
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/curved_ray_gradient.h>
 #include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
 
 #include <gtest/gtest.h>
@@ -277,6 +278,35 @@ TEST(ViewpointAnnealing, AcceptsWorseViewsAtTheMetropolisRate)
         << accepted << " of " << worse << " worse views accepted, " << expected << " expected";
 }
 
+// The mirror's footprint moves with w: each view is measured at the framing of the parameters its
+// ascent ends with, and its energy is that of the picture shown there; a fixed field of view is
+// kept for every view.
+TEST(ViewpointAnnealing, EachViewIsMeasuredAtTheFramingOfItsFinalParameters)
+{
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(16));
+    AnnealingOptions options;
+    options.steps = 3;
+    AscentOptions ascent;
+    ascent.maxIterations = 1;
+    const AnnealingResult run = annealViewpoint(evaluator, makeMethod("mirror"), options, ascent);
+    int moved = 0;
+    for (std::size_t i = 0; i < run.visited.size(); ++i) {
+        const VisitedView& view = run.visited[i];
+        const core::Camera framed =
+            render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *view.method, 1.0);
+        EXPECT_EQ(view.camera.fovYDeg, framed.fovYDeg) << "view " << i;
+        EXPECT_EQ(view.value.energy, evaluator.evaluate(view.camera, view.method).energy) << "view " << i;
+        const core::Camera before =
+            render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *makeMethod("mirror"), 1.0);
+        moved += view.camera.fovYDeg != before.fovYDeg;
+    }
+    EXPECT_GT(moved, 0) << "w must move the framing for the test to mean anything";
+    options.fovYDeg = 50.0;
+    for (const VisitedView& view : annealViewpoint(evaluator, makeMethod("mirror"), options, ascent).visited)
+        EXPECT_EQ(view.camera.fovYDeg, 50.0);
+}
+
 TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscendedThere)
 {
     const auto& fixture = test::vesselScene();
@@ -286,12 +316,14 @@ TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscend
     options.steps = 4;
     const AnnealingResult run = annealViewpoint(evaluator, faithful(), options, {}, &ascentEvaluator);
     ASSERT_EQ(run.visited.size(), 5u);
-    const MethodPtr start = faithful();
-    const MethodPtr* current = nullptr;
+    // Each proposal ascends from the current view's coarse parameters (the winner's are replaced
+    // by its final ascent afterwards, so they are recomputed here).
+    MethodPtr from = faithful();
     for (std::size_t i = 0; i < run.visited.size(); ++i) {
         const VisitedView& view = run.visited[i];
-        const core::Camera camera = core::Camera::fromAngles(view.thetaDeg, view.phiDeg, core::kCameraDistance, options.fovYDeg);
-        const MethodPtr& from = current ? *current : start;
+        // Framed for the method (InverseVis: the framing does not move with alpha).
+        const core::Camera camera = render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *from, 1.0);
+        EXPECT_EQ(view.camera.fovYDeg, camera.fovYDeg) << "view " << i << " is framed";
         const AscentResult ascended = optimizeParameters(ascentEvaluator, camera, from);
         const EnergyValue measured = evaluator.evaluate(camera, view.method);
         EXPECT_EQ(view.value.energy, measured.energy) << "view " << i << " is measured on the full energy";
@@ -301,7 +333,7 @@ TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscend
             EXPECT_EQ(view.method->values(), ascended.method->values()) << "view " << i << " ascends coarsely";
         }
         EXPECT_LE(view.value.energy, run.bestView().value.energy);
-        if (i == 0 || view.accepted) current = &view.method;
+        if (i == 0 || view.accepted) from = ascended.method;
     }
 }
 

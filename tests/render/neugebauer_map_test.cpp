@@ -2,6 +2,7 @@
 // directions across the ring (toward the viewer inside, away outside), and the back disc.
 #include <ivis/core/camera.h>
 #include <ivis/core/procedural_scenes.h>
+#include <ivis/render/framing.h>
 #include <ivis/render/neugebauer_map.h>
 
 #include <glm/geometric.hpp>
@@ -93,6 +94,24 @@ TEST(NeugebauerMap, RingRadiiFollowTheProjectedSilhouette)
     const double silhouette = std::tan(std::asin(1.0 / 2.5)) / tanHalf * 48.0;
     EXPECT_NEAR(layout.innerRadius - 0.02 * 48.0, silhouette, 0.02 * silhouette);
     EXPECT_LE(layout.innerRadius - 0.02 * 48.0, silhouette + 1e-6);
+}
+
+// Framed by ringExtent, the outer ring touches the margin on the axis that limits it and stays
+// inside it on the other, for every set-up (off-centre ring centres and non-square images included).
+TEST(NeugebauerMap, FramedRingsTouchTheMarginAndNoMore)
+{
+    for (const RingCase& s : setups()) {
+        const double aspect = double(s.width) / s.height;
+        const core::Camera camera = fitCamera(s.camera, ringExtent(s.camera, *s.mesh, s.params), aspect);
+        const core::CameraFrame frame(camera, s.width, s.height);
+        const RingLayout layout = layoutRings(frame, *s.mesh, s.params);
+        const double halfHeight = 0.5 * s.height;
+        // Reach of the outer circle from the image centre, per axis, over the room within the margin.
+        const double x = (std::abs(layout.centre.x - 0.5 * s.width) + layout.outerRadius) / halfHeight;
+        const double y = (std::abs(layout.centre.y - 0.5 * s.height) + layout.outerRadius) / halfHeight;
+        const double used = std::max(x / (aspect - kFramingMargin), y / (1.0 - kFramingMargin));
+        EXPECT_NEAR(used, 1.0, 1e-6) << s.name;
+    }
 }
 
 TEST(NeugebauerMap, RingDirectionsSweepFromTowardTheViewerToAway)

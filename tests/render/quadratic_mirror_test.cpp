@@ -1,6 +1,10 @@
 // The quadratic mirror against its definition in eye space (quadratic_mirror.h): the hit lies on the
 // camera ray and on z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y, the normal is the height field's.
+#include "render/scene_fixture.h"
+
 #include <ivis/core/camera.h>
+#include <ivis/render/method_registry.h>
+#include <ivis/render/mirror_method.h>
 #include <ivis/render/quadratic_mirror.h>
 
 #include <glm/geometric.hpp>
@@ -8,6 +12,8 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -171,6 +177,49 @@ TEST(QuadraticMirror, BowlNormalsTiltTowardTheAxis)
     // Symmetric pixels give mirror-image normals.
     EXPECT_NEAR(glm::dot(glm::dvec3(left.normal), frame.right()), -glm::dot(glm::dvec3(right.normal), frame.right()),
                 1e-5);
+}
+
+/// Brute force of mirrorFootprint: the image-plane reach of the pixel centres of a @a size^2 picture
+/// at the widest framed field of view whose mirror ray lands (the method's own sphere tracing).
+glm::dvec2 landedReach(const RenderScene& scene, const core::Camera& camera, const MethodPtr& mirror, int size)
+{
+    core::Camera widest = camera;
+    widest.fovYDeg = kMaxFramedFovYDeg;
+    const core::CameraFrame frame(widest, size, size);
+    const std::unique_ptr<IndirectMap> map = mirror->indirectMap(scene, frame);
+    auto sampler = scene.distance().sampler();
+    glm::dvec2 reach(0.0);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            if (map->map(x + 0.5, y + 0.5, sampler).region == Region::Indirect)
+                reach = glm::max(reach, glm::abs(frame.imagePlane(frame.ray(x + 0.5, y + 0.5).origin +
+                                                                  frame.ray(x + 0.5, y + 0.5).direction)));
+    return reach;
+}
+
+// The footprint's reach is that of the pixels whose mirror ray lands, found by brute force at
+// 500 x 500 over the widest framed image (pixel 0.015 on the image plane): within three such
+// pixels either way (the footprint adds one fine cell; a landing also counts a ray that passes
+// within half a voxel of the surface, which the footprint's ray casts do not).
+TEST(QuadraticMirror, FootprintReachesAsFarAsTheLandingRays)
+{
+    const std::vector<std::pair<const test::SceneFixture*, std::string>> scenes = {{&test::sphereScene(), "sphere"},
+                                                                                   {&test::vesselScene(), "tree"}};
+    const std::vector<std::vector<float>> ws = {{0.3f, 0.3f, 0.0f, 0.0f, 0.0f}, {1.0f, 0.4f, 0.3f, 0.2f, -0.3f}};
+    constexpr int kSize = 500;
+    const double pixel = 2.0 * std::tan(0.5 * kMaxFramedFovYDeg * M_PI / 180.0) / kSize;
+    for (const auto& [fixture, name] : scenes)
+        for (const core::Camera& camera : {core::Camera::fromAngles(90, 0), core::Camera::fromAngles(50, 120)})
+            for (const std::vector<float>& w : ws) {
+                const MethodPtr mirror = makeMethod("mirror", {{"mirror_w", w}});
+                const auto& params = dynamic_cast<const MirrorMethod&>(*mirror).params();
+                const RenderScene& scene = *fixture->scene;
+                const glm::dvec2 footprint = mirrorFootprint(camera, params, scene.bvh(), core::bounds(scene.mesh()));
+                const glm::dvec2 brute = landedReach(scene, camera, mirror, kSize);
+                ASSERT_GT(brute.x, 0.1) << name;
+                for (int axis = 0; axis < 2; ++axis)
+                    EXPECT_NEAR(footprint[axis], brute[axis], 3.0 * pixel) << name << " w1 " << w[0] << " axis " << axis;
+            }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/render/framing.h>
 
 #include <algorithm>
 #include <chrono>
@@ -47,23 +48,32 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     std::mt19937_64 random(options.seed);
     AnnealingResult result;
 
-    auto cameraAt = [&](double theta, double phi) {
-        return core::Camera::fromAngles(theta, phi, core::kCameraDistance, options.fovYDeg);
+    auto cameraAt = [&](double theta, double phi, const render::Method& method) {
+        const core::Camera camera =
+            core::Camera::fromAngles(theta, phi, core::kCameraDistance, options.fovYDeg.value_or(core::kDefaultFovYDeg));
+        return options.fovYDeg ? camera : render::frameView(evaluator.scene(), camera, method, 1.0);
+    };
+    // The view of @a ascent's result, framed for its parameters and measured on the full evaluator
+    // unless the ascent already did that at this very camera.
+    auto measured = [&](VisitedView& view, const AscentResult& ascent, const core::Camera& ascentCamera, bool onFull) {
+        view.method = ascent.method;
+        view.camera = cameraAt(view.thetaDeg, view.phiDeg, *ascent.method);
+        view.value = ascent.value;
+        if (onFull && view.camera.fovYDeg == ascentCamera.fovYDeg &&
+            view.camera.orthoHalfHeight == ascentCamera.orthoHalfHeight)
+            return;
+        view.value = evaluator.evaluate(view.camera, ascent.method);
+        ++result.evaluations;
     };
     auto visit = [&](double theta, double phi, const render::MethodPtr& method) {
-        const core::Camera camera = cameraAt(theta, phi);
+        const core::Camera camera = cameraAt(theta, phi, *method);
         const AscentResult optimised =
             optimizeParameters(ascentEvaluator ? *ascentEvaluator : evaluator, camera, method, ascent, interrupter);
         result.evaluations += optimised.evaluations;
         VisitedView view;
         view.thetaDeg = theta;
         view.phiDeg = phi;
-        view.method = optimised.method;
-        view.value = optimised.value;
-        if (ascentEvaluator) {
-            view.value = evaluator.evaluate(camera, optimised.method);
-            ++result.evaluations;
-        }
+        measured(view, optimised, camera, !ascentEvaluator);
         return view;
     };
 
@@ -89,11 +99,9 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     }
     if (ascentEvaluator) {  // the winner's parameters, ascended on the full energy
         VisitedView& best = result.visited[result.best];
-        const AscentResult polished =
-            optimizeParameters(evaluator, cameraAt(best.thetaDeg, best.phiDeg), best.method, ascent, interrupter);
+        const AscentResult polished = optimizeParameters(evaluator, best.camera, best.method, ascent, interrupter);
         result.evaluations += polished.evaluations;
-        best.method = polished.method;
-        best.value = polished.value;
+        measured(best, polished, best.camera, true);
     }
     if (interrupter) interrupter->end();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();

@@ -13,8 +13,9 @@ namespace ivis::core {
 
 /// @brief Default distance of the eye from the target (the paper's camera sphere).
 inline constexpr double kCameraDistance = 2.5;
-/// @brief Default vertical field of view: fits the hull (phi0 = 0.4) of a unit sphere seen from 2.5,
-///        whose half-angle is asin(1.4 / 2.5) = 34 degrees, with a margin.
+/// @brief Vertical field of view of a camera whose picture is not framed (render/framing.h fits it
+///        per view): fits the hull (phi0 = 0.4) of a unit sphere seen from 2.5, whose half-angle is
+///        asin(1.4 / 2.5) = 34 degrees, with a margin.
 inline constexpr double kDefaultFovYDeg = 75.0;
 
 /// @brief A camera: where it is, what it looks at, and how it projects.
@@ -51,6 +52,14 @@ public:
     CameraRay ray(double x, double y) const;
     /// @brief Continuous pixel position of a world point (may lie outside the image).
     glm::dvec2 project(const glm::dvec3& world) const;
+    /// @brief Where a world point lies on the image plane, along right() and upVector() from the
+    ///        view axis: at unit distance from the eye (perspective: the tangents of its angles) or
+    ///        in world units (orthographic). Independent of the field of view and the image size.
+    glm::dvec2 imagePlane(const glm::dvec3& world) const;
+    /// @brief The camera ray through image-plane point @a point (as imagePlane() measures it).
+    CameraRay rayThrough(const glm::dvec2& point) const;
+    /// @brief Half the image height on the image plane: tan(fov / 2) or orthoHalfHeight.
+    double imagePlaneHalfHeight() const { return mHalfHeight; }
     /// @brief Unit view direction (eye toward target).
     const glm::dvec3& forward() const { return mForward; }
     /// @brief Unit right vector of the image plane.

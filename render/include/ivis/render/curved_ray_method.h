@@ -72,6 +72,8 @@ public:
     virtual bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const = 0;
 
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    /// @brief The hull {phi = hull_offset}: the mesh grown by the hull offset (offsetMeshExtent).
+    PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     const CurvedRayMethod* curved() const override { return this; }
 
 private:

@@ -8,6 +8,7 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/triangle_bvh.h>
+#include <ivis/render/picture_extent.h>
 #include <ivis/render/pixel_mapping.h>
 #include <ivis/render/render_scene.h>
 
@@ -91,6 +92,10 @@ public:
     virtual core::FaceFilter directFaces() const { return core::FaceFilter::Any; }
     /// @brief The map of the pixels that miss the surface for one view; null when they stay background.
     virtual std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const;
+    /// @brief How far this method's picture seen from @a camera reaches: the object and the region
+    ///        where its indirect pixels can lie (render/framing.h fits the field of view to it).
+    ///        By default the object's own extent.
+    virtual PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const;
     /// @brief This method as a curved-ray method, or null when its indirect rays are not curved.
     virtual const CurvedRayMethod* curved() const { return nullptr; }
 

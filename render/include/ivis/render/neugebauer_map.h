@@ -8,6 +8,7 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/triangle_mesh.h>
+#include <ivis/render/picture_extent.h>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -34,6 +35,11 @@ struct RingLayout {
 /// @brief Lays out the rings for a camera: r1 = largest distance of a projected vertex from c_D
 ///        plus the gap; the back disc sits in the upper left corner.
 RingLayout layoutRings(const core::CameraFrame& frame, const core::TriangleMesh& mesh, const RingParams& params);
+
+/// @brief How far the rings seen from @a camera reach: the projected centre's offset plus the
+///        silhouette radius on the image plane, and the gap plus the ring width as a fixed part
+///        (the back-side disc always sits in its corner).
+PictureExtent ringExtent(const core::Camera& camera, const core::TriangleMesh& mesh, const RingParams& params);
 
 /// @brief Direction of the map ray of pixel position @a pixel; false outside both rings.
 bool ringRayDirection(const RingLayout& layout, const core::CameraFrame& frame, const glm::dvec2& pixel,

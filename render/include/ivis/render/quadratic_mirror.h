@@ -6,7 +6,9 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/core/triangle_bvh.h>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -31,5 +33,16 @@ struct MirrorHit {
 /// @return false when the ray does not meet the mirror in front of the camera
 bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray, const MirrorParams& params,
                      MirrorHit& hit);
+
+/// @brief How far the mirror's footprint reaches on the image plane (core::CameraFrame::imagePlane):
+///        the camera rays that meet the mirror at a point inside the volume's box whose normal ray
+///        hits the mesh of @a bvh, found on a 96^2 grid over the widest framed image
+///        (widestFramedHalfHeight()) by a cheap test (the normal ray meets @a meshBounds) and then
+///        on a 128^2 grid over those candidates by the exact one, plus one fine cell.
+/// @param meshBounds bounds of the mesh of @a bvh
+/// @return largest |x| and |y| over the footprint: 0 when empty, +infinity when it reaches the
+///         edge of the widest framed image
+glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
+                           const core::Bounds3& meshBounds);
 
 }  // namespace ivis::render

@@ -19,6 +19,8 @@ public:
     const MethodInfo& info() const override { return ringMapMethodInfo(); }
     ParameterValues values() const override;
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    /// @brief The outer ring (ringExtent).
+    PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     /// @brief The ring parameters.
     const RingParams& params() const { return mParams; }
 

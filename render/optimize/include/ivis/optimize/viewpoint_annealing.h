@@ -3,12 +3,17 @@
 ///        optimisation"): neighbours within +-60 degrees in polar and azimuth angle, acceptance
 ///        exp(10 (E_new - E_old) / T), T_k = T0 * cooling^k; the method's parameters are optimised
 ///        at every proposal before its energy is measured.
+///        Each view is framed for its method (render::frameView, a square image) unless the field
+///        of view is fixed: the ascent runs at the view framed for the parameters it starts from,
+///        and the view's energy is that of the view framed for the parameters it ends with (they
+///        differ only when the framing moves with the optimised parameters: the mirror's w).
 /// @note Deterministic for a seed (std::mt19937_64 and fixed-order reductions).
 #pragma once
 
 #include <ivis/optimize/parameter_optimizer.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace ivis::optimize {
@@ -22,7 +27,7 @@ struct AnnealingOptions {
     double acceptanceScale = 10.0;   ///< the 10 in exp(10 dE / T)
     double startThetaDeg = 90.0;
     double startPhiDeg = 0.0;
-    double fovYDeg = 75.0;
+    std::optional<double> fovYDeg;  ///< a fixed vertical field of view; empty: each view framed
     std::uint64_t seed = 1;
 };
 
@@ -30,6 +35,7 @@ struct AnnealingOptions {
 struct VisitedView {
     double thetaDeg = 0.0;
     double phiDeg = 0.0;
+    core::Camera camera;       ///< the camera it was measured with (framed unless the field of view is fixed)
     EnergyValue value;
     render::MethodPtr method;  ///< the method with the parameters optimised at this view
     bool accepted = false;
