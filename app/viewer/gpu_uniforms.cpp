@@ -157,6 +157,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uUp", toFloat(camera.upVector()));
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);
     p.set("uShadeIndirect", frame.shading.shadeIndirect);
+    p.set("uIndirectShadows", frame.method->indirectRaysArriveFromOutside());
     const render::Method& method = *frame.method;
     setParameterUniforms(p, method);
     p.set("uEpsilon", 0.5f * volume.textureVoxelSize);  // rays land within half a voxel (render::landingEpsilon)

@@ -1,6 +1,7 @@
 // Where an indirect ray lands on the surface, and the colour shown there.
 uniform float uIndirectBrightness;
 uniform bool uShadeIndirect;   // light indirect pixels from their arriving ray (else flat colour)
+uniform bool uIndirectShadows; // shadow them too (not where the rays arrive from inside the object)
 uniform float uEpsilon;         // landing threshold: phi < this
 
 // render::landedAt + Shader::shade for an indirect pixel: the nearest voxel's triangle, the
@@ -64,7 +65,7 @@ vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
                   barycentric.z * vertexPosition[v.z].w;
     vec3 position = barycentric.x * vertexPosition[v.x].xyz + barycentric.y * vertexPosition[v.y].xyz +
                     barycentric.z * vertexPosition[v.z].xyz;
-    float light = uShadeIndirect ? lighting(position, normal, toLightAlong(arrival)) : 1.0;
+    float light = uShadeIndirect ? lighting(position, normal, toLightAlong(arrival), uShadows && uIndirectShadows) : 1.0;
     return albedo(triangle, value) * uIndirectBrightness * light;
 }
 

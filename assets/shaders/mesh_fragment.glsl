@@ -18,6 +18,6 @@ void main()
     vec3 normal = len > 1e-3 ? vNormal / len : triangleNormal(triangle);
     if (dot(normal, arrival) > 0.0) normal = -normal;  // the side the point is seen from
     vec3 base = albedo(triangle, vScalar);
-    oColour = vec4(srgbFromLinear(base * lighting(vPosition, normal, uToLight)), 1.0);
+    oColour = vec4(srgbFromLinear(base * lighting(vPosition, normal, uToLight, uShadows)), 1.0);
     oRegion = 1u;
 }

@@ -27,10 +27,11 @@ float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
     return clamp(lit, 0.0, 1.0);
 }
 
-// render::Shader::lighting: ambient plus shadowed diffuse at a point whose normal faces the viewer.
-float lighting(vec3 point, vec3 normal, vec3 toLight)
+// render::Shader::lighting: ambient plus diffuse at a point whose normal faces the viewer, shadowed
+// when @a shadows.
+float lighting(vec3 point, vec3 normal, vec3 toLight, bool shadows)
 {
     float diffuse = max(0.0, dot(normal, toLight));
-    if (diffuse > 0.0 && uShadows && uVolumeReady) diffuse *= shadowFactor(point, normal, toLight);
+    if (diffuse > 0.0 && shadows && uVolumeReady) diffuse *= shadowFactor(point, normal, toLight);
     return uAmbient + (1.0 - uAmbient) * diffuse;
 }

@@ -59,7 +59,7 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
     const auto start = std::chrono::steady_clock::now();
     const core::CameraFrame frame(camera, options.width, options.height);
     const ScreenMap screen(scene, frame, options.method);
-    const Shader shader(scene, frame, options.shading);
+    const Shader shader(scene, frame, options.shading, *options.method);
 
     RenderResult result;
     result.image = core::Image(options.width, options.height);

@@ -8,13 +8,15 @@
 
 namespace ivis::render {
 
-Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const ShadingOptions& options)
+Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const ShadingOptions& options,
+               const Method& method)
     : mScene(scene),
       mOptions(options),
       mColormap(core::colormap(options.colormap)),
       mToLight(glm::normalize(glm::vec3(-0.35 * frame.right() + 0.55 * frame.upVector() - 0.75 * frame.forward()))),
       mUp(frame.upVector()),
-      mRight(frame.right())
+      mRight(frame.right()),
+      mIndirectShadows(options.shadows && method.indirectRaysArriveFromOutside())
 {
 }
 
@@ -27,11 +29,11 @@ glm::vec3 Shader::toLightAlong(const glm::vec3& arrival) const
     return glm::normalize(-0.35f * right + 0.55f * up - 0.75f * arrival);
 }
 
-float Shader::lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight,
+float Shader::lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight, bool shadows,
                        DistanceField::Sampler& sampler) const
 {
     float diffuse = std::max(0.0f, glm::dot(normal, toLight));
-    if (diffuse > 0.0f && mOptions.shadows) diffuse *= shadowFactor(sampler, position, normal, toLight);
+    if (diffuse > 0.0f && shadows) diffuse *= shadowFactor(sampler, position, normal, toLight);
     return mOptions.ambient + (1.0f - mOptions.ambient) * diffuse;
 }
 
@@ -62,11 +64,12 @@ glm::vec4 Shader::shade(const PixelMapping& mapping, DistanceField::Sampler& sam
         // Lit as a camera looking along the arriving ray would light it, so the back side's
         // folds and ridges show; dimmed so that it reads as behind.
         const float light = mOptions.shadeIndirect
-                                ? lighting(mapping.point.position, normal, toLightAlong(mapping.arrival), sampler)
+                                ? lighting(mapping.point.position, normal, toLightAlong(mapping.arrival),
+                                           mIndirectShadows, sampler)
                                 : 1.0f;
         return glm::vec4(base * mOptions.indirectBrightness * light, 1.0f);
     }
-    return glm::vec4(base * lighting(mapping.point.position, normal, mToLight, sampler), 1.0f);
+    return glm::vec4(base * lighting(mapping.point.position, normal, mToLight, mOptions.shadows, sampler), 1.0f);
 }
 
 }  // namespace ivis::render

@@ -51,7 +51,7 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     const float length = glm::length(gradient);
     const glm::vec3 outward = length > 0.0f ? gradient / length : glm::vec3(0.0f);
     start.velocityPerAlpha = glm::normalize(glm::normalize(start.velocityPerAlpha) + mLaunch.tilt * start.ring * outward);
-    start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);
+    start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);  // launchSensitivity differentiates this
 
     // Where rays fly smoothly, the landing moves along a smooth curve as the launch speed changes,
     // however fast; where they fly chaotically, a slightly slower and a slightly faster launch
@@ -71,6 +71,15 @@ glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int 
     return start.alpha * start.velocityPerAlpha;
 }
 
+bool WrapInverseVisMethod::launchSensitivity(const CurvedRayStart& start, int /*launch*/,
+                                             LaunchSensitivity& sensitivity) const
+{
+    // alpha = speed * t (2 - t) moves with the speed by t (2 - t).
+    sensitivity.direction = start.velocityPerAlpha;
+    sensitivity.perParameter = {double(start.ring * (2.0f - start.ring))};
+    return true;
+}
+
 const MethodInfo& wrapInverseVisMethodInfo()
 {
     static const MethodInfo info = [] {
@@ -87,6 +96,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
              {defaults.stableShift}, 0.0001f, 10.0f}};
         for (const ParameterSpec& spec : curvedRaySpecs()) i.parameters.push_back(spec);
         i.scannedParameter = "wrap_speed";
+        i.tangentLinearGradient = true;
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;
             launch.speed = v.at("wrap_speed")[0];

@@ -185,7 +185,7 @@ TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)
     const RenderScene& scene = *fixture.scene;
     const core::CameraFrame frame(core::Camera::fromAngles(90, 0), 128, 128);
     const ScreenMap screen(scene, frame, makeMethod("backfaces"));
-    const Shader shader(scene, frame, ShadingOptions{});
+    const Shader shader(scene, frame, ShadingOptions{}, *makeMethod("backfaces"));
     auto sampler = scene.distance().sampler();
     const float voxel = scene.distance().voxelSize();
     int blocked = 0, leaks = 0;

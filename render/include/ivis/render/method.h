@@ -96,6 +96,9 @@ public:
     ///        where its indirect pixels can lie (render/framing.h fits the field of view to it).
     ///        By default the object's own extent.
     virtual PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const;
+    /// @brief Whether its indirect rays reach the surface from outside the object, so that the
+    ///        points they show can be shadowed (the ring map's rays start inside it).
+    virtual bool indirectRaysArriveFromOutside() const { return true; }
     /// @brief This method as a curved-ray method, or null when its indirect rays are not curved.
     virtual const CurvedRayMethod* curved() const { return nullptr; }
 

@@ -18,6 +18,7 @@ public:
     explicit RingMapMethod(const RingParams& params) : mParams(params) {}
     const MethodInfo& info() const override { return ringMapMethodInfo(); }
     ParameterValues values() const override;
+    bool indirectRaysArriveFromOutside() const override { return false; }
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     /// @brief The outer ring (ringExtent).
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;

@@ -33,8 +33,9 @@ struct ShadingOptions {
 /// @brief Shades pixel mappings for one view.
 class Shader {
 public:
-    /// @brief Binds the scene, the view (for the key light) and the options.
-    Shader(const RenderScene& scene, const core::CameraFrame& frame, const ShadingOptions& options);
+    /// @brief Binds the scene, the view (for the key light) and the options; indirect pixels are
+    ///        shadowed only when @a method's rays arrive from outside the object.
+    Shader(const RenderScene& scene, const core::CameraFrame& frame, const ShadingOptions& options, const Method& method);
 
     /// @brief Premultiplied linear RGBA of one mapping; sets @a isNan when the scalar was NaN data.
     glm::vec4 shade(const PixelMapping& mapping, DistanceField::Sampler& sampler, bool& isNan) const;
@@ -45,8 +46,8 @@ public:
 private:
     /// The key light of a camera looking along @a arrival (upright like the view's camera).
     glm::vec3 toLightAlong(const glm::vec3& arrival) const;
-    /// Ambient plus shadowed diffuse light at a point whose @a normal faces the viewer.
-    float lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight,
+    /// Ambient plus diffuse light at a point whose @a normal faces the viewer, shadowed when @a shadows.
+    float lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight, bool shadows,
                    DistanceField::Sampler& sampler) const;
     /// Surface colour of a point: colour map of its scalar, or the NaN / no-data colours.
     glm::vec3 albedo(const SurfacePoint& point, bool& isNan) const;
@@ -57,6 +58,7 @@ private:
     glm::vec3 mToLight;
     glm::vec3 mUp;     ///< the camera's up vector
     glm::vec3 mRight;  ///< the camera's right vector
+    bool mIndirectShadows;
 };
 
 }  // namespace ivis::render

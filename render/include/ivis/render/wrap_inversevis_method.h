@@ -35,7 +35,7 @@ public:
     ///        outside the ring or where the landing is unstable.
     bool aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const override;
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
-    bool launchSensitivity(const CurvedRayStart&, int, LaunchSensitivity&) const override { return false; }
+    bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const override;
     /// @brief The launch rule.
     const WrapLaunch& launch() const { return mLaunch; }
 
