@@ -28,6 +28,7 @@ Command addOptimizeCommand(CLI::App& app)
         std::string output = "best.png";
         std::string json;
         std::string plot;
+        std::string exr;
         std::string cameraOut;
         std::string cacheDir;
     };
@@ -42,11 +43,12 @@ Command addOptimizeCommand(CLI::App& app)
     command->add_option("-o,--output", options->output, "Picture of the best view at --res")->capture_default_str();
     command->add_option("--json", options->json, "Result JSON: best view, parameters, energies, visited views");
     command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
+    command->add_option("--exr", options->exr, "Multi-layer OpenEXR file of the best view (as render --exr)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON of the best view (default: <output>.camera.json)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
 
     return {command, [options] {
-        for (const std::string& path : {options->output, options->json, options->plot, options->cameraOut})
+        for (const std::string& path : {options->output, options->json, options->plot, options->exr, options->cameraOut})
             if (!path.empty()) checkOutputFolder(path);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
@@ -82,6 +84,7 @@ Command addOptimizeCommand(CLI::App& app)
         renderOptions.method = best.method;
         const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
         core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
+        if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
         core::writeCameraJson(camera, cameraPath);
         const optimize::EnergyOptions displayOptions =

@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <ivis/core/image_io.h>
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
@@ -449,7 +450,7 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     const CliResult result = runCli("optimize scene:sphere --volume-res 64 --method inversevis-adaptive --opt-res 24 "
                                     "--steps 3 --res 48x48 --cache-dir " + quoted(output("")) + " -o " +
                                     quoted(output("best.png")) + " --json " + quoted(output("best.json")) +
-                                    " --plot " + quoted(output("views.png")));
+                                    " --plot " + quoted(output("views.png")) + " --exr " + quoted(output("best.exr")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("best.json")));
     ASSERT_EQ(report.at("visited").size(), 4u);  // the start view and 3 proposals
@@ -468,6 +469,16 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     const nlohmann::json camera = nlohmann::json::parse(std::ifstream(output("best.png.camera.json")));
     EXPECT_EQ(camera.at("fov_y_deg"), report.at("fov_y_deg"));
     EXPECT_NE(report.at("fov_y_deg").get<double>(), 75.0);
+    // The EXR holds the best view's layers, as render --exr would write them from its camera file.
+    const CliResult again = runCli("render scene:sphere --volume-res 64 --method inversevis-adaptive --alpha-profile " +
+                                   [&] {
+                                       std::string p;
+                                       for (const auto& a : report.at("params").at("alpha_profile")) p += a.dump() + " ";
+                                       return p;
+                                   }() + "--res 48x48 --camera " + quoted(output("best.png.camera.json")) + " --cache-dir " +
+                                   quoted(output("")) + " -o " + quoted(output("again.png")) + " --exr " + quoted(output("again.exr")));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(core::readExrChannel(output("best.exr"), "R"), core::readExrChannel(output("again.exr"), "R"));
 }
 
 TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
