@@ -158,6 +158,7 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.voxelSize = float(vdb::BoxLattice{slices.shownResolution}.voxelSize());
     slices.hasFineBand = bool(volume.farPhi);
     slices.reach = field.reach();
+    slices.localRadii = scene.localRadii();
     slices.unsignedDistance = field.isUnsigned();
     const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
     slices.outside = farSource.background();

@@ -48,6 +48,7 @@ struct DenseSlices {
     /// Closest triangle at shownResolution over the band's active box plus one voxel (-1 = none),
     /// read at the nearest voxel as DistanceField::Sampler::nearestTriangle.
     DenseBox<std::int32_t> triangles;
+    std::vector<float> localRadii;  ///< render::RenderScene::localRadii per vertex (inversevis-wrap's rings)
     bool hasFineBand = false;  ///< the volume has a far field, so the band refines it near the surface
     float farVoxelSize = 0.0f; ///< voxel size of @a far
     float voxelSize = 0.0f;    ///< voxel size of @a band and @a triangles

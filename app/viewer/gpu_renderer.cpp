@@ -22,6 +22,7 @@ GpuRenderer::GpuRenderer()
       mPositions(newName(glGenBuffers)),
       mNormals(newName(glGenBuffers)),
       mIndices(newName(glGenBuffers)),
+      mLocalRadii(newName(glGenBuffers)),
       mColormap(newName(glGenTextures))
 {
     mSceneUniforms.set("uVolumeReady", false);
@@ -70,6 +71,10 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
 {
     mHasVolume = false;
     mVolume.upload(slices);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, mLocalRadii.id());
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<std::size_t>(slices.localRadii.size() * sizeof(float), 16)),
+                 slices.localRadii.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     keepVolumeUniforms(mSceneUniforms, slices, interiorStep);
     mVolumeScale = {fineVoxelSize, slices.voxelSize, slices.reach};
     mHasVolume = true;
@@ -115,6 +120,7 @@ void GpuRenderer::render(const GpuFrame& frame)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mPositions.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mNormals.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mIndices.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mLocalRadii.id());
 
     // Direct part: every face, or only those turned away from the camera.
     if (method.directFaces() == core::FaceFilter::BackOnly) {

@@ -64,6 +64,7 @@ private:
     GlBuffer mPositions;  ///< vec4(position, scalar)
     GlBuffer mNormals;    ///< vec4(normal, NaN flag)
     GlBuffer mIndices;    ///< 3 uint per triangle
+    GlBuffer mLocalRadii; ///< 1 float per vertex (DenseSlices::localRadii)
     VolumeTextures mVolume;
     GlTexture mColormap;
     OffscreenTarget mTarget;

@@ -1,7 +1,5 @@
 #include "viewer_panel.h"
 
-#include "shaders.h"
-
 #include <ivis/core/colormap.h>
 #include <ivis/render/method_registry.h>
 
@@ -73,9 +71,6 @@ bool methodWidgets(render::MethodPtr& method, float reach)
         ImGui::EndCombo();
     }
     tooltip(method->info().help.c_str());
-    if (!method->info().parameters.empty() && !shaders::hasIndirectFragment(method->name()))
-        ImGui::TextWrapped("No GPU tracer for %s yet: the viewer shows the direct part only; "
-                           "`inversevis render` draws its indirect part.", method->name().c_str());
     render::ParameterValues values = method->values();
     bool edited = false;
     for (const render::ParameterSpec& spec : method->info().parameters)

@@ -169,6 +169,13 @@ TEST(Viewer, InverseVisMatchesCpuRenderer)
     EXPECT_GT(adaptive.bothIndirect, std::size_t(10000));
     EXPECT_LT(adaptive.indirectMeanDiff, 1.0);
     EXPECT_LT(adaptive.directMeanDiff, 0.5);
+    // The wrapped method: closest-approach seeds, rings sized by the local radius (the viewer finds
+    // the closest point from phi and its gradient, the CPU with the BVH) and the stability rule.
+    const Agreement wrap = compareWithCpu("inversevis-wrap");
+    EXPECT_GE(wrap.regionAgreement, 0.97);
+    EXPECT_GT(wrap.bothIndirect, std::size_t(5000));
+    EXPECT_LT(wrap.indirectMeanDiff, 1.0);
+    EXPECT_LT(wrap.directMeanDiff, 0.5);
 #endif
 }
 

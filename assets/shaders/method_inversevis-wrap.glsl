@@ -1,0 +1,78 @@
+// inversevis-wrap: curved rays from the view ray's closest approach, in rings as wide as each part
+// is thick, launched faster and steeper outward across the ring (render::WrapInverseVisMethod).
+uniform float uWrapSpeed;
+uniform float uWrapTilt;
+uniform float uRingScale;
+uniform float uStableShift;
+layout(std430, binding = 3) readonly buffer LocalRadii { float localRadius[]; };  // render::vertexLocalRadii
+
+// render::findClosestApproach: the point of the view ray closest to the surface, within the hull.
+bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float distance)
+{
+    float tEnter, tExit;
+    seed = origin;
+    distance = uHullOffset;
+    if (!boxInterval(origin, direction, tEnter, tExit)) return false;
+    float tolerance = 0.25 * uVoxel;
+    float best = uHullOffset, tBest = tEnter;
+    for (int i = 0; i < uMaxHullSteps && tEnter < tExit; ++i) {
+        float phi = phiAt(origin + tEnter * direction);
+        if (phi < best) {
+            best = phi;
+            tBest = tEnter;
+        }
+        tEnter += max(phi - best, tolerance);
+    }
+    if (!(best < uHullOffset)) return false;
+    float lo = tBest - 2.0 * tolerance, hi = tBest + 2.0 * tolerance;
+    const float ratio = 0.6180340;
+    for (int k = 0; k < 64 && hi - lo > 1e-5; ++k) {
+        float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+        if (phiAt(origin + a * direction) < phiAt(origin + b * direction)) hi = b;
+        else lo = a;
+    }
+    seed = origin + 0.5 * (lo + hi) * direction;
+    distance = phiAt(seed);
+    return distance < uHullOffset;
+}
+
+// The local radius at the surface point closest to @a p (phi and its gradient lead there), or -1.
+float localRadiusNear(vec3 p)
+{
+    vec3 gradient;
+    float phi = phiAndGradient(p, gradient);
+    float len = length(gradient);
+    vec3 q = len > 0.0 ? p - phi * gradient / len : p;
+    int triangle;
+    vec3 barycentric;
+    if (!closestStoredPoint(q, triangle, barycentric)) return -1.0;
+    uvec3 v = triangleVertices(triangle);
+    return barycentric.x * localRadius[v.x] + barycentric.y * localRadius[v.y] + barycentric.z * localRadius[v.z];
+}
+
+// The indirect ray of @a pixel: CurvedRayMap::map with WrapInverseVisMethod::aim.
+bool indirectRay(vec2 pixel, out vec3 colour)
+{
+    colour = vec3(0.0);
+    vec3 origin, direction, seed;
+    float distance;
+    cameraRay(pixel, origin, direction);
+    if (!closestApproach(origin, direction, seed, distance)) return false;
+    float radius = localRadiusNear(seed);
+    if (radius < 0.0) return false;
+    float ring = distance / min(uRingScale * radius, uHullOffset);
+    if (!(ring < 1.0)) return false;
+    vec3 gradient;
+    phiAndGradient(seed, gradient);
+    float len = length(gradient);
+    vec3 outward = len > 0.0 ? gradient / len : vec3(0.0);
+    vec3 launch = normalize(normalize(initialVelocity(gradient, direction, 1.0)) + uWrapTilt * ring * outward);
+    float alpha = uWrapSpeed * ring * (2.0 - ring);
+    const float probe = 0.01;  // WrapInverseVisMethod's kSpeedProbe
+    vec3 slower = seed, faster = seed, here = seed;
+    vec3 vSlower = (alpha - probe) * launch, vFaster = (alpha + probe) * launch, v = alpha * launch;
+    if (!integrateCurvedRay(here, v) || !integrateCurvedRay(slower, vSlower) || !integrateCurvedRay(faster, vFaster))
+        return false;
+    if (length(slower + faster - 2.0 * here) > uStableShift) return false;
+    return shadeLanding(here, v, colour);
+}
