@@ -9,15 +9,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <limits>
 #include <optional>
 #include <system_error>
 
 namespace ivis::core::detail {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::size_t skipDigits(std::string_view text, std::size_t i)
 {
@@ -91,16 +88,6 @@ void checkCoordinate(const std::string& path, std::string_view token, const std:
 void failInput(const std::string& path, const std::string& problem)
 {
     throw InputError(path + ": " + problem);
-}
-
-MeshFormat meshFormat(const std::string& path)
-{
-    const std::string ext = lowercase(fs::path(path).extension().string());
-    if (ext == ".obj") return MeshFormat::Obj;
-    if (ext == ".off") return MeshFormat::Off;
-    if (ext == ".ply") return MeshFormat::Ply;
-    if (ext == ".stl") return MeshFormat::Stl;
-    failInput(path, "unknown mesh format '" + ext + "' (expected .obj, .off, .ply, .stl)");
 }
 
 const char* formatName(MeshFormat format)

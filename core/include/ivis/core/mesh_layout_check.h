@@ -13,7 +13,7 @@
 
 namespace ivis::core::detail {
 
-/// Mesh file formats readMesh understands.
+/// Mesh file formats OpenMesh reads for readMesh.
 enum class MeshFormat { Obj, Off, Ply, Stl };
 
 /// Facts about a checked file that its OpenMesh import needs.
@@ -24,9 +24,6 @@ struct MeshLayout {
 
 /// Throws the one-line InputError "<path>: <problem>".
 [[noreturn]] void failInput(const std::string& path, const std::string& problem);
-
-/// The format chosen by the extension of @a path (case-insensitive); throws InputError for others.
-MeshFormat meshFormat(const std::string& path);
 
 /// Lower-case name of @a format: "obj", "off", "ply" or "stl".
 const char* formatName(MeshFormat format);
