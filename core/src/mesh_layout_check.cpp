@@ -87,7 +87,18 @@ void checkCoordinate(const std::string& path, std::string_view token, const std:
 
 void failInput(const std::string& path, const std::string& problem)
 {
-    throw InputError(path + ": " + problem);
+    // Bytes of the file quoted in the problem stay on one printable line.
+    std::string line = path + ": ";
+    for (const char c : problem) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte != 0x7f) {
+            line += c;
+        } else {
+            static const char* const kHex = "0123456789abcdef";
+            line += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+        }
+    }
+    throw InputError(line);
 }
 
 const char* formatName(MeshFormat format)

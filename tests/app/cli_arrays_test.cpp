@@ -2,6 +2,7 @@
 // series; every command takes --scalar, --scalar-file and --cell-to-point; a cell array renders
 // flat per triangle; a file with arrays and no choice shows its first point array and says so.
 #include "cli_fixture.h"
+#include "vtk_files.h"
 
 #include <ivis/core/image_io.h>
 #include <ivis/core/mesh_reader.h>
@@ -131,6 +132,55 @@ TEST_F(Cli, EveryCommandTakesTheArrayOptions)
                    {vtu + ": array 'v' has 3 components; '3' is not one of magnitude, 0..2"});
     EXPECT_EQ(runCli("optimize " + quoted(vtu) + " --scalar v:1" + common).status, 0);
     EXPECT_EQ(runCli("optimize " + quoted(vtu) + " --scalar c --energy scalar" + common).status, 0);
+}
+
+/// A unit square of two triangles as VTK XML PolyData.
+test::VtkDataSet square()
+{
+    test::VtkDataSet d;
+    d.points = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    d.polys = {{0, 1, 2, 0, 2, 3}, {3, 6}, {}};
+    d.pointData = {{"p", "Float64", 1, std::vector<double>(4, 1.0)}};
+    return d;
+}
+
+TEST_F(Cli, BadVtkFilesAreRejectedWithOneLineAndNothingWritten)
+{
+    std::string base64 = test::vtpText(square(), {});
+    base64.erase(base64.find("</DataArray>", base64.find("Name=\"Points\"")) - 9, 8);
+    const std::string truncated = input("truncated.vtp");
+    test::writeFile(truncated, base64);
+    expectMeshRejected(truncated, {truncated + ": Points: the base64 text ends early"});
+    expectBadInput(runCli("info " + quoted(truncated)), {truncated + ": Points: the base64 text ends early"});
+
+    test::VtkXmlLayout zlib;
+    zlib.format = test::VtkXmlLayout::AppendedRaw;
+    zlib.zlib = true;
+    std::string packed = test::vtpText(square(), zlib);
+    const std::size_t data = packed.find('_', packed.find("<AppendedData")) + 1;
+    for (std::size_t i = 16; i < 20; ++i) packed[data + i] = char(~packed[data + i]);  // "p": its zlib stream
+    const std::string corrupt = input("corrupt.vtp");
+    test::writeFile(corrupt, packed);
+    expectMeshRejected(corrupt, {corrupt + ": PointData array 'p': zlib block 0 of 1 is corrupt"});
+
+    test::VtkDataSet quadratic = square();
+    quadratic.cells = {{0, 1, 2, 3, 0, 1}, {6}, {22}};
+    const std::string vtu = input("quadratic.vtu");
+    test::writeFile(vtu, test::vtuText(quadratic, {}));
+    expectMeshRejected(vtu, {vtu + ": cell 0 has type VTK_QUADRATIC_TRIANGLE (22), which is not read"});
+
+    const std::string vtk = input("index.vtk");
+    test::writeFile(vtk,
+                    "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+                    "POLYGONS 1 4\n3 0 1 3\n");
+    expectMeshRejected(vtk, {vtk + ": cell 0 references point 3, but the file has 3 points"});
+
+    const std::string pvd = input("series.pvd");
+    test::writeFile(pvd,
+                    "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"1\" file=\"gone.vtp\"/>"
+                    "</Collection></VTKFile>");
+    expectMeshRejected(pvd, {pvd + ": DataSet 0 names 'gone.vtp', which does not exist"});
+    expectBadInput(runCli("info " + quoted(pvd)), {pvd + ": DataSet 0 names 'gone.vtp', which does not exist"});
 }
 
 }  // namespace

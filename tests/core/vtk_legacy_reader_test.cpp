@@ -1,5 +1,6 @@
 // VTK legacy .vtk files through readMesh: ASCII and big-endian binary, the classic cell lists and
 // the OFFSETS/CONNECTIVITY lists of version 5, POLYDATA and UNSTRUCTURED_GRID, attribute arrays.
+#include <ivis/core/errors.h>
 #include <ivis/core/mesh_reader.h>
 
 #include "test_support.h"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -210,6 +212,139 @@ TEST(VtkLegacyReader, UnstructuredTetrahedraShowTheirBoundary)
             EXPECT_NE(corners, (std::set<std::uint32_t>{1, 2, 3}));
         }
     }
+}
+
+// ----------------------------------------------------------------------------------------------
+// Bad input: one line "<path>: <problem>", never a crash
+// ----------------------------------------------------------------------------------------------
+
+/// The problem readMesh reports for a .vtk file holding @a text, or a marker.
+std::string readError(const TempDir& dir, const std::string& text)
+{
+    const std::string path = dir.file("bad.vtk");
+    writeFile(path, text);
+    try {
+        readMesh(path);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        return message.substr(path.size() + 2);
+    } catch (const std::exception& e) {
+        return std::string("<not an InputError: ") + e.what() + ">";
+    }
+    return "<no error>";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to)
+{
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+TEST(VtkLegacyReader, HeadersDatasetsAndKeywords)
+{
+    TempDir dir;
+    const std::string cube = classicCube(false);
+    EXPECT_EQ(readError(dir, "hello\n"), "not a VTK legacy file (no '# vtk DataFile Version' line)");
+    EXPECT_EQ(readError(dir, replaced(cube, "ASCII", "TEXT")), "the third line is not ASCII or BINARY");
+    EXPECT_EQ(readError(dir, replaced(cube, "DATASET POLYDATA", "DATASET STRUCTURED_POINTS")),
+              "DATASET STRUCTURED_POINTS is not read (POLYDATA and UNSTRUCTURED_GRID are)");
+    EXPECT_EQ(readError(dir, replaced(cube, "VECTORS velocity float", "VECTORS velocity string")),
+              "VECTORS: data type 'string' is not a numeric type");
+    EXPECT_EQ(readError(dir, cube + "SPLINES 3\n"), "'SPLINES' is not a section of a polydata file");
+    // Bytes quoted from the file stay printable, on one line.
+    EXPECT_EQ(readError(dir, cube + std::string("SP\0L\x1bINES 3\n", 11)),
+              "'SP\\x00L\\x1bINES' is not a section of a polydata file");
+    EXPECT_EQ(readError(dir, replaced(cube, "POINTS 8 float", "POINTS eight float")), "POINTS: 'eight' is not a count");
+}
+
+TEST(VtkLegacyReader, TruncatedData)
+{
+    TempDir dir;
+    const std::string ascii = classicCube(false);
+    const std::size_t points = ascii.find("POINTS 8 float\n") + 15;
+    std::size_t cut = points;
+    for (int token = 0; token < 22; ++token) cut = ascii.find(' ', cut) + 1;  // 22 of the 24 coordinates
+    EXPECT_EQ(readError(dir, ascii.substr(0, cut)), "POINTS: the file ends after 22 of its 24 values");
+    const std::string binary = classicCube(true);
+    EXPECT_EQ(readError(dir, binary.substr(0, binary.find("POINTS 8 float\n") + 15 + 22 * 4)),
+              "POINTS: the file ends within its 24 binary values");
+    EXPECT_EQ(readError(dir, binary.substr(0, binary.find("LINES 1 3\n") + 10 + 5)),
+              "LINES: the file ends within its 3 binary values");
+}
+
+TEST(VtkLegacyReader, CountsAndIndicesThatDisagreeWithTheData)
+{
+    TempDir dir;
+    for (const bool binary : {false, true}) {
+        SCOPED_TRACE(binary);
+        const std::string cube = classicCube(binary);
+        EXPECT_EQ(readError(dir, replaced(cube, "POINT_DATA 8", "POINT_DATA 9")),
+                  "POINT_DATA 9 disagrees with the file's 8 points");
+        EXPECT_EQ(readError(dir, replaced(cube, "CELL_DATA 8", "CELL_DATA 6")),
+                  "CELL_DATA 6 disagrees with the file's 8 cells");
+        EXPECT_EQ(readError(dir, replaced(cube, "cell_id 1 8 int", "cell_id 1 7 int")),
+                  "FIELD array cell_id has 7 tuples, but CELL_DATA says 8");
+        const std::string offsets = offsetsCube(binary);
+        // Four values more than the header says: they are not a section.
+        const std::string message = readError(dir, replaced(offsets, "POLYGONS 7 24", "POLYGONS 7 20"));
+        EXPECT_NE(message.find("is not a section of a polydata file"), std::string::npos) << message;
+    }
+    const std::string cube = classicCube(false);
+    EXPECT_EQ(readError(dir, replaced(cube, "POLYGONS 6 30\n4 0 3 2 1", "POLYGONS 6 30\n4 0 3 2 8")),
+              "cell 2 references point 8, but the file has 8 points");
+    EXPECT_EQ(readError(dir, replaced(cube, "POLYGONS 6 30\n4 0 3 2 1", "POLYGONS 6 30\n99 0 3 2 1")),
+              "POLYGONS: cell 0 has 99 points, more than the list holds");
+    EXPECT_EQ(readError(dir, replaced(cube, "POLYGONS 6 30\n4 0 3 2 1", "POLYGONS 6 30\n9 0 3 2 1")),
+              "POLYGONS: the list of 30 values ends within cell 5");
+    EXPECT_EQ(readError(dir, replaced(cube, "POLYGONS 6 30", "POLYGONS 5 30")),
+              "POLYGONS: 5 cells use 25 values, but the header says 30");
+    EXPECT_EQ(readError(dir, replaced(offsetsCube(false), "0 4 8 12 16 20 24", "0 4 8 12 16 20 28")),
+              "POLYGONS: the offsets end at 28 but the connectivity has 24 values");
+    EXPECT_EQ(readError(dir, replaced(offsetsCube(false), "0 4 8 12 16 20 24", "0 4 8 6 16 20 24")),
+              "POLYGONS: the offsets decrease at cell 4");
+    EXPECT_EQ(readError(dir, replaced(offsetsCube(false), "0 4 8 12 16 20 24", "1 4 8 12 16 20 24")),
+              "POLYGONS: the offsets do not start at 0");
+}
+
+TEST(VtkLegacyReader, UnsupportedAndMalformedCells)
+{
+    TempDir dir;
+    const auto grid = [](const std::string& types) {
+        return LegacyFile(false, "UNSTRUCTURED_GRID")
+            .section("POINTS 5 float", {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, "float")
+            .section("CELLS 2 10", {4, 0, 1, 2, 3, 4, 1, 3, 2, 4}, "int")
+            .line(types)
+            .str();
+    };
+    EXPECT_EQ(readError(dir, grid("CELL_TYPES 2\n10 24")),
+              "cell 1 has type VTK_QUADRATIC_TETRA (24), which is not read (surface cells, triangle strips and "
+              "linear volume cells are)");
+    EXPECT_EQ(readError(dir, grid("CELL_TYPES 2\n10 16")).substr(0, 42), "cell 1 has type VTK_HEXAGONAL_PRISM (16), ");
+    EXPECT_EQ(readError(dir, grid("CELL_TYPES 2\n10 13")), "cell 1 (VTK_WEDGE (13)) has 4 points, expected 6");
+    EXPECT_EQ(readError(dir, grid("CELL_TYPES 2\n10 -1")), "cell 1 has the cell type -1, which VTK does not define");
+    EXPECT_EQ(readError(dir, grid("CELL_TYPES 3\n10 10 10")), "CELL_TYPES lists 3 cells, but CELLS has 2");
+    EXPECT_EQ(readError(dir, grid("POINT_DATA 5")), "CELLS are not followed by CELL_TYPES");
+}
+
+TEST(VtkLegacyReader, DamagedBytesNeverCrash)
+{
+    TempDir dir;
+    std::mt19937 rng(77);
+    std::size_t errors = 0;
+    for (const std::string& text : {classicCube(false), classicCube(true), offsetsCube(false), offsetsCube(true)}) {
+        for (int trial = 0; trial < 60; ++trial) {
+            std::string damaged = text;
+            for (int k = 0; k < 3; ++k) damaged[rng() % damaged.size()] = char(rng());
+            const std::string message = readError(dir, damaged);
+            EXPECT_EQ(message.find("<not an InputError"), std::string::npos) << message;
+            errors += message != "<no error>";
+        }
+    }
+    EXPECT_GT(errors, 60u);
 }
 
 }  // namespace

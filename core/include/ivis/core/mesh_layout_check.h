@@ -22,7 +22,8 @@ struct MeshLayout {
     bool binaryStl = false;       ///< STL whose size matches its binary triangle count
 };
 
-/// Throws the one-line InputError "<path>: <problem>".
+/// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from
+/// the file) are written as \xNN.
 [[noreturn]] void failInput(const std::string& path, const std::string& problem);
 
 /// Lower-case name of @a format: "obj", "off", "ply" or "stl".
