@@ -234,10 +234,11 @@ private:
         mTuples = n;
     }
 
-    void addArray(std::string name, ValueType type, int components, const std::string& what)
+    void addArray(std::string name, ValueType type, std::size_t components, const std::string& what)
     {
         if (!mAssociation) fail(what + " comes before POINT_DATA or CELL_DATA");
-        DataArray array{decodeName(name), *mAssociation, type, components, {}};
+        if (components < 1 || components > 1024) fail(what + ": " + std::to_string(components) + " components");
+        DataArray array{decodeName(name), *mAssociation, type, int(components), {}};
         array.values = mIn.values(mTuples * std::size_t(components), type, what);
         mMesh.arrays.push_back(std::move(array));
     }
@@ -247,17 +248,17 @@ private:
         if (w.size() < 2) fail(w[0] + ": the line ends before the array's name");
         const std::string what = w[0] + " " + w[1];
         if (key == "color_scalars") {
-            addArray(w[1], mIsBinary ? ValueType::UInt8 : ValueType::Float32, int(count(w, 2)), what);
+            addArray(w[1], mIsBinary ? ValueType::UInt8 : ValueType::Float32, count(w, 2), what);
         } else if (key == "texture_coordinates") {
-            addArray(w[1], type(w, 3), int(count(w, 2)), what);
+            addArray(w[1], type(w, 3), count(w, 2), what);
         } else if (key == "scalars") {
             const std::size_t components = w.size() > 3 ? count(w, 3) : 1;
             if (components < 1 || components > 4)
                 fail(what + ": " + std::to_string(components) + " components (1 to 4 allowed)");
             if (mIn.peekWord() == "lookup_table") mIn.words();
-            addArray(w[1], type(w, 2), int(components), what);
+            addArray(w[1], type(w, 2), components, what);
         } else {
-            const int components = key == "tensors"                               ? 9
+            const std::size_t components = key == "tensors"                               ? 9
                                    : key == "tensors6"                            ? 6
                                    : key == "global_ids" || key == "pedigree_ids" ? 1
                                                                                   : 3;
@@ -288,7 +289,7 @@ private:
                      (*mAssociation == Association::Point ? "POINT_DATA" : "CELL_DATA") + " says " +
                      std::to_string(mTuples));
             }
-            addArray(header[0], t, int(components), what);
+            addArray(header[0], t, components, what);
         }
     }
 

@@ -84,8 +84,8 @@ public:
         std::uint64_t compressedTotal = 0;
         for (std::uint64_t& c : compressed) {
             c = header(blob);
+            if (c > blob.available() - compressedTotal) fail("the compressed blocks run past the end of the data");
             compressedTotal += c;
-            if (compressedTotal > blob.available()) fail("the compressed blocks run past the end of the data");
         }
         std::string packed;
         if (!blob.read(std::size_t(compressedTotal), packed)) fail(blob.problem());

@@ -112,25 +112,32 @@ private:
                       "the piece has " + std::to_string(count) + " cells in " + block + " but no <" + block + ">");
         const std::string where = std::string(block) + " ";
         VtkCellArray cells;
-        const DataArray offsets = readVtkXmlDataArray(mPath, where + "offsets", namedArray(mPath, node, "offsets"),
-                                                      mEncoding, count, std::string("NumberOf") + block);
-        const std::vector<std::int64_t> ends = toIndices(mPath, where + "offsets", offsets.values);
+        const std::vector<std::int64_t> ends = toIndices(
+            mPath, where + "offsets", cellValues(node, where + "offsets", count, std::string("NumberOf") + block));
         cells.offsets.insert(cells.offsets.end(), ends.begin(), ends.end());
         if (cells.offsets.back() < 0) failInput(mPath, where + "offsets: the last offset is negative");
         const std::size_t corners = std::size_t(cells.offsets.back());
-        cells.connectivity =
-            toIndices(mPath, where + "connectivity",
-                      readVtkXmlDataArray(mPath, where + "connectivity", namedArray(mPath, node, "connectivity"),
-                                          mEncoding, corners, "the last offset")
-                          .values);
+        cells.connectivity = toIndices(mPath, where + "connectivity",
+                                       cellValues(node, where + "connectivity", corners, "the last offset"));
         if (uniformType != nullptr) {
             cells.types.assign(count, *uniformType);
             return cells;
         }
-        const DataArray types = readVtkXmlDataArray(mPath, where + "types", namedArray(mPath, node, "types"), mEncoding,
-                                                    count, "NumberOfCells");
-        cells.types = toCellTypes(mPath, types.values);
+        cells.types = toCellTypes(mPath, cellValues(node, where + "types", count, "NumberOfCells"));
         return cells;
+    }
+
+    /// The values of the one-component DataArray of @a block named by the last word of @a what.
+    std::vector<double> cellValues(const pugi::xml_node& block, const std::string& what, std::size_t expected,
+                                   const std::string& declaredBy)
+    {
+        const std::string name = what.substr(what.rfind(' ') + 1);
+        const DataArray array =
+            readVtkXmlDataArray(mPath, what, namedArray(mPath, block, name.c_str()), mEncoding, expected, declaredBy);
+        if (array.components != 1) {
+            failInput(mPath, what + ": " + std::to_string(array.components) + " components, not 1");
+        }
+        return array.values;
     }
 
     void readArrays(const char* section, Association association, std::size_t tuples, const std::string& declaredBy)

@@ -259,6 +259,8 @@ TEST(VtkLegacyReader, HeadersDatasetsAndKeywords)
     EXPECT_EQ(readError(dir, cube + std::string("SP\0L\x1bINES 3\n", 11)),
               "'SP\\x00L\\x1bINES' is not a section of a polydata file");
     EXPECT_EQ(readError(dir, replaced(cube, "POINTS 8 float", "POINTS eight float")), "POINTS: 'eight' is not a count");
+    EXPECT_EQ(readError(dir, replaced(cube, "VECTORS velocity float", "COLOR_SCALARS c 4000000000")),
+              "COLOR_SCALARS c: 4000000000 components");
 }
 
 TEST(VtkLegacyReader, TruncatedData)

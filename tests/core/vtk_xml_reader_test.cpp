@@ -325,6 +325,13 @@ TEST(VtkXmlReader, CorruptZlibBlockAndCompressionHeaders)
     std::string tooLong = text;
     tooLong[data + 12 + 2] = '\x7f';  // the compressed size of block 0 grows by 8 MB
     EXPECT_EQ(readError(dir, tooLong), "PointData array 'typed': the compressed blocks run past the end of the data");
+    // UInt64 sizes: a second block's size that would wrap the sum around stays past the data.
+    layout.header64 = true;
+    layout.blockSize = 40;  // "typed" (64 bytes) in two blocks: sizes at bytes 24..31 and 32..39
+    std::string wrapping = test::vtpText(cube(), layout);
+    const std::size_t start = wrapping.find('_', wrapping.find("<AppendedData")) + 1;
+    for (std::size_t i = 32; i < 40; ++i) wrapping[start + i] = '\xff';
+    EXPECT_EQ(readError(dir, wrapping), "PointData array 'typed': the compressed blocks run past the end of the data");
     std::string blocks = text;
     blocks[data + 3] = '\x7f';  // 2^31 blocks
     EXPECT_EQ(readError(dir, blocks), "PointData array 'typed': the compression header is longer than the data");
@@ -352,6 +359,11 @@ TEST(VtkXmlReader, CountsThatDisagreeWithTheData)
               "Polys: the offsets decrease at cell 4");
     EXPECT_EQ(readError(dir, replaced(text, "0 1 2 3 4 5 6 7 ", "0 1 2 3 4 5 6 ", "cell_id")),
               "CellData array 'cell_id': the data holds 7 tuples, but NumberOfVerts+Lines+Polys+Strips says 8");
+    // Found by vtk_xml_fuzzer: cell arrays of more than one component.
+    std::string pairs = replaced(text, "NumberOfPolys=\"6\"", "NumberOfPolys=\"3\"");
+    const std::size_t polysOffsets = pairs.find("Name=\"offsets\"", pairs.find("<Polys>"));
+    pairs.replace(pairs.find("NumberOfComponents=\"1\"", polysOffsets), 22, "NumberOfComponents=\"2\"");
+    EXPECT_EQ(readError(dir, pairs), "Polys offsets: 2 components, not 1");
     EXPECT_EQ(readError(dir, replaced(text, "0 3 2 1 ", "0 3 2 8 ")),
               "cell 2 references point 8, but the file has 8 points");
     EXPECT_EQ(readError(dir, replaced(text, "0 3 2 1 ", "0 3 2 -1 ")),
