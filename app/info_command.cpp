@@ -1,14 +1,85 @@
-// `inversevis info MESH`: what a mesh file carries.
+// `inversevis info MESH`: what a mesh file (or a time series) carries.
 #include "commands.h"
 
 #include <ivis/core/mesh_reader.h>
+#include <ivis/core/pvd_reader.h>
+#include <ivis/core/surface_source.h>
 
 #include <nlohmann/json.hpp>
 
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
 namespace ivis::app {
+namespace {
+
+/// The time steps of a .pvd, as JSON or text.
+void printTimeSeries(const std::string& path, bool json)
+{
+    const std::vector<core::TimeStep> steps = core::readPvd(path);
+    if (json) {
+        nlohmann::json list = nlohmann::json::array();
+        for (const core::TimeStep& s : steps) list.push_back({{"time", s.time}, {"file", s.path}});
+        std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}}.dump(2) << "\n";
+        return;
+    }
+    std::cout << path << " (pvd, " << steps.size() << " time steps)\n";
+    for (const core::TimeStep& s : steps) std::cout << "  t = " << s.time << "  " << s.path << "\n";
+}
+
+void printJson(const core::MeshInfo& info)
+{
+    nlohmann::json arrays = nlohmann::json::array();
+    for (const core::ArrayInfo& a : info.arrays)
+        arrays.push_back({{"name", a.name},
+                          {"association", core::associationName(a.association)},
+                          {"type", core::valueTypeName(a.type)},
+                          {"components", a.components},
+                          {"min", a.min},
+                          {"max", a.max},
+                          {"nan_count", a.nanCount}});
+    const nlohmann::json out = {{"path", info.path},
+                                {"format", info.format},
+                                {"vertices", info.vertices},
+                                {"cells", info.cells},
+                                {"triangles", info.triangles},
+                                {"degenerate_dropped", info.report.degenerateDropped},
+                                {"boundary_edges", info.boundaryEdges},
+                                {"open_mesh", info.boundaryEdges > 0},
+                                {"components", info.components},
+                                {"bbox_min", {info.bounds.lo.x, info.bounds.lo.y, info.bounds.lo.z}},
+                                {"bbox_max", {info.bounds.hi.x, info.bounds.hi.y, info.bounds.hi.z}},
+                                {"arrays", arrays},
+                                {"notes", info.report.notes}};
+    std::cout << out.dump(2) << "\n";
+}
+
+void printText(const core::MeshInfo& info)
+{
+    std::cout << info.path << " (" << info.format << ")\n"
+              << "  vertices        " << info.vertices << "\n"
+              << "  cells           " << info.cells << "\n"
+              << "  triangles       " << info.triangles;
+    if (info.report.degenerateDropped > 0) std::cout << " (" << info.report.degenerateDropped << " degenerate dropped)";
+    std::cout << "\n  boundary edges  " << info.boundaryEdges << (info.boundaryEdges > 0 ? " (open)" : " (closed)")
+              << "\n  components      " << info.components << "\n  bounding box    [" << info.bounds.lo.x << ", "
+              << info.bounds.lo.y << ", " << info.bounds.lo.z << "] .. [" << info.bounds.hi.x << ", "
+              << info.bounds.hi.y << ", " << info.bounds.hi.z << "]\n  arrays          ";
+    if (info.arrays.empty()) std::cout << "none";
+    std::cout << "\n";
+    for (const core::ArrayInfo& a : info.arrays) {
+        std::cout << "    " << std::left << std::setw(20) << a.name << "  " << std::setw(5)
+                  << core::associationName(a.association) << "  " << std::setw(7) << core::valueTypeName(a.type)
+                  << std::right << "  " << a.components << (a.components == 1 ? " component " : " components")
+                  << "  " << (a.components == 1 ? "" : "magnitude ") << "min " << a.min << "  max " << a.max;
+        if (a.nanCount > 0) std::cout << "  (" << a.nanCount << " NaN)";
+        std::cout << "\n";
+    }
+    for (const std::string& note : info.report.notes) std::cout << "  note: " << note << "\n";
+}
+
+}  // namespace
 
 Command addInfoCommand(CLI::App& app)
 {
@@ -17,46 +88,22 @@ Command addInfoCommand(CLI::App& app)
         bool json = false;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("info", "List what a mesh carries: counts, boundary, bounds, scalars");
-    command->add_option("mesh", options->path, "Mesh file (.obj .off .ply .stl)")->required();
+    CLI::App* command =
+        app.add_subcommand("info", "List what a mesh carries: counts, boundary, bounds, point and cell arrays");
+    command->add_option("mesh", options->path, "Mesh file (.obj .off .ply .stl .vtk .vtp .vtu) or time series (.pvd)")
+        ->required();
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {
-        const core::MeshInfo info = core::describeMesh(options->path);
-        if (options->json) {
-            nlohmann::json scalars = nlohmann::json::array();
-            for (const auto& s : info.scalars)
-                scalars.push_back({{"name", s.name}, {"min", s.min}, {"max", s.max}, {"nan_count", s.nanCount}});
-            const nlohmann::json out = {
-                {"path", info.path},
-                {"format", info.format},
-                {"vertices", info.vertices},
-                {"triangles", info.triangles},
-                {"degenerate_dropped", info.degenerateDropped},
-                {"boundary_edges", info.boundaryEdges},
-                {"open_mesh", info.boundaryEdges > 0},
-                {"components", info.components},
-                {"bbox_min", {info.bounds.lo.x, info.bounds.lo.y, info.bounds.lo.z}},
-                {"bbox_max", {info.bounds.hi.x, info.bounds.hi.y, info.bounds.hi.z}},
-                {"scalars", scalars}};
-            std::cout << out.dump(2) << "\n";
+        if (core::isTimeSeries(options->path)) {
+            printTimeSeries(options->path, options->json);
             return;
         }
-        std::cout << info.path << " (" << info.format << ")\n"
-                  << "  vertices        " << info.vertices << "\n"
-                  << "  triangles       " << info.triangles;
-        if (info.degenerateDropped > 0) std::cout << " (" << info.degenerateDropped << " degenerate dropped)";
-        std::cout << "\n  boundary edges  " << info.boundaryEdges << (info.boundaryEdges > 0 ? " (open)" : " (closed)")
-                  << "\n  components      " << info.components << "\n  bounding box    [" << info.bounds.lo.x
-                  << ", " << info.bounds.lo.y << ", " << info.bounds.lo.z << "] .. [" << info.bounds.hi.x << ", "
-                  << info.bounds.hi.y << ", " << info.bounds.hi.z << "]\n  scalars         ";
-        if (info.scalars.empty()) std::cout << "none";
-        std::cout << "\n";
-        for (const auto& s : info.scalars) {
-            std::cout << "    " << s.name << "  min " << s.min << "  max " << s.max;
-            if (s.nanCount > 0) std::cout << "  (" << s.nanCount << " NaN)";
-            std::cout << "\n";
-        }
+        const core::MeshInfo info = core::describeMesh(options->path);
+        if (options->json)
+            printJson(info);
+        else
+            printText(info);
     }};
 }
 

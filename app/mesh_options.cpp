@@ -8,15 +8,22 @@ namespace ivis::app {
 
 void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources)
 {
-    const std::string help = "Mesh file (.obj .off .ply .stl) or scene:sphere|torus|vessel-tree";
+    const std::string help = "Mesh file (.obj .off .ply .stl .vtk .vtp .vtu) or scene:sphere|torus|vessel-tree";
     if (sources)
         command.add_option("meshes", *sources, help + "; one or more")->required();
     else
         command.add_option("mesh", source, help)->required();
-    auto* scalar = command.add_option("--scalar", load.read.scalarName, "Per-vertex PLY property to show");
+    auto* scalar = command.add_option("--scalar", load.read.scalarName,
+                                      "Point or cell array to show: NAME (a vector by its magnitude), "
+                                      "NAME:magnitude or NAME:0, NAME:1, ... for one component");
     auto* scalarFile =
-        command.add_option("--scalar-file", load.read.scalarFile, "Text file with one scalar value per vertex")
+        command
+            .add_option("--scalar-file", load.read.scalarFile,
+                        "Text file with one value per vertex, in the file's vertex order (STL: the order in which "
+                        "each merged corner first appears)")
             ->excludes(scalar);
+    command.add_flag("--cell-to-point", load.read.cellToPoint,
+                     "Show a cell array averaged onto the vertices (area-weighted) instead of flat per triangle");
     command
         .add_option("--hotspots", load.hotSpots,
                     "Show N Gaussian hot spots instead of a scalar: the first two at the ends of the mesh's thinnest "

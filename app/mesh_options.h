@@ -19,7 +19,7 @@ struct MeshOptions {
     vdb::VolumeOptions volume;
     std::string distance = "auto";  ///< auto | signed | unsigned
 
-    /// @brief Registers MESH, --scalar, --scalar-file, --hotspots, --cap-holes and the volume's
+    /// @brief Registers MESH, --scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes and the volume's
     ///        options (--volume-res, --band, --reach, --distance).
     /// @param sources when given, the command takes one or more meshes into it instead of one MESH
     void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr);

@@ -12,8 +12,8 @@ int main(int argc, char** argv)
 {
     CLI::App app{"inversevis-bench: timings against same-run references"};
     app.require_subcommand(1);
-    const std::vector<ivis::bench::Benchmark> benchmarks = {ivis::bench::addSdfBenchmark(app),
-                                                             ivis::bench::addRenderBenchmark(app)};
+    const std::vector<ivis::bench::Benchmark> benchmarks = {
+        ivis::bench::addSdfBenchmark(app), ivis::bench::addRenderBenchmark(app), ivis::bench::addReadBenchmark(app)};
     try {
         app.parse(argc, argv);
         ivis::core::setLogLevel(ivis::core::LogLevel::Warning);

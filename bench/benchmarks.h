@@ -20,4 +20,7 @@ Benchmark addSdfBenchmark(CLI::App& app);
 /// @brief `inversevis-bench render MESH`: frame times and curved-ray steps/s vs a dense array.
 Benchmark addRenderBenchmark(CLI::App& app);
 
+/// @brief `inversevis-bench read`: a large compressed binary .vtp read vs the same mesh as binary PLY.
+Benchmark addReadBenchmark(CLI::App& app);
+
 }  // namespace ivis::bench

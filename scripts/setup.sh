@@ -8,21 +8,27 @@ IVIS_BUILD=${IVIS_BUILD:-$IVIS_ROOT/build}
 IVIS_PACKAGES=(
   build-essential cmake ccache pkg-config
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
-  libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev
+  libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev libpugixml-dev zlib1g-dev
   libglfw3-dev libepoxy-dev libimgui-dev xvfb libgl1-mesa-dri xauth
 )
 
+# scripts/fuzz.sh needs these too (clang and its libFuzzer and sanitizer runtimes).
+IVIS_FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+
+# The packages named in the arguments (default IVIS_PACKAGES) that are not installed.
 ivis_missing_packages() {
-  local missing=()
-  for p in "${IVIS_PACKAGES[@]}"; do
+  local missing=() wanted=("$@")
+  [ ${#wanted[@]} -eq 0 ] && wanted=("${IVIS_PACKAGES[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   echo "${missing[@]:-}"
 }
 
+# Installs the packages named in the arguments (default IVIS_PACKAGES) that are missing.
 ivis_install_packages() {
   local missing
-  missing=$(ivis_missing_packages)
+  missing=$(ivis_missing_packages "$@")
   [ -z "$missing" ] && return 0
   if [ "$(id -u)" -ne 0 ]; then
     echo "inversevis: missing Debian packages: $missing" >&2

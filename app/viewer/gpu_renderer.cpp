@@ -22,6 +22,7 @@ GpuRenderer::GpuRenderer()
       mPositions(newName(glGenBuffers)),
       mNormals(newName(glGenBuffers)),
       mIndices(newName(glGenBuffers)),
+      mTriangleScalars(newName(glGenBuffers)),
       mLocalRadii(newName(glGenBuffers)),
       mColormap(newName(glGenTextures))
 {
@@ -33,11 +34,17 @@ GpuRenderer::GpuRenderer()
 void GpuRenderer::setMesh(const core::SurfaceField& field, const std::vector<glm::vec3>& normals)
 {
     const core::TriangleMesh& mesh = field.mesh;
+    const bool pointScalar = field.hasScalar() && field.valuesOn == core::Association::Point;
     std::vector<glm::vec4> positions(mesh.positions.size()), normalsNan(mesh.positions.size());
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const float value = field.hasScalar() ? field.values[i] : 0.0f;
+        const float value = pointScalar ? field.values[i] : 0.0f;
         positions[i] = glm::vec4(mesh.positions[i], std::isnan(value) ? 0.0f : value);
         normalsNan[i] = glm::vec4(normals[i], std::isnan(value) ? 1.0f : 0.0f);
+    }
+    std::vector<glm::vec2> cellScalars;
+    if (field.hasScalar() && !pointScalar) {
+        for (const float value : field.values)
+            cellScalars.emplace_back(std::isnan(value) ? 0.0f : value, std::isnan(value) ? 1.0f : 0.0f);
     }
     std::vector<GLuint> indices;
     indices.reserve(mesh.triangles.size() * 3);
@@ -49,6 +56,7 @@ void GpuRenderer::setMesh(const core::SurfaceField& field, const std::vector<glm
     upload(mPositions, positions.data(), positions.size() * sizeof(glm::vec4));
     upload(mNormals, normalsNan.data(), normalsNan.size() * sizeof(glm::vec4));
     upload(mIndices, indices.data(), indices.size() * sizeof(GLuint));
+    upload(mTriangleScalars, cellScalars.data(), cellScalars.size() * sizeof(glm::vec2));
 
     glBindVertexArray(mMeshVao.id());
     glBindBuffer(GL_ARRAY_BUFFER, mPositions.id());
@@ -120,7 +128,8 @@ void GpuRenderer::render(const GpuFrame& frame)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mPositions.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mNormals.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mIndices.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mLocalRadii.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mTriangleScalars.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, mLocalRadii.id());
 
     // Direct part: every face, or only those turned away from the camera.
     if (method.directFaces() == core::FaceFilter::BackOnly) {

@@ -30,7 +30,8 @@ public:
     /// @throw GlError
     GpuRenderer();
 
-    /// @brief Uploads positions, per-vertex scalar (NaN flagged), @a normals and triangles.
+    /// @brief Uploads positions, @a normals, triangles and the shown scalar (NaN flagged): per vertex
+    ///        beside the positions, or per triangle for a cell scalar.
     /// @param field normalised surface; kept by reference (ring layout, hull box) and must outlive this
     void setMesh(const core::SurfaceField& field, const std::vector<glm::vec3>& normals);
     /// @brief Uploads the far, band and triangle boxes. @throw GlError (e.g. GL_OUT_OF_MEMORY)
@@ -64,6 +65,7 @@ private:
     GlBuffer mPositions;  ///< vec4(position, scalar)
     GlBuffer mNormals;    ///< vec4(normal, NaN flag)
     GlBuffer mIndices;    ///< 3 uint per triangle
+    GlBuffer mTriangleScalars;  ///< vec2(scalar, NaN flag) per data triangle, for a cell scalar
     GlBuffer mLocalRadii; ///< 1 float per vertex (DenseSlices::localRadii)
     VolumeTextures mVolume;
     GlTexture mColormap;

@@ -115,6 +115,7 @@ void setSharedUniforms(GlProgram& program, const GpuFrame& frame, const core::Ca
 void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field)
 {
     scene.set("uHasScalar", field.hasScalar());
+    scene.set("uCellScalar", field.valuesOn == core::Association::Cell);
     scene.set("uDataTriangles", int(std::min<std::size_t>(field.mesh.dataTriangleCount, 0x7fffffff)));
 }
 

@@ -2,6 +2,7 @@
 layout(std430, binding = 0) readonly buffer VertexPositions { vec4 vertexPosition[]; };  // xyz, w = scalar (NaN -> 0)
 layout(std430, binding = 1) readonly buffer VertexNormals { vec4 vertexNormal[]; };      // xyz, w = 1 where NaN
 layout(std430, binding = 2) readonly buffer TriangleIndices { uint triangleIndex[]; };
+layout(std430, binding = 3) readonly buffer TriangleScalars { vec2 triangleScalar[]; };  // cell scalar: value, 1 where NaN
 
 uvec3 triangleVertices(int triangle)
 {

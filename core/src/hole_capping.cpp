@@ -19,7 +19,9 @@ std::size_t capHoles(SurfaceField& field)
 {
     TriangleMesh& mesh = field.mesh;
     IVIS_CHECK(mesh.dataTriangleCount <= mesh.triangles.size());
-    IVIS_CHECK(!field.hasScalar() || field.values.size() == mesh.positions.size());
+    const bool pointScalar = field.hasScalar() && field.valuesOn == Association::Point;
+    IVIS_CHECK(!field.hasScalar() ||
+               field.values.size() == (pointScalar ? mesh.positions.size() : mesh.dataTriangleCount));
 
     const std::vector<std::vector<std::uint32_t>> loops = boundaryLoops(mesh);
 
@@ -40,7 +42,7 @@ std::size_t capHoles(SurfaceField& field)
 
         const auto center = static_cast<std::uint32_t>(mesh.positions.size());
         mesh.positions.emplace_back(centroid);
-        if (field.hasScalar()) field.values.push_back(std::numeric_limits<float>::quiet_NaN());
+        if (pointScalar) field.values.push_back(std::numeric_limits<float>::quiet_NaN());
 
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const std::uint32_t a = loop[i];

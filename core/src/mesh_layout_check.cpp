@@ -9,15 +9,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <limits>
 #include <optional>
 #include <system_error>
 
 namespace ivis::core::detail {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::size_t skipDigits(std::string_view text, std::size_t i)
 {
@@ -90,17 +87,18 @@ void checkCoordinate(const std::string& path, std::string_view token, const std:
 
 void failInput(const std::string& path, const std::string& problem)
 {
-    throw InputError(path + ": " + problem);
-}
-
-MeshFormat meshFormat(const std::string& path)
-{
-    const std::string ext = lowercase(fs::path(path).extension().string());
-    if (ext == ".obj") return MeshFormat::Obj;
-    if (ext == ".off") return MeshFormat::Off;
-    if (ext == ".ply") return MeshFormat::Ply;
-    if (ext == ".stl") return MeshFormat::Stl;
-    failInput(path, "unknown mesh format '" + ext + "' (expected .obj, .off, .ply, .stl)");
+    // Bytes of the file quoted in the problem stay on one printable line.
+    std::string line = path + ": ";
+    for (const char c : problem) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte != 0x7f) {
+            line += c;
+        } else {
+            static const char* const kHex = "0123456789abcdef";
+            line += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+        }
+    }
+    throw InputError(line);
 }
 
 const char* formatName(MeshFormat format)

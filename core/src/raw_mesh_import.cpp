@@ -51,24 +51,17 @@ public:
     {
     }
 
-    /// What was read, with every per-vertex float/double property the kernel collected.
+    /// What was read, with every numeric vertex property as a point array and every numeric face
+    /// property as a cell array, in the order the file declares them.
     RawMesh take()
     {
         for (auto it = mProperties.vprops_begin(); it != mProperties.vprops_end(); ++it) {
-            if (*it == nullptr) continue;
-            NamedValues scalar{(*it)->name(), {}};
-            OpenMesh::VPropHandleT<float> asFloat;
-            OpenMesh::VPropHandleT<double> asDouble;
-            if (mProperties.get_property_handle(asFloat, scalar.name)) {
-                for (const float v : mProperties.property(asFloat).data_vector()) scalar.values.push_back(v);
-            } else if (mProperties.get_property_handle(asDouble, scalar.name)) {
-                for (const double v : mProperties.property(asDouble).data_vector())
-                    scalar.values.push_back(float(v));
-            } else {
-                continue;
-            }
-            mMesh.scalars.push_back(std::move(scalar));
+            if (*it != nullptr) addArray<OpenMesh::VPropHandleT>((*it)->name(), Association::Point);
         }
+        for (auto it = mProperties.fprops_begin(); it != mProperties.fprops_end(); ++it) {
+            if (*it != nullptr) addArray<OpenMesh::FPropHandleT>((*it)->name(), Association::Cell);
+        }
+        mMesh.cellCount = mMesh.faceCount();
         return std::move(mMesh);
     }
 
@@ -140,6 +133,33 @@ public:
     void add_texture_information(int, std::string) override {}
 
 private:
+    /// Adds property @a name as an array when its C++ type (as OpenMesh's PLY reader declares it
+    /// for the file's type) is numeric; list properties and others are left out.
+    template <template <typename> class Handle>
+    void addArray(const std::string& name, Association association)
+    {
+        DataArray array{name, association, ValueType::Float32, 1, {}};
+        const bool found = collect<Handle, float>(array, ValueType::Float32) ||
+                           collect<Handle, double>(array, ValueType::Float64) ||
+                           collect<Handle, signed char>(array, ValueType::Int8) ||
+                           collect<Handle, unsigned char>(array, ValueType::UInt8) ||
+                           collect<Handle, short>(array, ValueType::Int16) ||
+                           collect<Handle, unsigned short>(array, ValueType::UInt16) ||
+                           collect<Handle, int>(array, ValueType::Int32) ||
+                           collect<Handle, unsigned int>(array, ValueType::UInt32);
+        if (found) mMesh.arrays.push_back(std::move(array));
+    }
+    /// Copies the property named array.name when it holds values of type @a T.
+    template <template <typename> class Handle, typename T>
+    bool collect(DataArray& array, ValueType type)
+    {
+        Handle<T> handle;
+        if (!mProperties.get_property_handle(handle, array.name)) return false;
+        array.type = type;
+        for (const T v : mProperties.property(handle).data_vector()) array.values.push_back(double(v));
+        return true;
+    }
+
     void checkStream(const char* element, std::size_t index) const
     {
         if (!mStream.fail()) return;
@@ -191,14 +211,15 @@ std::string formatLabel(MeshFormat format)
 
 }  // namespace
 
-RawMesh importRawMesh(const std::string& path, MeshFormat format, bool binaryStl, std::string data)
+RawMesh readOpenMeshFile(const std::string& path, MeshFormat format, std::string data)
 {
+    const MeshLayout layout = checkMeshLayout(path, format, data);
     // OpenMesh parses exactly the bytes that were checked.
     std::istringstream stream(data);
     std::string().swap(data);
     RawImporter importer(stream, path, format == MeshFormat::Obj);
     omio::Options options = omio::Options::Custom;
-    if (binaryStl) options += omio::Options::Binary;
+    if (layout.binaryStl) options += omio::Options::Binary;
     bool ok = false;
     {
         std::lock_guard<std::mutex> lock(gOpenMeshMutex);
@@ -208,7 +229,10 @@ RawMesh importRawMesh(const std::string& path, MeshFormat format, bool binaryStl
              omio::IOManager().read(stream, formatName(format), importer, options);
     }
     if (!ok) failInput(path, "not a valid " + formatLabel(format) + " mesh");
-    return importer.take();
+    RawMesh raw = importer.take();
+    // Faces OpenMesh skipped itself (OBJ/STL faces with repeated corners) count as degenerate.
+    raw.skippedFaces = layout.facesInFile > raw.faceCount() ? layout.facesInFile - raw.faceCount() : 0;
+    return raw;
 }
 
 }  // namespace ivis::core::detail

@@ -26,6 +26,24 @@ void normalize(SurfaceField& field)
     total.scale *= step.scale;
 }
 
+float scalarAt(const SurfaceField& field, std::size_t triangle, const glm::vec3& barycentric)
+{
+    if (!field.hasScalar() || field.mesh.isCap(triangle)) return std::numeric_limits<float>::quiet_NaN();
+    const std::array<float, 3> v = cornerScalars(field, triangle);
+    if (field.valuesOn == Association::Cell) return v[0];
+    return barycentric.x * v[0] + barycentric.y * v[1] + barycentric.z * v[2];
+}
+
+std::array<float, 3> cornerScalars(const SurfaceField& field, std::size_t triangle)
+{
+    if (field.valuesOn == Association::Cell) {
+        const float v = field.values[triangle];
+        return {v, v, v};
+    }
+    const auto& t = field.mesh.triangles[triangle];
+    return {field.values[t[0]], field.values[t[1]], field.values[t[2]]};
+}
+
 std::pair<float, float> finiteRange(const std::vector<float>& values)
 {
     float lo = std::numeric_limits<float>::infinity();

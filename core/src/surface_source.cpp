@@ -5,7 +5,10 @@
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/log.h>
 #include <ivis/core/procedural_scenes.h>
+#include <ivis/core/pvd_reader.h>
+#include <ivis/core/show_array.h>
 
+#include <cctype>
 #include <filesystem>
 
 namespace ivis::core {
@@ -13,18 +16,38 @@ namespace {
 bool isScene(const std::string& source) { return source.rfind(kScenePrefix, 0) == 0; }
 }  // namespace
 
+bool isTimeSeries(const std::string& source)
+{
+    std::string ext = std::filesystem::path(source).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".pvd";
+}
+
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options)
 {
     SurfaceField field;
     if (isScene(source)) {
-        if (!options.read.scalarName.empty() || !options.read.scalarFile.empty())
-            throw InputError(source + ": generated scenes carry their own scalar; --scalar and --scalar-file "
-                                      "apply to mesh files only");
+        if (!options.read.scalarName.empty() || !options.read.scalarFile.empty() || options.read.cellToPoint)
+            throw InputError(source + ": generated scenes carry their own scalar; --scalar, --scalar-file and "
+                                      "--cell-to-point apply to mesh files only");
         field = makeScene(source.substr(std::string(kScenePrefix).size()));
+    } else if (isTimeSeries(source)) {
+        const std::vector<TimeStep> steps = readPvd(source);
+        throw InputError(source + ": a time series of " + std::to_string(steps.size()) +
+                         " steps; series are not rendered yet, so give one step's file, such as " + steps.front().path);
     } else {
-        std::size_t dropped = 0;
-        field = readMesh(source, options.read, &dropped);
-        if (dropped > 0) logInfo(source + ": dropped " + std::to_string(dropped) + " degenerate triangles");
+        MeshReadReport report;
+        field = readMesh(source, options.read, &report);
+        for (const std::string& note : report.notes) logInfo(source + ": " + note);
+        if (report.degenerateDropped > 0) {
+            logInfo(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles");
+        }
+        if (!field.hasScalar() && options.hotSpots == 0 && !field.arrays.empty()) {
+            const DataArray& shown = defaultArray(field);
+            showArray(field, shown.name, options.read.cellToPoint);
+            logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
+                    "' (choose another with --scalar NAME; `inversevis info` lists them)");
+        }
     }
     if (options.capHoles) {
         const std::size_t loops = capHoles(field);
@@ -33,6 +56,7 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
     normalize(field);
     if (options.hotSpots > 0) {
         field.values = hotSpotValues(field.mesh, placeHotSpots(field.mesh, options.hotSpots));
+        field.valuesOn = Association::Point;
         field.name = "hotspots";
     }
     return field;

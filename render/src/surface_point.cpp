@@ -27,11 +27,8 @@ SurfacePoint pointOnTriangle(const core::TriangleMesh& mesh, int triangle, const
 
 float scalarAt(const core::SurfaceField& field, const SurfacePoint& point)
 {
-    if (!point.valid() || !field.hasScalar() || field.mesh.isCap(std::size_t(point.triangle)))
-        return std::numeric_limits<float>::quiet_NaN();
-    const auto& t = field.mesh.triangles[point.triangle];
-    return point.barycentric.x * field.values[t[0]] + point.barycentric.y * field.values[t[1]] +
-           point.barycentric.z * field.values[t[2]];
+    if (!point.valid()) return std::numeric_limits<float>::quiet_NaN();
+    return core::scalarAt(field, std::size_t(point.triangle), point.barycentric);
 }
 
 glm::vec3 triangleNormal(const core::TriangleMesh& mesh, int triangle)

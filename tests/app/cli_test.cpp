@@ -1,6 +1,6 @@
 // The `inversevis` program as a user runs it: exit statuses, the one-line error contract, and
 // that bad input never leaves an output (or a temporary) behind.
-#include "test_support.h"
+#include "cli_fixture.h"
 
 #include <gtest/gtest.h>
 #include <ivis/core/image_io.h>
@@ -36,70 +36,6 @@ constexpr const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 /// which reading drops and logs.
 constexpr const char* kTetraWithDegenerateObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
                                                 "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 5 2\n";
-
-/// Shell-quotes a path for runCli.
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
-
-/// Everything inside @a folder (files and sub-folders, recursively), relative to it.
-std::vector<std::string> contents(const std::string& folder)
-{
-    std::vector<std::string> names;
-    for (const auto& entry : fs::recursive_directory_iterator(folder))
-        names.push_back(fs::relative(entry.path(), folder).string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-/// Expects the bad-input contract: status 2, nothing on stdout, exactly one stderr line
-/// "inversevis: error: ..." that contains every one of @a parts.
-void expectBadInput(const CliResult& result, const std::vector<std::string>& parts)
-{
-    EXPECT_EQ(result.status, 2) << result.err;
-    EXPECT_EQ(result.out, "");
-    EXPECT_EQ(result.err.rfind("inversevis: error: ", 0), 0u) << result.err;
-    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
-    EXPECT_TRUE(!result.err.empty() && result.err.back() == '\n') << result.err;
-    for (const std::string& part : parts)
-        EXPECT_NE(result.err.find(part), std::string::npos) << "'" << part << "' not in: " << result.err;
-}
-
-/// Writes input files to one folder and points every output at another, which must stay empty
-/// whenever the program rejects its input.
-class Cli : public testing::Test {
-protected:
-    /// Path of input file @a name (written by the test).
-    std::string input(const std::string& name) const { return mInputs.file(name); }
-    /// Path of output file @a name.
-    std::string output(const std::string& name) const { return mOutputs.file(name); }
-
-    /// `sdf MESH --volume-res 48 -o OUT/s.vdb EXTRA`.
-    std::string sdf(const std::string& mesh, const std::string& extra = "") const
-    {
-        return "sdf " + quoted(mesh) + " --volume-res 48 -o " + quoted(output("s.vdb")) + " " + extra;
-    }
-    /// `render MESH --res 32x32 --volume-res 48 -o OUT/x.png EXTRA` (the volume cache goes to OUT too).
-    std::string render(const std::string& mesh, const std::string& extra = "") const
-    {
-        return "render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o " + quoted(output("x.png")) + " " + extra;
-    }
-
-    /// Runs @a arguments, expects the bad-input contract and an untouched output folder.
-    void expectRejected(const std::string& arguments, const std::vector<std::string>& parts) const
-    {
-        SCOPED_TRACE(arguments);
-        expectBadInput(runCli(arguments), parts);
-        EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{});
-    }
-    /// expectRejected for both `sdf` and `render` of @a mesh.
-    void expectMeshRejected(const std::string& mesh, const std::vector<std::string>& parts) const
-    {
-        expectRejected(sdf(mesh), parts);
-        expectRejected(render(mesh), parts);
-    }
-
-    TempDir mInputs;
-    TempDir mOutputs;
-};
 
 // ----------------------------------------------------------------------------------------------
 // Bad mesh files
@@ -137,7 +73,7 @@ TEST_F(Cli, UnknownFormat)
 {
     const std::string path = input("points.xyz");
     writeFile(path, "0 0 0\n1 0 0\n0 1 0\n");
-    expectMeshRejected(path, {path + ": unknown mesh format '.xyz' (expected .obj, .off, .ply, .stl)"});
+    expectMeshRejected(path, {path + ": unknown mesh format '.xyz' (expected .obj, .off, .ply, .stl, .vtk, .vtp, .vtu)"});
 }
 
 TEST_F(Cli, TextInAPlyFile)
@@ -217,8 +153,9 @@ TEST_F(Cli, UnknownScalarNameListsTheNamesThatExist)
 {
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
     const std::vector<std::string> parts = {
-        mesh + ": no per-vertex scalar 'wss'",
-        "available: pressure_t200, pressure_t400, pressure_t600, pressure_t800, pressure_t1000"};
+        mesh + ": no array 'wss'",
+        "available: pressure_t200 (point), pressure_t400 (point), pressure_t600 (point), pressure_t800 (point), "
+        "pressure_t1000 (point)"};
     expectRejected(sdf(mesh, "--scalar wss"), parts);
     expectRejected(render(mesh, "--scalar wss"), parts);
 }
@@ -379,13 +316,16 @@ TEST_F(Cli, InfoJsonReportsCountsAndPressureScalars)
                     {"pressure_t600", -0.009525, 0.1407},
                     {"pressure_t800", -0.0451, 0.08232},
                     {"pressure_t1000", -0.05931, 0.04502}};
-    const nlohmann::json& scalars = info.at("scalars");
+    const nlohmann::json& scalars = info.at("arrays");
     ASSERT_EQ(scalars.size(), 5u);
     for (std::size_t i = 0; i < 5; ++i) {
         EXPECT_EQ(scalars[i].at("name"), expected[i].name);
         EXPECT_NEAR(scalars[i].at("min").get<double>(), expected[i].min, 1e-4) << expected[i].name;
         EXPECT_NEAR(scalars[i].at("max").get<double>(), expected[i].max, 1e-4) << expected[i].name;
         EXPECT_EQ(scalars[i].at("nan_count"), 0) << expected[i].name;
+        EXPECT_EQ(scalars[i].at("association"), "point") << expected[i].name;
+        EXPECT_EQ(scalars[i].at("type"), "Float32") << expected[i].name;
+        EXPECT_EQ(scalars[i].at("components"), 1) << expected[i].name;
     }
 }
 

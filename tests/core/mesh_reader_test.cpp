@@ -176,6 +176,60 @@ TEST(MeshReader, BinaryPlyFloatAndDoublePropertiesAreExact)
     }
 }
 
+TEST(MeshReader, PlyFacePropertiesAreCellArraysAndIntegersAreArraysToo)
+{
+    // The tetrahedron with an int and a uchar vertex property and a float and an int face property.
+    const std::string header =
+        "ply\nformat FORMAT 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "property int label\nUCHARelement face 4\nproperty list uchar int vertex_indices\nproperty float quality\n"
+        "property int region\nend_header\n";
+    const auto make = [&](const std::string& format, bool withUchar) {
+        std::string h = header;
+        h.replace(h.find("FORMAT"), 6, format);
+        h.replace(h.find("UCHAR"), 5, withUchar ? "property uchar flag\n" : "");
+        return h;
+    };
+    TempDir dir;
+    Bytes binary;
+    for (int v = 0; v < 4; ++v) {
+        binary.put(kTetraXyz[v][0]).put(kTetraXyz[v][1]).put(kTetraXyz[v][2]).put(100 + v).put(std::uint8_t(200 + v));
+    }
+    for (int f = 0; f < 4; ++f) {
+        binary.triangle(kTetraFaces[f][0], kTetraFaces[f][1], kTetraFaces[f][2]).put(0.5f * float(f)).put(-f);
+    }
+    writeFile(dir.file("b.ply"), make("binary_little_endian", true) + binary.str());
+    std::string ascii = make("ascii", false);
+    for (int v = 0; v < 4; ++v)
+        ascii += std::to_string(kTetraXyz[v][0]) + " " + std::to_string(kTetraXyz[v][1]) + " " +
+                 std::to_string(kTetraXyz[v][2]) + " " + std::to_string(100 + v) + "\n";
+    for (int f = 0; f < 4; ++f)
+        ascii += "3 " + std::to_string(kTetraFaces[f][0]) + " " + std::to_string(kTetraFaces[f][1]) + " " +
+                 std::to_string(kTetraFaces[f][2]) + " " + std::to_string(0.5 * f) + " " + std::to_string(-f) + "\n";
+    writeFile(dir.file("a.ply"), ascii);
+
+    for (const char* name : {"b.ply", "a.ply"}) {
+        SCOPED_TRACE(name);
+        const SurfaceField field = readMesh(dir.file(name), {"quality", ""});
+        EXPECT_EQ(field.valuesOn, Association::Cell);
+        EXPECT_EQ(field.values, (std::vector<float>{0.0f, 0.5f, 1.0f, 1.5f}));
+        const bool binaryFile = std::string(name) == "b.ply";
+        ASSERT_EQ(field.arrays.size(), binaryFile ? 4u : 3u);
+        EXPECT_EQ(field.arrays[0].name, "label");
+        EXPECT_EQ(field.arrays[0].type, ValueType::Int32);
+        EXPECT_EQ(field.arrays[0].values, (std::vector<double>{100, 101, 102, 103}));
+        if (binaryFile) {
+            EXPECT_EQ(field.arrays[1].type, ValueType::UInt8);
+            EXPECT_EQ(field.arrays[1].values, (std::vector<double>{200, 201, 202, 203}));
+        }
+        const DataArray& region = field.arrays.back();
+        EXPECT_EQ(region.name, "region");
+        EXPECT_EQ(region.association, Association::Cell);
+        EXPECT_EQ(region.type, ValueType::Int32);
+        EXPECT_EQ(region.values, (std::vector<double>{0, -1, -2, -3}));
+        EXPECT_EQ(readMesh(dir.file(name), {"label", ""}).values, (std::vector<float>{100, 101, 102, 103}));
+    }
+}
+
 TEST(MeshReader, BinaryPlyHeaderEndingInACommentOrBlanks)
 {
     // OpenMesh 9.0 alone starts the data one byte off after these header endings.
@@ -225,9 +279,9 @@ TEST(MeshReader, ObjQuadsAreFanTriangulated)
     TempDir dir;
     const std::string path = dir.file("cube.obj");
     writeFile(path, kCubeObj);
-    std::size_t dropped = 99;
-    const SurfaceField cube = readMesh(path, {}, &dropped);
-    EXPECT_EQ(dropped, 0u);
+    MeshReadReport report;
+    const SurfaceField cube = readMesh(path, {}, &report);
+    EXPECT_EQ(report.degenerateDropped, 0u);
     EXPECT_EQ(cube.mesh.positions.size(), 8u);
     ASSERT_EQ(cube.mesh.triangles.size(), 12u);
     // First quad 1 4 3 2 -> (0,3,2), (0,2,1).
@@ -278,11 +332,21 @@ TEST(MeshReader, StlAsciiAndBinaryMergeCorners)
     ascii += "endsolid tetra\n";
     writeFile(dir.file("a.stl"), ascii);
     writeFile(dir.file("b.stl"), binary.str());
+    // Vertices are numbered in the order each merged corner first appears (VTK's STL reader's
+    // order), which the documented --scalar-file order is: faces 0-2-1 and 0-1-3 come first, so
+    // the corners appear as tetra vertices 0, 2, 1, 3.
+    writeFile(dir.file("w.txt"), "10 12 11 13\n");
+    const int kFirstAppearance[4] = {0, 2, 1, 3};
     for (const char* name : {"a.stl", "b.stl"}) {
-        const SurfaceField tetra = readMesh(dir.file(name));
+        const SurfaceField tetra = readMesh(dir.file(name), {"", dir.file("w.txt")});
         EXPECT_EQ(tetra.mesh.positions.size(), 4u) << name;
         EXPECT_EQ(tetra.mesh.triangles.size(), 4u) << name;
         EXPECT_EQ(boundaryEdgeCount(tetra.mesh), 0u) << name;
+        for (int v = 0; v < 4; ++v) {
+            const float* p = kTetraXyz[kFirstAppearance[v]];
+            EXPECT_EQ(tetra.mesh.positions[std::size_t(v)], glm::vec3(p[0], p[1], p[2])) << name << " vertex " << v;
+            EXPECT_EQ(tetra.values[std::size_t(v)], 10.0f + float(kFirstAppearance[v])) << name << " vertex " << v;
+        }
     }
 }
 
@@ -309,11 +373,12 @@ TEST(MeshReader, NonManifoldTrianglesAllSurvive)
     writeFile(dir.file("bowtie.ply"), xyzPlyHeader(7, 8) + bowXyz + bowFaces);
 
     for (const char* name : {"fins.off", "fins.obj", "fins.ply"}) {
-        std::size_t dropped = 99;
-        const SurfaceField fins = readMesh(dir.file(name), {}, &dropped);
+        MeshReadReport report;
+        report.degenerateDropped = 99;
+        const SurfaceField fins = readMesh(dir.file(name), {}, &report);
         EXPECT_EQ(fins.mesh.triangles.size(), 3u) << name;
         EXPECT_EQ(fins.mesh.positions.size(), 5u) << name;
-        EXPECT_EQ(dropped, 0u) << name;
+        EXPECT_EQ(report.degenerateDropped, 0u) << name;
         EXPECT_EQ(boundaryEdgeCount(fins.mesh), 6u) << name;
     }
     for (const char* name : {"bowtie.off", "bowtie.ply"}) {
@@ -334,18 +399,18 @@ TEST(MeshReader, DegenerateTrianglesAreDroppedAndCounted)
     const std::string xyz = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0 0\n";
     TempDir dir;
     writeFile(dir.file("d.off"), "OFF\n5 5 0\n" + xyz + "3 0 1 2\n3 0 2 3\n3 0 0 2\n3 0 4 1\n4 0 1 1 2\n");
-    std::size_t dropped = 0;
-    SurfaceField field = readMesh(dir.file("d.off"), {}, &dropped);
+    MeshReadReport report;
+    SurfaceField field = readMesh(dir.file("d.off"), {}, &report);
     // Kept: 0-1-2, 0-2-3 and the fan triangle 0-1-2 of the quad; dropped: repeated index,
     // zero area, and the quad's fan triangle 0-1-1.
     EXPECT_EQ(field.mesh.triangles.size(), 3u);
-    EXPECT_EQ(dropped, 3u);
+    EXPECT_EQ(report.degenerateDropped, 3u);
 
     // OpenMesh's OBJ reader skips a face with a repeated corner itself; it is still counted.
     writeFile(dir.file("d.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nf 1 1 2\n");
-    field = readMesh(dir.file("d.obj"), {}, &dropped);
+    field = readMesh(dir.file("d.obj"), {}, &report);
     EXPECT_EQ(field.mesh.triangles.size(), 1u);
-    EXPECT_EQ(dropped, 1u);
+    EXPECT_EQ(report.degenerateDropped, 1u);
 }
 
 // ----------------------------------------------------------------------------------------------
@@ -357,8 +422,8 @@ TEST(MeshReader, UnknownScalarListsTheAvailableNames)
     TempDir dir;
     writeFile(dir.file("t.ply"), binaryTetraPly(false));
     writeFile(dir.file("cube.obj"), kCubeObj);
-    expectReadError(dir.file("t.ply"), "no per-vertex scalar 'foo'; available: wss, pressure", {"foo", ""});
-    expectReadError(dir.file("cube.obj"), "no per-vertex scalar 'wss'; available: none", {"wss", ""});
+    expectReadError(dir.file("t.ply"), "no array 'foo'; available: wss (point), pressure (point)", {"foo", ""});
+    expectReadError(dir.file("cube.obj"), "no array 'wss'; available: none", {"wss", ""});
 }
 
 TEST(MeshReader, ScalarNameAndFileAreExclusive)
@@ -416,20 +481,21 @@ TEST(MeshReader, DescribeMeshReportsEveryScalar)
     EXPECT_EQ(info.format, "ply");
     EXPECT_EQ(info.vertices, 4u);
     EXPECT_EQ(info.triangles, 4u);
-    EXPECT_EQ(info.degenerateDropped, 0u);
+    EXPECT_EQ(info.report.degenerateDropped, 0u);
     EXPECT_EQ(info.boundaryEdges, 0u);
     EXPECT_EQ(info.components, 1u);
     EXPECT_EQ(info.bounds.lo, glm::dvec3(0.0));
     EXPECT_EQ(info.bounds.hi, glm::dvec3(1.0));
-    ASSERT_EQ(info.scalars.size(), 2u);
-    EXPECT_EQ(info.scalars[0].name, "wss");
-    EXPECT_EQ(info.scalars[0].min, 1e-3f);
-    EXPECT_EQ(info.scalars[0].max, 1.25f);
-    EXPECT_EQ(info.scalars[0].nanCount, 1u);
-    EXPECT_EQ(info.scalars[1].name, "pressure");
-    EXPECT_EQ(info.scalars[1].min, float(kPressure[1]));
-    EXPECT_EQ(info.scalars[1].max, float(kPressure[0]));
-    EXPECT_EQ(info.scalars[1].nanCount, 0u);
+    ASSERT_EQ(info.arrays.size(), 2u);
+    EXPECT_EQ(info.arrays[0].name, "wss");
+    EXPECT_EQ(info.arrays[0].min, 1e-3f);
+    EXPECT_EQ(info.arrays[0].max, 1.25f);
+    EXPECT_EQ(info.arrays[0].nanCount, 1u);
+    EXPECT_EQ(info.arrays[1].name, "pressure");
+    EXPECT_EQ(info.arrays[1].min, kPressure[1]);  // a double property keeps its double values
+    EXPECT_EQ(info.arrays[1].max, kPressure[0]);
+    EXPECT_EQ(info.arrays[1].type, ValueType::Float64);
+    EXPECT_EQ(info.arrays[1].nanCount, 0u);
 }
 
 // ----------------------------------------------------------------------------------------------
@@ -447,7 +513,7 @@ TEST(MeshReader, MissingUnreadableAndUnknownFiles)
 
     writeFile(dir.file("x.abc"), "whatever");
     EXPECT_EQ(inputError([&] { readMesh(dir.file("x.abc")); }),
-              dir.file("x.abc") + ": unknown mesh format '.abc' (expected .obj, .off, .ply, .stl)");
+              dir.file("x.abc") + ": unknown mesh format '.abc' (expected .obj, .off, .ply, .stl, .vtk, .vtp, .vtu)");
 }
 
 TEST(MeshReader, PermissionDenied)
@@ -686,12 +752,12 @@ TEST(MeshReader, SharedVampyPressureScalars)
         {"pressure_t200", {0.2294, 0.7932}},     {"pressure_t400", {0.09313, 0.2698}},
         {"pressure_t600", {-0.009525, 0.1407}},  {"pressure_t800", {-0.0451, 0.08232}},
         {"pressure_t1000", {-0.05931, 0.04502}}};
-    ASSERT_EQ(info.scalars.size(), 5u);
+    ASSERT_EQ(info.arrays.size(), 5u);
     for (std::size_t i = 0; i < 5; ++i) {
-        EXPECT_EQ(info.scalars[i].name, expected[i].first);
-        EXPECT_NEAR(info.scalars[i].min, expected[i].second.first, 1e-4) << expected[i].first;
-        EXPECT_NEAR(info.scalars[i].max, expected[i].second.second, 1e-4) << expected[i].first;
-        EXPECT_EQ(info.scalars[i].nanCount, 0u);
+        EXPECT_EQ(info.arrays[i].name, expected[i].first);
+        EXPECT_NEAR(info.arrays[i].min, expected[i].second.first, 1e-4) << expected[i].first;
+        EXPECT_NEAR(info.arrays[i].max, expected[i].second.second, 1e-4) << expected[i].first;
+        EXPECT_EQ(info.arrays[i].nanCount, 0u);
     }
     const SurfaceField field = readMesh(path, {"pressure_t600", ""});
     EXPECT_EQ(field.values.size(), 1104u);

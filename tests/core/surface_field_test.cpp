@@ -86,5 +86,27 @@ TEST(SurfaceField, FiniteRangeIgnoresNanAndInfinity)
     EXPECT_EQ(finiteRange({4.0f}), std::make_pair(4.0f, 4.0f));
 }
 
+TEST(SurfaceField, ScalarAtBlendsVertexValuesOrTakesTheCellValue)
+{
+    SurfaceField field = boxField();
+    field.mesh.positions.emplace_back(9, 9, 9);  // a cap: vertex 4, triangle 2
+    field.mesh.triangles.push_back({0, 1, 4});
+    EXPECT_TRUE(std::isnan(scalarAt(field, 0, glm::vec3(1, 0, 0))));  // no scalar yet
+
+    field.values = {1, 2, 4, 8, 0};
+    const glm::vec3 w(0.5f, 0.25f, 0.25f);
+    EXPECT_FLOAT_EQ(scalarAt(field, 0, w), 0.5f * 1 + 0.25f * 2 + 0.25f * 4);
+    EXPECT_FLOAT_EQ(scalarAt(field, 1, w), 0.5f * 1 + 0.25f * 4 + 0.25f * 8);
+    EXPECT_EQ(cornerScalars(field, 1), (std::array<float, 3>{1, 4, 8}));
+    EXPECT_TRUE(std::isnan(scalarAt(field, 2, w)));
+
+    field.values = {3, -5};
+    field.valuesOn = Association::Cell;
+    EXPECT_EQ(scalarAt(field, 0, w), 3.0f);
+    EXPECT_EQ(scalarAt(field, 1, glm::vec3(0, 0, 1)), -5.0f);
+    EXPECT_EQ(cornerScalars(field, 1), (std::array<float, 3>{-5, -5, -5}));
+    EXPECT_TRUE(std::isnan(scalarAt(field, 2, w)));
+}
+
 }  // namespace
 }  // namespace ivis::core

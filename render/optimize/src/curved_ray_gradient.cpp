@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <cmath>
 
 namespace ivis::optimize {
@@ -59,11 +60,11 @@ PixelLaunchDerivative pixelLaunchDerivative(const EnergyEvaluator& evaluator, co
     result.point = landed.point;
     result.dPoint = ray.dPosition - glm::dot(ray.dPosition, normal) * normal;
     result.perParameter = sensitivity.perParameter;
-    const auto& t = mesh.triangles[landed.point.triangle];
+    // A cell scalar is constant on the triangle: its corners agree and the gradient is zero.
+    const std::array<float, 3> corners = core::cornerScalars(scene.field(), std::size_t(landed.point.triangle));
     float s[3];
     for (int c = 0; c < 3; ++c) {
-        const float v = scene.field().values[t[c]];
-        s[c] = std::isnan(v) ? 0.0f : evaluator.options().importanceRange.normalized(v);
+        s[c] = std::isnan(corners[c]) ? 0.0f : evaluator.options().importanceRange.normalized(corners[c]);
     }
     result.dImportance = double(glm::dot(surfaceGradient(mesh, landed.point.triangle, s), result.dPoint));
     return result;

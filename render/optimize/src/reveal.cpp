@@ -22,10 +22,7 @@ SampleFilter importantSamples(const core::SurfaceField& field, const core::Scala
 {
     if (!field.hasScalar()) throw InputError(field.sourcePath + ": the reveal measure needs a scalar field");
     return [&field, range](std::size_t triangle, const glm::vec3& barycentric) {
-        if (field.mesh.isCap(triangle)) return false;
-        const auto& t = field.mesh.triangles[triangle];
-        const float value = barycentric.x * field.values[t[0]] + barycentric.y * field.values[t[1]] +
-                            barycentric.z * field.values[t[2]];
+        const float value = core::scalarAt(field, triangle, barycentric);
         return !std::isnan(value) && range.normalized(value) > 0.5f;
     };
 }

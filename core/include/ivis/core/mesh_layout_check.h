@@ -13,7 +13,7 @@
 
 namespace ivis::core::detail {
 
-/// Mesh file formats readMesh understands.
+/// Mesh file formats OpenMesh reads for readMesh.
 enum class MeshFormat { Obj, Off, Ply, Stl };
 
 /// Facts about a checked file that its OpenMesh import needs.
@@ -22,11 +22,9 @@ struct MeshLayout {
     bool binaryStl = false;       ///< STL whose size matches its binary triangle count
 };
 
-/// Throws the one-line InputError "<path>: <problem>".
+/// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from
+/// the file) are written as \xNN.
 [[noreturn]] void failInput(const std::string& path, const std::string& problem);
-
-/// The format chosen by the extension of @a path (case-insensitive); throws InputError for others.
-MeshFormat meshFormat(const std::string& path);
 
 /// Lower-case name of @a format: "obj", "off", "ply" or "stl".
 const char* formatName(MeshFormat format);

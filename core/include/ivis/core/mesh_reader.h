@@ -1,13 +1,18 @@
 /// @file mesh_reader.h
-/// @brief Reads OBJ, OFF, PLY (ASCII and binary) and STL meshes with an optional per-vertex scalar.
+/// @brief Reads meshes with all their arrays: OBJ, OFF, PLY (ASCII and binary), STL, VTK legacy
+///        `.vtk` and VTK XML `.vtp`/`.vtu`; each format is one reader registered by its extension
+///        (mesh_formats.h).
 /// @note Every failure throws InputError whose message is one line "<path>: <problem>". Vertex and
 ///       face numbers in messages count from 0, except for OBJ files, which count from 1 as OBJ
 ///       indices do.
-/// @note Files are parsed by OpenMesh 9.0 through an importer that keeps raw faces, so
-///       non-manifold and open meshes lose no triangle. Its readers trust counts and tokens, so
-///       each file's layout is checked first; layouts OpenMesh would misread (binary OFF, ASCII
-///       PLY with 8-bit custom properties or nan/inf values, list properties other than in the
-///       vertex element or after a face's vertex_indices) are rejected with a message.
+/// @note OBJ, OFF, PLY and STL are parsed by OpenMesh 9.0 through an importer that keeps raw
+///       faces, so non-manifold and open meshes lose no triangle. Its readers trust counts and
+///       tokens, so each file's layout is checked first; layouts OpenMesh would misread (binary
+///       OFF, ASCII PLY with 8-bit custom properties or nan/inf values, list properties other than
+///       in the vertex element or after a face's vertex_indices) are rejected with a message.
+/// @note STL files carry no shared vertices: corners with bit-identical coordinates are merged,
+///       and the vertices are numbered in the order each merged corner first appears in the file
+///       (as VTK's STL reader numbers them), which is the order a --scalar-file follows.
 #pragma once
 
 #include <ivis/core/surface_field.h>
@@ -18,46 +23,58 @@
 
 namespace ivis::core {
 
-/// @brief Which scalar to attach while reading.
+/// @brief Which scalar to show while reading.
 struct MeshReadOptions {
-    std::string scalarName;  ///< per-vertex float/double PLY property; "" = none
-    std::string scalarFile;  ///< sidecar text file, one value per vertex; "" = none
+    std::string scalarName;    ///< a point or cell array: "NAME", "NAME:magnitude", "NAME:<k>"; "" = none
+    std::string scalarFile;    ///< sidecar text file, one value per vertex; "" = none
+    bool cellToPoint = false;  ///< show a cell array averaged onto the vertices (area-weighted)
 };
 
-/// @brief Summary of one scalar property found in a file.
-struct ScalarInfo {
+/// @brief What reading a file left out or repaired, for the user to hear about.
+struct MeshReadReport {
+    std::size_t degenerateDropped = 0;  ///< triangles dropped (repeated index or zero area)
+    std::vector<std::string> notes;     ///< what the file holds that is not shown ("left out 3 line cells")
+};
+
+/// @brief Summary of one array found in a file.
+struct ArrayInfo {
     std::string name;
-    float min = 0.0f;  ///< finite minimum (NaN ignored)
-    float max = 0.0f;
-    std::size_t nanCount = 0;
+    Association association = Association::Point;
+    ValueType type = ValueType::Float32;
+    int components = 1;
+    double min = 0.0;  ///< finite minimum of the default component (DataArray::defaultComponent)
+    double max = 0.0;
+    std::size_t nanCount = 0;  ///< tuples with a NaN component
 };
 
 /// @brief What `inversevis info` prints about a mesh file.
 struct MeshInfo {
     std::string path;
-    std::string format;  ///< "obj", "off", "ply", "stl"
+    std::string format;  ///< "obj", "off", "ply", "stl", "vtk", "vtp", "vtu"
     std::size_t vertices = 0;
+    std::size_t cells = 0;  ///< faces or cells in the file (the tuples of a cell array)
     std::size_t triangles = 0;
-    std::size_t degenerateDropped = 0;
+    Bounds3 bounds;  ///< in the file's own units
     std::size_t boundaryEdges = 0;
     std::size_t components = 0;
-    Bounds3 bounds;  ///< in the file's own units
-    std::vector<ScalarInfo> scalars;
+    MeshReadReport report;
+    std::vector<ArrayInfo> arrays;
 };
 
 /// @brief Reads a mesh in its own units (not normalised), polygons fan-triangulated, degenerate
-///        triangles (repeated index or zero area) dropped and counted in @a degenerateDropped.
-/// @param path mesh file; format chosen by extension (.obj .off .ply .stl, case-insensitive)
-/// @param options scalar selection (at most one of name / file)
-/// @param degenerateDropped optional output: number of dropped degenerate triangles
+///        triangles (repeated index or zero area) dropped, with every array of the file and the
+///        file cell each triangle came from.
+/// @param path mesh file; format chosen by extension (case-insensitive)
+/// @param options scalar to show (at most one of name / file; see showArray for names)
+/// @param report optional output: dropped triangles and notes on what is not shown
 /// @throw InputError (missing/unreadable file, unknown format, not a mesh, zero triangles,
-///        non-finite coordinates, out-of-range indices, bad sidecar, unknown scalar name listing
-///        the names that exist)
+///        non-finite coordinates, out-of-range indices, malformed data, bad sidecar, unknown
+///        array name listing the names that exist)
 /// @warning Thread-safe; the OpenMesh part of concurrent reads runs one at a time.
 SurfaceField readMesh(const std::string& path, const MeshReadOptions& options = {},
-                      std::size_t* degenerateDropped = nullptr);
+                      MeshReadReport* report = nullptr);
 
-/// @brief Reads a mesh and reports its counts, bounds and every per-vertex scalar property.
+/// @brief Reads a mesh and reports its counts, bounds and every array.
 /// @throw InputError as readMesh
 MeshInfo describeMesh(const std::string& path);
 

@@ -19,11 +19,17 @@ struct SurfaceLoadOptions {
     int hotSpots = 0;       ///< when > 0, the scalar is this many generated hot spots (core::placeHotSpots)
 };
 
-/// @brief Reads the file (or generates the scene), logs dropped degenerate triangles, caps holes
-///        when asked, normalises into [-1,1]^3 and, when asked, puts hot spots on it as its scalar
-///        ("hotspots", in [0, 1]; cap vertices included, caps are never coloured).
-/// @throw InputError for bad files or scene names (message names the source)
+/// @brief Reads the file (or generates the scene), logs the reader's notes and dropped degenerate
+///        triangles, shows the file's first array when it carries arrays and none is chosen (and
+///        says so), caps holes when asked, normalises into [-1,1]^3 and, when asked, puts hot
+///        spots on it as its scalar ("hotspots", in [0, 1]; cap vertices included, caps are never
+///        coloured).
+/// @throw InputError for bad files or scene names, and for a time series (rendering series comes
+///        later; the message names the series' first file), each message naming the source
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options = {});
+
+/// @brief True when @a source is a time series (a ParaView collection, `.pvd`).
+bool isTimeSeries(const std::string& source);
 
 /// @brief A short name for a source, usable in output file names ("armadillo_50k", "vessel-tree").
 std::string sourceStem(const std::string& source);

@@ -26,8 +26,8 @@ SurfacePoint projectOntoTriangle(const core::TriangleMesh& mesh, int triangle, c
 /// @brief Surface point from a triangle and barycentric weights.
 SurfacePoint pointOnTriangle(const core::TriangleMesh& mesh, int triangle, const glm::vec3& barycentric);
 
-/// @brief Linearly interpolated scalar at @a point; NaN for a cap triangle, a field without scalar,
-///        or a NaN vertex value.
+/// @brief The shown scalar at @a point (core::scalarAt: a cell value, or the linear blend of the
+///        vertex values); NaN for no point, a cap triangle, a field without scalar or a NaN value.
 float scalarAt(const core::SurfaceField& field, const SurfacePoint& point);
 
 /// @brief Unit geometric normal of the point's triangle (by its winding).

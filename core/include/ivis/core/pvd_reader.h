@@ -1,0 +1,24 @@
+/// @file pvd_reader.h
+/// @brief Reads a ParaView collection (.pvd): the files of a time series, in time order.
+/// @note Every failure throws InputError whose message is one line "<pvd path>: <problem>".
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+
+/// @brief One time step of a collection.
+struct TimeStep {
+    double time = 0.0;  ///< the DataSet's timestep attribute (0 when it has none, as ParaView reads it)
+    std::string path;   ///< the step's file, relative to the working folder (the .pvd's folder joined)
+};
+
+/// @brief The DataSets of the collection @a path sorted by time (steps with equal times keep
+///        their order in the file); each file must exist.
+/// @throw InputError for a missing or malformed .pvd, a DataSet without a file or with a
+///        timestep that is not a number, several parts of one time step, a file that does not
+///        exist, or no DataSet at all
+std::vector<TimeStep> readPvd(const std::string& path);
+
+}  // namespace ivis::core

@@ -1,0 +1,27 @@
+/// @file show_array.h
+/// @brief Chooses the array a surface shows: a point or a cell array by name, one component or
+///        the magnitude of a vector, a cell array flat per triangle or averaged onto the vertices.
+#pragma once
+
+#include <ivis/core/surface_field.h>
+
+#include <string>
+
+namespace ivis::core {
+
+/// @brief Shows the array @a spec names: sets field.values, valuesOn and name.
+/// @param spec "NAME" (a vector by its magnitude), "NAME:magnitude" or "NAME:<k>" for component
+///        k; a name that exists as it is wins over a split at its last ':', a point array over a
+///        cell array of the same name
+/// @param cellToPoint show a cell array averaged onto the vertices (cellToPoint) instead of one
+///        flat value per triangle; no effect on a point array
+/// @throw InputError "<source>: no array 'x'; available: ..." or naming a component that does
+///        not exist
+void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
+
+/// @brief The array shown when a file carries arrays and none is chosen: the first point array,
+///        else the first cell array (ParaView's habit).
+/// @note Call only when field.arrays is not empty.
+const DataArray& defaultArray(const SurfaceField& field);
+
+}  // namespace ivis::core

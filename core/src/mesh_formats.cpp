@@ -1,0 +1,45 @@
+#include <ivis/core/mesh_formats.h>
+
+#include <ivis/core/raw_mesh_import.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace ivis::core::detail {
+namespace {
+
+template <MeshFormat format>
+RawMesh readWithOpenMesh(const std::string& path, std::string data)
+{
+    return readOpenMeshFile(path, format, std::move(data));
+}
+
+}  // namespace
+
+const std::vector<MeshFileFormat>& meshFileFormats()
+{
+    static const std::vector<MeshFileFormat> kFormats = {
+        {".obj", "obj", &readWithOpenMesh<MeshFormat::Obj>},
+        {".off", "off", &readWithOpenMesh<MeshFormat::Off>},
+        {".ply", "ply", &readWithOpenMesh<MeshFormat::Ply>},
+        {".stl", "stl", &readWithOpenMesh<MeshFormat::Stl>},
+        {".vtk", "vtk", &readVtkLegacy},
+        {".vtp", "vtp", &readVtkXml},
+        {".vtu", "vtu", &readVtkXml},
+    };
+    return kFormats;
+}
+
+const MeshFileFormat& meshFileFormat(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::string known;
+    for (const MeshFileFormat& format : meshFileFormats()) {
+        if (ext == format.extension) return format;
+        known += (known.empty() ? "" : ", ") + std::string(format.extension);
+    }
+    failInput(path, "unknown mesh format '" + ext + "' (expected " + known + ")");
+}
+
+}  // namespace ivis::core::detail

@@ -1,0 +1,100 @@
+#include <ivis/core/show_array.h>
+
+#include <ivis/core/cell_to_point.h>
+#include <ivis/core/errors.h>
+#include <ivis/core/mesh_layout_check.h>
+
+#include <algorithm>
+#include <charconv>
+#include <limits>
+
+namespace ivis::core {
+namespace {
+
+/// The array named @a name, a point array before a cell array; nullptr when there is none.
+const DataArray* findArray(const SurfaceField& field, const std::string& name)
+{
+    const DataArray* found = nullptr;
+    for (const DataArray& a : field.arrays) {
+        if (a.name == name &&
+            (found == nullptr || (found->association == Association::Cell && a.association == Association::Point))) {
+            found = &a;
+        }
+    }
+    return found;
+}
+
+std::string availableArrays(const SurfaceField& field)
+{
+    std::string list;
+    for (const DataArray& a : field.arrays) {
+        list += (list.empty() ? "" : ", ") + a.name + " (" + associationName(a.association) +
+                (a.components > 1 ? ", " + std::to_string(a.components) + " components" : "") + ")";
+    }
+    return list.empty() ? "none" : list;
+}
+
+}  // namespace
+
+void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
+{
+    const DataArray* array = findArray(field, spec);
+    int component = array != nullptr ? array->defaultComponent() : kMagnitude;
+    const std::size_t colon = spec.rfind(':');
+    if (array == nullptr && colon != std::string::npos) {
+        array = findArray(field, spec.substr(0, colon));
+        const std::string part = spec.substr(colon + 1);
+        if (array != nullptr && part != "magnitude") {
+            const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), component);
+            if (ec != std::errc() || end != part.data() + part.size() || component < 0 ||
+                component >= array->components) {
+                detail::failInput(field.sourcePath,
+                                  "array '" + array->name + "' has " + std::to_string(array->components) +
+                                      " component" + (array->components == 1 ? "" : "s") + "; '" + part +
+                                      "' is not one of magnitude, 0.." + std::to_string(array->components - 1));
+            }
+        } else if (array != nullptr) {
+            component = kMagnitude;
+        }
+    }
+    if (array == nullptr) {
+        detail::failInput(field.sourcePath, "no array '" + spec + "'; available: " + availableArrays(field));
+    }
+
+    field.name = array->name;
+    if (array->components > 1 || component == kMagnitude) {
+        field.name += component == kMagnitude ? " magnitude" : "[" + std::to_string(component) + "]";
+    }
+    const TriangleMesh& mesh = field.mesh;
+    if (array->association == Association::Point) {
+        // Vertices beyond the file's points (hole caps) have no value.
+        field.values.assign(mesh.positions.size(), std::numeric_limits<float>::quiet_NaN());
+        for (std::size_t v = 0; v < std::min(array->tuples(), field.values.size()); ++v) {
+            field.values[v] = float(array->at(v, component));
+        }
+        field.valuesOn = Association::Point;
+        return;
+    }
+    IVIS_CHECK(field.triangleCells.size() == mesh.dataTriangleCount);
+    std::vector<float> perTriangle(mesh.dataTriangleCount);
+    for (std::size_t t = 0; t < perTriangle.size(); ++t)
+        perTriangle[t] = float(array->at(field.triangleCells[t], component));
+    if (cellToPoint) {
+        field.values = core::cellToPoint(mesh, perTriangle);
+        field.valuesOn = Association::Point;
+        field.name += " (averaged)";
+    } else {
+        field.values = std::move(perTriangle);
+        field.valuesOn = Association::Cell;
+    }
+}
+
+const DataArray& defaultArray(const SurfaceField& field)
+{
+    IVIS_CHECK(!field.arrays.empty());
+    const auto point = std::find_if(field.arrays.begin(), field.arrays.end(),
+                                    [](const DataArray& a) { return a.association == Association::Point; });
+    return point != field.arrays.end() ? *point : field.arrays.front();
+}
+
+}  // namespace ivis::core

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Fuzzes the VTK readers with libFuzzer under AddressSanitizer and UBSan: builds the targets of
+# tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
+# seeds and runs each target for SECONDS (default 300) on one core.
+#   scripts/fuzz.sh [SECONDS]        findings are written to build-fuzz/findings/<target>/
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
+ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
+
+SECONDS_PER_TARGET=${1:-300}
+FUZZ_BUILD=${IVIS_FUZZ_BUILD:-$IVIS_ROOT/build-fuzz}
+FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuzzer-no-link -fno-omit-frame-pointer"
+CC=clang CXX=clang++ cmake -S "$IVIS_ROOT" -B "$FUZZ_BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DIVIS_BUILD_APP=OFF -DIVIS_BUILD_TESTS=OFF -DIVIS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$FLAGS" >/dev/null
+cmake --build "$FUZZ_BUILD" -j 1 --target vtk_xml_fuzzer vtk_legacy_fuzzer vtk_fuzz_seeds
+"$FUZZ_BUILD/tests/fuzz/vtk_fuzz_seeds" "$FUZZ_BUILD/corpus"
+
+status=0
+for target in vtk_xml vtk_legacy; do
+  mkdir -p "$FUZZ_BUILD/findings/$target"
+  echo "fuzz.sh: $target for $SECONDS_PER_TARGET s" >&2
+  log="$FUZZ_BUILD/findings/$target.log"
+  if "$FUZZ_BUILD/tests/fuzz/${target}_fuzzer" "$FUZZ_BUILD/corpus/$target" \
+      -max_total_time="$SECONDS_PER_TARGET" -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 \
+      -artifact_prefix="$FUZZ_BUILD/findings/$target/" -print_final_stats=1 >"$log" 2>&1; then
+    grep -E '^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)' "$log"
+  else
+    status=1
+    echo "fuzz.sh: $target found a problem: $log and $FUZZ_BUILD/findings/$target/" >&2
+    grep -E 'ERROR|SUMMARY|what\(\)' "$log" | head -n 5 >&2
+  fi
+done
+exit $status

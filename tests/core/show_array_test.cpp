@@ -1,0 +1,114 @@
+#include <ivis/core/errors.h>
+#include <ivis/core/show_array.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace ivis::core {
+namespace {
+
+/// A quad cell (file cell 0, two triangles) and a triangle cell (file cell 1), plus a cap vertex
+/// 5 the file does not have:
+///   3 ----- 2           triangles 0-1-2 and 0-2-3 from cell 0 (area 0.5 each)
+///   |     / | \\         triangle 1-4-2 from cell 1 (area 0.5)
+///   |   /   |   4       points: 0 (0,0) 1 (1,0) 2 (1,1) 3 (0,1) 4 (2,0.5) 5 cap
+///   0 ----- 1
+SurfaceField field()
+{
+    SurfaceField f;
+    f.sourcePath = "f.vtp";
+    f.mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0.5f, 0}, {0.5f, 0.5f, 1}};
+    f.mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}};
+    f.mesh.dataTriangleCount = 3;
+    f.triangleCells = {0, 0, 1};
+    f.arrays = {{"p", Association::Point, ValueType::Float32, 1, {0, 1, 2, 3, 4}},
+                {"v", Association::Point, ValueType::Float64, 3, {3, 4, 0, 0, 0, 1, 1, 2, 2, 0, 0, 0, 6, 8, 0}},
+                {"c", Association::Cell, ValueType::Int32, 1, {10, 40}},
+                {"p", Association::Cell, ValueType::Int32, 1, {-1, -1}},
+                {"a:b", Association::Cell, ValueType::Int32, 1, {7, 8}}};
+    return f;
+}
+
+std::string errorOf(SurfaceField& f, const std::string& spec)
+{
+    try {
+        showArray(f, spec, false);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "<no error>";
+}
+
+TEST(ShowArray, PointArrayPerVertexAndNanBeyondTheFile)
+{
+    SurfaceField f = field();
+    showArray(f, "p", false);  // the point array wins over the cell array of the same name
+    EXPECT_EQ(f.valuesOn, Association::Point);
+    EXPECT_EQ(f.name, "p");
+    ASSERT_EQ(f.values.size(), 6u);
+    EXPECT_EQ(f.values[4], 4.0f);
+    EXPECT_TRUE(std::isnan(f.values[5]));
+}
+
+TEST(ShowArray, VectorsByMagnitudeOrComponent)
+{
+    SurfaceField f = field();
+    showArray(f, "v", false);
+    EXPECT_EQ(f.name, "v magnitude");
+    EXPECT_EQ(f.values[0], 5.0f);
+    EXPECT_EQ(f.values[2], 3.0f);
+    EXPECT_EQ(f.values[4], 10.0f);
+    showArray(f, "v:magnitude", false);
+    EXPECT_EQ(f.values[4], 10.0f);
+    showArray(f, "v:1", false);
+    EXPECT_EQ(f.name, "v[1]");
+    EXPECT_EQ(f.values[0], 4.0f);
+    EXPECT_EQ(f.values[4], 8.0f);
+    EXPECT_NE(errorOf(f, "v:3").find("f.vtp: array 'v' has 3 components; '3' is not one of magnitude, 0..2"),
+              std::string::npos);
+    EXPECT_NE(errorOf(f, "v:x").find("'x' is not one of magnitude, 0..2"), std::string::npos);
+}
+
+TEST(ShowArray, CellArrayFlatPerTriangleOrAveragedOntoVertices)
+{
+    SurfaceField f = field();
+    showArray(f, "c", false);
+    EXPECT_EQ(f.valuesOn, Association::Cell);
+    EXPECT_EQ(f.values, (std::vector<float>{10, 10, 40}));
+    EXPECT_EQ(scalarAt(f, 2, glm::vec3(0.2f, 0.3f, 0.5f)), 40.0f);
+    EXPECT_EQ(cornerScalars(f, 0), (std::array<float, 3>{10, 10, 10}));
+
+    showArray(f, "c", true);
+    EXPECT_EQ(f.valuesOn, Association::Point);
+    EXPECT_EQ(f.name, "c (averaged)");
+    ASSERT_EQ(f.values.size(), 6u);
+    EXPECT_FLOAT_EQ(f.values[0], 10.0f);
+    EXPECT_FLOAT_EQ(f.values[1], 25.0f);  // one triangle of each cell, equal areas
+    EXPECT_FLOAT_EQ(f.values[2], 20.0f);  // two of cell 0, one of cell 1
+    EXPECT_FLOAT_EQ(f.values[4], 40.0f);
+    EXPECT_TRUE(std::isnan(f.values[5]));
+}
+
+TEST(ShowArray, NamesWithAColonAndUnknownNames)
+{
+    SurfaceField f = field();
+    showArray(f, "a:b", false);
+    EXPECT_EQ(f.values, (std::vector<float>{7, 7, 8}));
+    EXPECT_EQ(errorOf(f, "wss"),
+              "f.vtp: no array 'wss'; available: p (point), v (point, 3 components), c (cell), "
+              "p (cell), a:b (cell)");
+    EXPECT_EQ(errorOf(f, "wss:1").rfind("f.vtp: no array 'wss:1'", 0), 0u);
+}
+
+TEST(ShowArray, DefaultIsTheFirstPointArrayElseTheFirstCellArray)
+{
+    SurfaceField f = field();
+    std::rotate(f.arrays.begin(), f.arrays.begin() + 2, f.arrays.end());  // c, p (cell), a:b, p, v
+    EXPECT_EQ(&defaultArray(f), &f.arrays[3]);
+    f.arrays.resize(3);
+    EXPECT_EQ(&defaultArray(f), &f.arrays[0]);
+}
+
+}  // namespace
+}  // namespace ivis::core
