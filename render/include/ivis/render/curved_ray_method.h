@@ -16,7 +16,7 @@ struct CurvedRayStart {
     glm::vec3 seed{};              ///< farthest crossing of the view ray with the hull
     glm::vec3 velocityPerAlpha{};  ///< g x (r x g), g = grad phi / |grad phi|: the view direction's part tangential to the hull
     float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
-    float ring = 0.0f;             ///< phi at the seed / phi0 (closest-approach seeds: 0 at the silhouette, 1 at the hull)
+    float ring = 0.0f;             ///< closest-approach seeds: phi at the seed / phi0 (0 at the silhouette, 1 at the hull); aim() may rescale it
     float alpha = 0.0f;            ///< launch speed the method chose for this ray (CurvedRayMethod::aim)
 };
 
