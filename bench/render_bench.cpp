@@ -1,8 +1,9 @@
 // `inversevis-bench render`: a front frame and an InverseVis frame, and the curved-ray integration
-// on our sampler (sparse fine band + dense coarse far field) against the same rays integrated on a
-// plain dense float copy of the distance at full resolution (trilinear value + analytic gradient
-// of the trilinear cell: the memory-bound ceiling).
+// on our sampler (sparse fine band + dense coarse far field, with blended exact gradients) against
+// the same rays integrated on a plain dense float copy of the distance at full resolution
+// (DenseReference: the memory-bound ceiling).
 #include "benchmarks.h"
+#include "dense_reference.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
@@ -15,7 +16,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -72,41 +72,6 @@ std::size_t integrateAll(const std::vector<RaySeed>& seeds, const render::Curved
         std::plus<>());
 }
 
-/// Dense sampler facade with the FieldSampler interface.
-struct DenseSampler {
-    const render::DenseGrid* grid;
-    float phiAndGradient(const glm::vec3& p, glm::vec3& gradient) { return grid->valueAndGradient(p, gradient); }
-};
-
-/// Dense copy, at the fine voxel size, of the distance inside the box the far field covers.
-render::DenseGrid denseCopy(const render::RenderScene& scene)
-{
-    const vdb::SurfaceVolume& volume = scene.volume();
-    const openvdb::FloatGrid& reachGrid = volume.farPhi ? *volume.farPhi : *volume.phi;
-    const openvdb::CoordBBox box = reachGrid.evalActiveVoxelBoundingBox();
-    const openvdb::Vec3d lo = reachGrid.indexToWorld(box.min()), hi = reachGrid.indexToWorld(box.max());
-    const vdb::BoxLattice lattice = volume.lattice();
-    const float voxel = float(lattice.voxelSize());
-    // Align to the fine grid's voxel centres.
-    glm::vec3 origin;
-    std::array<int, 3> dims{};
-    for (int a = 0; a < 3; ++a) {
-        const int first = int(std::floor(lattice.indexFromWorld(lo[a])));
-        const int last = int(std::ceil(lattice.indexFromWorld(hi[a])));
-        origin[a] = float(lattice.worldFromIndex(first));
-        dims[a] = last - first + 1;
-    }
-    std::vector<float> values(std::size_t{1} * dims[0] * dims[1] * dims[2]);
-    tbb::parallel_for(0, dims[2], [&](int z) {
-        auto sampler = scene.distance().sampler();
-        std::size_t i = std::size_t(z) * dims[1] * dims[0];
-        for (int y = 0; y < dims[1]; ++y)
-            for (int x = 0; x < dims[0]; ++x)
-                values[i++] = sampler.phi(origin + voxel * glm::vec3(float(x), float(y), float(z)));
-    });
-    return render::DenseGrid(origin, dims, voxel, std::move(values), scene.distance().reach());
-}
-
 }  // namespace
 
 Benchmark addRenderBenchmark(CLI::App& app)
@@ -158,10 +123,10 @@ Benchmark addRenderBenchmark(CLI::App& app)
             integrateAll(seeds, params, epsilon, escape, [&] { return scene.distance().sampler(); });
         const double oursSeconds = secondsSince(start);
 
-        const render::DenseGrid dense = denseCopy(scene);
+        const DenseReference dense(scene);
         start = Clock::now();
         const std::size_t referenceSteps =
-            integrateAll(seeds, params, epsilon, escape, [&] { return DenseSampler{&dense}; });
+            integrateAll(seeds, params, epsilon, escape, [&] { return DenseReferenceSampler{&dense}; });
         const double referenceSeconds = secondsSince(start);
 
         const double stepsPerSecond = double(oursSteps) / oursSeconds;

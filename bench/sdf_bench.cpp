@@ -24,7 +24,7 @@ Benchmark addSdfBenchmark(CLI::App& app)
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("sdf", "Full volume build vs OpenVDB's bare conversion");
     command->add_option("mesh", options->mesh, "Mesh file or scene:<name>")->required();
-    command->add_option("--res", options->resolution, "Voxels across [-2.5,2.5]")->capture_default_str();
+    command->add_option("--volume-res", options->resolution, "Volume resolution: voxels across [-2.5,2.5]")->capture_default_str();
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {

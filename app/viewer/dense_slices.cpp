@@ -87,6 +87,22 @@ private:
     std::atomic<bool> mCancelled{false};
 };
 
+/// (phi, gradient) of voxel @a ijk of a distance grid and its gradient grid.
+glm::vec4 voxelSample(openvdb::FloatGrid::ConstAccessor& phi, openvdb::Vec3SGrid::ConstAccessor& gradient,
+                      const openvdb::Coord& ijk)
+{
+    const openvdb::Vec3s g = gradient.getValue(ijk);
+    return {phi.getValue(ijk), g.x(), g.y(), g.z()};
+}
+
+/// (phi, gradient) of the CPU's distance field at @a p.
+glm::vec4 fieldSample(render::DistanceField::Sampler& sampler, const glm::vec3& p)
+{
+    glm::vec3 gradient;
+    const float phi = sampler.phiAndGradient(p, gradient);
+    return {phi, gradient};
+}
+
 template <typename T>
 std::size_t indexOf(const DenseBox<T>& box, int x, int y, int z)
 {
@@ -132,15 +148,16 @@ int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOpti
     int resolution = volume.options.resolution;
     for (;;) {
         int largest = farLargest;
-        // Per band voxel 8 bytes: band phi + triangle, or (without a far field) far copy + triangle.
-        const std::size_t bytes = 4 * farCount + 8 * voxelCount(band, resolution, largest);
+        // Per band voxel 20 bytes: band (phi, gradient) + triangle, or (without a far field) far copy
+        // + triangle; per far voxel 16 bytes.
+        const std::size_t bytes = 16 * farCount + 20 * voxelCount(band, resolution, largest);
         if (bytes <= options.budgetBytes && largest <= options.maxTextureSize) return resolution;
         if (resolution <= 16)
             throw ValueError("the volume textures do not fit " + std::to_string(options.budgetBytes >> 20) +
                              " MiB even at resolution 16");
         // Bytes scale with N^3 and dims with N: jump close to the answer, then creep down.
-        const double room = double(options.budgetBytes) - 4.0 * double(farCount);
-        const double scale = std::min(std::cbrt(std::max(room, 1.0) / double(bytes - 4 * farCount)),
+        const double room = double(options.budgetBytes) - 16.0 * double(farCount);
+        const double scale = std::min(std::cbrt(std::max(room, 1.0) / double(bytes - 16 * farCount)),
                                       double(options.maxTextureSize) / double(largest));
         resolution = std::max(16, std::min(resolution - 1, int(std::floor(resolution * scale * 0.999))));
     }
@@ -161,10 +178,11 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.localRadii = scene.localRadii();
     slices.unsignedDistance = field.isUnsigned();
     const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
+    const openvdb::Vec3SGrid& farGradient = volume.farPhi ? *volume.farGradient : *volume.gradient;
     slices.outside = farSource.background();
     slices.farResolution = volume.farPhi ? volume.options.farFieldResolution : slices.shownResolution;
     slices.farVoxelSize = float(vdb::BoxLattice{slices.farResolution}.voxelSize());
-    slices.trustBelow = volume.phi->background() + float(farSource.voxelSize()[0]);
+    slices.trustBelow = field.fineTrustBelow();
     const bool exact = slices.exact();
     const WorldBox bandBox = activeWorldBox(*volume.phi);
 
@@ -176,31 +194,34 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     if (interrupter) interrupter->start("GPU volume");
     SliceRunner runner(interrupter, slices.far.dims[2] + slices.band.dims[2] + slices.triangles.dims[2]);
 
-    // Far copy: render::DenseGrid's values (the source grid's voxels); resampled only without a far field.
-    DenseBox<float>& far = slices.far;
+    // Far copy: render::DenseGrid's voxels (phi and gradient of the source grids); resampled only
+    // without a far field.
+    DenseBox<glm::vec4>& far = slices.far;
     const bool farIsCopy = slices.hasFineBand || exact;
     runner.run(field, far.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
-        auto accessor = farSource.getConstAccessor();
+        auto phis = farSource.getConstAccessor();
+        auto gradients = farGradient.getConstAccessor();
         for (int y = 0; y < far.dims[1]; ++y)
             for (int x = 0; x < far.dims[0]; ++x) {
                 const openvdb::Coord ijk(farFirst[0] + x, farFirst[1] + y, farFirst[2] + z);
                 const glm::vec3 centre = far.origin + slices.farVoxelSize * glm::vec3(float(x), float(y), float(z));
-                far.values[indexOf(far, x, y, z)] = farIsCopy ? accessor.getValue(ijk) : sampler.phi(centre);
+                far.values[indexOf(far, x, y, z)] = farIsCopy ? voxelSample(phis, gradients, ijk) : fieldSample(sampler, centre);
             }
     });
 
     // Fine band: the voxel where it is active; resampled, the field where the fine cell is in the band.
-    DenseBox<float>& band = slices.band;
+    DenseBox<glm::vec4>& band = slices.band;
     const float fineVoxel = float(volume.lattice().voxelSize());
     const glm::vec3 fineOrigin(float(volume.lattice().worldFromIndex(0.0)));
     runner.run(field, band.dims[2], [&](int z, render::DistanceField::Sampler& sampler) {
         auto accessor = volume.phi->getConstAccessor();
+        auto gradients = volume.gradient->getConstAccessor();
         for (int y = 0; y < band.dims[1]; ++y)
             for (int x = 0; x < band.dims[0]; ++x) {
-                float value = kInactiveBandValue;
+                glm::vec4 value(kInactiveBandValue, 0.0f, 0.0f, 0.0f);
                 if (exact) {
-                    if (!accessor.probeValue(openvdb::Coord(bandFirst[0] + x, bandFirst[1] + y, bandFirst[2] + z), value))
-                        value = kInactiveBandValue;
+                    const openvdb::Coord ijk(bandFirst[0] + x, bandFirst[1] + y, bandFirst[2] + z);
+                    if (accessor.isValueOn(ijk)) value = voxelSample(accessor, gradients, ijk);
                 } else {
                     const glm::vec3 centre = band.origin + slices.voxelSize * glm::vec3(float(x), float(y), float(z));
                     const glm::vec3 q = (centre - fineOrigin) / fineVoxel;
@@ -208,7 +229,7 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
                     bool inBand = true;
                     for (int i = 0; i < 8 && inBand; ++i)
                         inBand = accessor.isValueOn(base.offsetBy(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-                    if (inBand) value = sampler.phi(centre);
+                    if (inBand) value = fieldSample(sampler, centre);
                 }
                 band.values[indexOf(band, x, y, z)] = value;
             }

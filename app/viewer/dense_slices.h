@@ -11,6 +11,7 @@
 #include <ivis/render/render_scene.h>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <cstddef>
@@ -40,11 +41,11 @@ struct DenseBox {
 /// @brief What the shaders sample, and how it was made.
 struct DenseSlices {
     /// The CPU's dense far copy (render::DenseGrid of the far field, or of the fine grid when the
-    /// volume has no far field), at farResolution; outside it phi is @a outside.
-    DenseBox<float> far;
-    /// Fine band phi at shownResolution over the band's active box plus one voxel;
-    /// kInactiveBandValue where the CPU would not use the band. Empty when !hasFineBand.
-    DenseBox<float> band;
+    /// volume has no far field): (phi, exact gradient) at farResolution; outside it phi is @a outside.
+    DenseBox<glm::vec4> far;
+    /// Fine band (phi, exact gradient) at shownResolution over the band's active box plus one voxel;
+    /// phi = kInactiveBandValue where the CPU would not use the band. Empty when !hasFineBand.
+    DenseBox<glm::vec4> band;
     /// Closest triangle at shownResolution over the band's active box plus one voxel (-1 = none),
     /// read at the nearest voxel as DistanceField::Sampler::nearestTriangle.
     DenseBox<std::int32_t> triangles;
@@ -82,7 +83,7 @@ int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOpti
 
 /// @brief Fills the boxes at chooseShownResolution(). At the volume's own resolution every value
 ///        is a voxel of the grids, so the shaders interpolate exactly the numbers the CPU does.
-///        Resampled (N' < N): band = DistanceField::Sampler::phi at the coarse centres whose fine
+///        Resampled (N' < N): band = DistanceField::Sampler::phiAndGradient at the coarse centres whose fine
 ///        cell lies in the band, triangle = the exact closest triangle (BVH) of each centre within
 ///        2.5 coarse voxels of the surface; without a far field the far copy itself is resampled.
 /// @param interrupter progress (percent) and cancel

@@ -27,9 +27,9 @@ VolumeTextures::VolumeTextures()
 void VolumeTextures::upload(const DenseSlices& slices)
 {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    uploadBox(mFar, GL_R32F, GL_RED, GL_FLOAT, slices.far.dims, slices.far.values.data(),
+    uploadBox(mFar, GL_RGBA32F, GL_RGBA, GL_FLOAT, slices.far.dims, slices.far.values.data(),
               "uploading the far-field texture");
-    uploadBox(mBand, GL_R32F, GL_RED, GL_FLOAT, slices.band.dims, slices.band.values.data(),
+    uploadBox(mBand, GL_RGBA32F, GL_RGBA, GL_FLOAT, slices.band.dims, slices.band.values.data(),
               "uploading the band texture");
     uploadBox(mTriangles, GL_R32I, GL_RED_INTEGER, GL_INT, slices.triangles.dims, slices.triangles.values.data(),
               "uploading the triangle texture");

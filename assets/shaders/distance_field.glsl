@@ -1,6 +1,7 @@
 // The distance field phi: volume textures and their trilinear sampling (render::DistanceField).
-// ---- volume (dense_slices.h): the CPU's dense far copy, the fine band and closest triangles, all
-// R32F / R32I 3D textures fetched texel by texel (no filtering: the trilinear cells are the CPU's)
+// ---- volume (dense_slices.h): the CPU's dense far copy and the fine band, RGBA32F 3D textures of
+// (phi, exact gradient), and the closest triangles, R32I; fetched texel by texel (no filtering:
+// the trilinear cells are the CPU's)
 layout(binding = 1) uniform sampler3D uFar;
 layout(binding = 2) uniform isampler3D uTriangles;
 layout(binding = 3) uniform sampler2D uColormap;  // 256 x 1, linear RGB of core::colormap(name).at(i / 255)
@@ -22,22 +23,25 @@ uniform bool uUnsigned;         // phi is an unsigned distance (open mesh)
 
 uniform float uBoxHalf;         // 2.5: the volume's box
 
-// render::detail::trilinear: corners c[dx | dy << 1 | dz << 2], gradient in index units.
-float trilinear(float c[8], vec3 t, out vec3 gradient)
+// render::detail::blend: corners c[dx | dy << 1 | dz << 2] = (phi, exact gradient) of a cell of
+// size h at fractions t; the trilinear blend of the gradients, and of each corner's first-order
+// Taylor extrapolation of phi.
+vec4 blend(vec4 c[8], vec3 t, float h)
 {
-    float x00 = c[0] + t.x * (c[1] - c[0]);
-    float x10 = c[2] + t.x * (c[3] - c[2]);
-    float x01 = c[4] + t.x * (c[5] - c[4]);
-    float x11 = c[6] + t.x * (c[7] - c[6]);
-    float y0 = x00 + t.y * (x10 - x00);
-    float y1 = x01 + t.y * (x11 - x01);
-    float dx0 = (c[1] - c[0]) + t.y * ((c[3] - c[2]) - (c[1] - c[0]));
-    float dx1 = (c[5] - c[4]) + t.y * ((c[7] - c[6]) - (c[5] - c[4]));
-    gradient = vec3(dx0 + t.z * (dx1 - dx0), (x10 - x00) + t.z * ((x11 - x01) - (x10 - x00)), y1 - y0);
-    return y0 + t.z * (y1 - y0);
+    vec3 s = vec3(1.0) - t;
+    float w[8] = float[8](s.x * s.y * s.z, t.x * s.y * s.z, s.x * t.y * s.z, t.x * t.y * s.z,
+                          s.x * s.y * t.z, t.x * s.y * t.z, s.x * t.y * t.z, t.x * t.y * t.z);
+    vec4 sum = vec4(0.0);
+    float towardsCorner = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        sum += w[i] * c[i];
+        towardsCorner += w[i] * dot(c[i].yzw, vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+    }
+    sum.x += h * (dot(sum.yzw, t) - towardsCorner);
+    return sum;
 }
 
-// render::DenseGrid::valueAndGradient on the far copy (gradient in world units).
+// render::DenseGrid::valueAndGradient on the far copy.
 float farValueAndGradient(vec3 p, out vec3 gradient)
 {
     gradient = vec3(0.0);
@@ -45,25 +49,28 @@ float farValueAndGradient(vec3 p, out vec3 gradient)
     vec3 f = floor(q);
     if (!(all(greaterThanEqual(f, vec3(0.0))) && all(lessThan(f, vec3(uFarDims - 1))))) return uOutside;
     ivec3 b = ivec3(f);
-    float c[8];
-    for (int i = 0; i < 8; ++i) c[i] = texelFetch(uFar, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0).r;
-    float value = trilinear(c, q - f, gradient);
-    gradient *= uFarInvVoxel;
-    return value;
+    vec4 c[8];
+    for (int i = 0; i < 8; ++i) c[i] = texelFetch(uFar, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0);
+    vec4 blended = blend(c, q - f, 1.0 / uFarInvVoxel);
+    gradient = blended.yzw;
+    return blended.x;
 }
 
-// render::DistanceField::Sampler::fineCell: the 8 band values of p's cell, false unless all are in the band.
-bool bandCell(vec3 p, out float c[8], out vec3 t)
+// render::DistanceField::Sampler::fineSample: the blended band sample at p, false unless all eight
+// corners of its cell are in the band.
+bool bandSample(vec3 p, out vec4 blended)
 {
+    blended = vec4(0.0);
     vec3 q = (p - uBandOrigin) * uInvVoxel;
     vec3 f = floor(q);
-    t = q - f;
     if (!(all(greaterThanEqual(f, vec3(0.0))) && all(lessThan(f, vec3(uBandDims - 1))))) return false;
     ivec3 b = ivec3(f);
+    vec4 c[8];
     for (int i = 0; i < 8; ++i) {
-        c[i] = texelFetch(uBand, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0).r;
-        if (c[i] > 1e29) return false;  // kInactiveBandValue
+        c[i] = texelFetch(uBand, b + ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1), 0);
+        if (c[i].x > 1e29) return false;  // kInactiveBandValue
     }
+    blended = blend(c, q - f, uVoxel);
     return true;
 }
 
@@ -73,12 +80,10 @@ float phiAndGradient(vec3 p, out vec3 gradient)
 {
     float far = farValueAndGradient(p, gradient);
     if (!uHasFineBand || far > uTrustBelow) return far;
-    float c[8];
-    vec3 t, bandGradient;
-    if (!bandCell(p, c, t)) return far;
-    float value = trilinear(c, t, bandGradient);
-    gradient = bandGradient * uInvVoxel;
-    return value;
+    vec4 blended;
+    if (!bandSample(p, blended)) return far;
+    gradient = blended.yzw;
+    return blended.x;
 }
 
 // render::DistanceField::Sampler::phi

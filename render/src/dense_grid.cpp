@@ -2,39 +2,31 @@
 
 #include <ivis/core/errors.h>
 
-#include <utility>
-
 namespace ivis::render {
 
-DenseGrid::DenseGrid(const openvdb::FloatGrid& grid)
+DenseGrid::DenseGrid(const openvdb::FloatGrid& phi, const openvdb::Vec3SGrid& gradient)
 {
-    mVoxelSize = float(grid.voxelSize()[0]);
+    IVIS_CHECK(phi.tree().hasSameTopology(gradient.tree()));
+    mVoxelSize = float(phi.voxelSize()[0]);
     mInvVoxelSize = 1.0f / mVoxelSize;
-    mBackground = grid.background();
-    openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+    mBackground = phi.background();
+    openvdb::CoordBBox box = phi.evalActiveVoxelBoundingBox();
     box.expand(1);
     const openvdb::Coord dims = box.dim();
     for (int a = 0; a < 3; ++a) mDims[a] = dims[a];
-    const openvdb::Vec3d origin = grid.indexToWorld(box.min());
+    const openvdb::Vec3d origin = phi.indexToWorld(box.min());
     mOrigin = glm::vec3(origin.x(), origin.y(), origin.z());
-    mValues.resize(std::size_t(dims.x()) * dims.y() * dims.z());
-    auto accessor = grid.getConstAccessor();
+    mVoxels.resize(std::size_t(dims.x()) * dims.y() * dims.z());
+    auto phiAccessor = phi.getConstAccessor();
+    auto gradientAccessor = gradient.getConstAccessor();
     std::size_t i = 0;
     for (int z = box.min().z(); z <= box.max().z(); ++z)
         for (int y = box.min().y(); y <= box.max().y(); ++y)
-            for (int x = box.min().x(); x <= box.max().x(); ++x) mValues[i++] = accessor.getValue({x, y, z});
-}
-
-DenseGrid::DenseGrid(const glm::vec3& origin, const std::array<int, 3>& dims, float voxelSize,
-                     std::vector<float> values, float background)
-    : mValues(std::move(values)),
-      mOrigin(origin),
-      mVoxelSize(voxelSize),
-      mInvVoxelSize(1.0f / voxelSize),
-      mBackground(background)
-{
-    for (int a = 0; a < 3; ++a) mDims[a] = dims[a];
-    IVIS_CHECK(mValues.size() == std::size_t(dims[0]) * dims[1] * dims[2]);
+            for (int x = box.min().x(); x <= box.max().x(); ++x) {
+                const openvdb::Coord ijk(x, y, z);
+                const openvdb::Vec3s g = gradientAccessor.getValue(ijk);
+                mVoxels[i++] = glm::vec4(phiAccessor.getValue(ijk), g.x(), g.y(), g.z());
+            }
 }
 
 }  // namespace ivis::render

@@ -1,6 +1,6 @@
 // DistanceField::Sampler on a unit sphere (fine band at resolution 100, far field at 40): phi and
-// its gradient against the exact sphere distance |p| - 1, the gradient against central differences
-// inside one cell, the nearest triangle against a brute-force search, and the Hessian against the
+// its gradient against the exact sphere distance |p| - 1, the gradient against the blend of the
+// brute-force gradients at the cell's corners and across voxel faces, the nearest triangle against a brute-force search, and the Hessian against the
 // sphere's (I - n n^T) / |p|.
 #include "brute_force.h"
 #include "render/scene_fixture.h"
@@ -11,6 +11,7 @@
 #include <ivis/render/distance_field.h>
 #include <ivis/vdb/surface_volume.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
@@ -54,26 +55,62 @@ TEST(DistanceField, PhiAndGradientMatchTheSphereInTheBandAndTheFarField)
     }
 }
 
-TEST(DistanceField, GradientIsTheCentralDifferenceOfPhiInsideACell)
+/// The exact distance gradient of the mesh at @a p: from the brute-force closest point, outward.
+glm::dvec3 exactGradient(const test::BruteForceClosest& brute, const glm::dvec3& p)
+{
+    const glm::dvec3 away = p - brute.closest(p).point;
+    return away / glm::length(away) * (brute.windingNumber(p) > 0.5 ? -1.0 : 1.0);
+}
+
+TEST(DistanceField, GradientIsTheTrilinearBlendOfTheExactCornerGradients)
+{
+    const DistanceField field(sphere().volume);
+    auto sampler = field.sampler();
+    const test::BruteForceClosest brute(sphere().field.mesh);
+    const vdb::BoxLattice fineLattice = sphere().volume.lattice(), farLattice = sphere().volume.farLattice();
+    // In the band (radius 1.02) and in the far field (1.4), at points off the voxel centres.
+    for (const auto& [radius, lattice] : {std::pair{1.02, fineLattice}, {1.4, farLattice}}) {
+        for (const glm::vec3& n : test::fibonacciDirections(50)) {
+            const glm::dvec3 p = radius * glm::dvec3(n);
+            glm::dvec3 cell, t;
+            for (int a = 0; a < 3; ++a) {
+                cell[a] = std::floor(lattice.indexFromWorld(p[a]));
+                t[a] = lattice.indexFromWorld(p[a]) - cell[a];
+            }
+            glm::dvec3 expected(0.0);
+            for (int i = 0; i < 8; ++i) {
+                const glm::dvec3 corner(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+                glm::dvec3 x;
+                for (int a = 0; a < 3; ++a) x[a] = lattice.worldFromIndex(cell[a] + corner[a]);
+                const glm::dvec3 w = glm::mix(glm::dvec3(1.0) - t, t, corner);
+                expected += w.x * w.y * w.z * exactGradient(brute, x);
+            }
+            glm::vec3 gradient;
+            sampler.phiAndGradient(glm::vec3(p), gradient);
+            EXPECT_LT(glm::length(glm::dvec3(gradient) - expected), 1e-4) << "at radius " << radius;
+        }
+    }
+}
+
+TEST(DistanceField, GradientIsContinuousAcrossVoxelFaces)
 {
     const DistanceField field(sphere().volume);
     auto sampler = field.sampler();
     const vdb::BoxLattice fineLattice = sphere().volume.lattice(), farLattice = sphere().volume.farLattice();
+    // The gradient of a trilinear phi jumps by up to h / radius across a face; the blend does not.
     for (const auto& [radius, lattice] : {std::pair{1.02, fineLattice}, {1.4, farLattice}}) {
-        const double h = 0.05 * lattice.voxelSize();
+        const double side = 1e-4 * lattice.voxelSize();
         for (const glm::vec3& n : test::fibonacciDirections(50)) {
-            // The centre of the cell containing the point: +-h stays inside that cell.
-            glm::dvec3 p;
-            for (int a = 0; a < 3; ++a)
-                p[a] = lattice.worldFromIndex(std::floor(lattice.indexFromWorld(radius * n[a])) + 0.5);
-            glm::vec3 gradient;
-            sampler.phiAndGradient(glm::vec3(p), gradient);
             for (int a = 0; a < 3; ++a) {
-                glm::dvec3 up = p, down = p;
-                up[a] += h;
-                down[a] -= h;
-                const double difference = (sampler.phi(glm::vec3(up)) - sampler.phi(glm::vec3(down))) / (2.0 * h);
-                EXPECT_NEAR(gradient[a], difference, 2e-3) << "axis " << a << " at radius " << radius;
+                glm::dvec3 p = radius * glm::dvec3(n);
+                p[a] = lattice.worldFromIndex(std::floor(lattice.indexFromWorld(p[a])));  // on a face
+                glm::dvec3 before = p, after = p;
+                before[a] -= side;
+                after[a] += side;
+                glm::vec3 g0, g1;
+                sampler.phiAndGradient(glm::vec3(before), g0);
+                sampler.phiAndGradient(glm::vec3(after), g1);
+                EXPECT_LT(glm::length(g1 - g0), 1e-3) << "axis " << a << " at radius " << radius;
             }
         }
     }

@@ -1,5 +1,5 @@
-// Volume build against exhaustive closest-point search: distances, signs, triangle IDs and
-// barycentrics of every active voxel within the hull distance phi0 = 0.4.
+// Volume build against exhaustive closest-point search: distances, signs, triangle IDs,
+// barycentrics and distance gradients of every active voxel within the hull distance phi0 = 0.4.
 #include "brute_force.h"
 #include "test_support.h"
 
@@ -28,6 +28,7 @@ struct VoxelSample {
     float phi;
     std::int32_t triangle;       // -1 for far-field voxels
     openvdb::Vec3s barycentric;  // zero for far-field voxels
+    openvdb::Vec3s gradient;
     double voxelSize;
 };
 
@@ -37,27 +38,31 @@ std::vector<VoxelSample> samplesWithinHull(const SurfaceVolume& volume)
     std::vector<VoxelSample> samples;
     auto triangle = volume.triangle->getConstAccessor();
     auto bary = volume.barycentric->getConstAccessor();
+    auto gradient = volume.gradient->getConstAccessor();
     for (auto it = volume.phi->cbeginValueOn(); it; ++it) {
         if (std::abs(*it) > kHullOffset) continue;
         const openvdb::Vec3d p = volume.phi->indexToWorld(it.getCoord());
         samples.push_back({{p.x(), p.y(), p.z()}, *it, triangle.getValue(it.getCoord()),
-                           bary.getValue(it.getCoord()), volume.voxelSize()});
+                           bary.getValue(it.getCoord()), gradient.getValue(it.getCoord()), volume.voxelSize()});
     }
     if (volume.farPhi) {
         auto fine = volume.phi->getConstAccessor();
+        auto farGradient = volume.farGradient->getConstAccessor();
         const double farVoxel = volume.farPhi->voxelSize()[0];
         for (auto it = volume.farPhi->cbeginValueOn(); it; ++it) {
             if (std::abs(*it) > kHullOffset) continue;
             const openvdb::Vec3d p = volume.farPhi->indexToWorld(it.getCoord());
             if (fine.isValueOn(volume.phi->transform().worldToIndexCellCentered(p))) continue;
-            samples.push_back({{p.x(), p.y(), p.z()}, *it, -1, openvdb::Vec3s(0.0f), farVoxel});
+            samples.push_back({{p.x(), p.y(), p.z()}, *it, -1, openvdb::Vec3s(0.0f),
+                               farGradient.getValue(it.getCoord()), farVoxel});
         }
     }
     return samples;
 }
 
 struct Report {
-    std::size_t samples = 0, distanceFailures = 0, signFailures = 0, pointFailures = 0, missingTriangle = 0;
+    std::size_t samples = 0, distanceFailures = 0, signFailures = 0, pointFailures = 0, missingTriangle = 0,
+                gradientFailures = 0;
     double worstDistanceErrorVoxels = 0.0;
 };
 
@@ -84,6 +89,19 @@ Report compareWithBruteForce(const core::TriangleMesh& mesh, const SurfaceVolume
             } else if (s.phi < 0.0f) {
                 ++local.signFailures;
             }
+            // The gradient: the unit vector from the closest point, signed as phi (ties excepted,
+            // where either closest point's direction is exact).
+            if (distance > 1e-3 * s.voxelSize) {
+                const glm::dvec3 expected = (s.position - exact.point) / (s.phi < 0.0f ? -distance : distance);
+                const glm::dvec3 ours(s.gradient.x(), s.gradient.y(), s.gradient.z());
+                const bool unit = std::abs(glm::length(ours) - 1.0) < 1e-4;
+                if (!unit || glm::length(ours - expected) > 1e-3) {
+                    // A tie: another closest point as near, whose direction ours is.
+                    const glm::dvec3 other = s.position - (s.phi < 0.0f ? -1.0 : 1.0) * distance * ours;
+                    if (!unit || std::abs(std::sqrt(brute.closest(other).distanceSquared)) > 1e-3 * s.voxelSize)
+                        ++local.gradientFailures;
+                }
+            }
             if (s.voxelSize != volume.voxelSize()) continue;  // far field carries no triangle
             if (s.triangle < 0) {
                 ++local.missingTriangle;
@@ -103,6 +121,7 @@ Report compareWithBruteForce(const core::TriangleMesh& mesh, const SurfaceVolume
         report.signFailures += local.signFailures;
         report.pointFailures += local.pointFailures;
         report.missingTriangle += local.missingTriangle;
+        report.gradientFailures += local.gradientFailures;
         report.worstDistanceErrorVoxels = std::max(report.worstDistanceErrorVoxels, local.worstDistanceErrorVoxels);
     });
     return report;
@@ -118,6 +137,7 @@ void expectExact(const core::TriangleMesh& mesh, const VolumeOptions& options, b
     EXPECT_EQ(r.signFailures, 0u);
     EXPECT_EQ(r.pointFailures, 0u);
     EXPECT_EQ(r.missingTriangle, 0u);
+    EXPECT_EQ(r.gradientFailures, 0u);
     EXPECT_GE(volume.reach(), kHullOffset);
 }
 
@@ -158,6 +178,7 @@ TEST(MeshToLevelSet, FineBandWithCoarseFarFieldIsExact)
     EXPECT_EQ(r.signFailures, 0u);
     EXPECT_EQ(r.pointFailures, 0u);
     EXPECT_EQ(r.missingTriangle, 0u);
+    EXPECT_EQ(r.gradientFailures, 0u);
 }
 
 TEST(MeshToLevelSet, CappedVesselTreeIsSignedAndExact)

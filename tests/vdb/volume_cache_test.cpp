@@ -55,7 +55,9 @@ TEST(VolumeCache, RoundTripKeepsEveryGrid)
     expectSameGrid(*built.phi, *read.phi);
     expectSameGrid(*built.triangle, *read.triangle);
     expectSameGrid(*built.barycentric, *read.barycentric);
+    expectSameGrid(*built.gradient, *read.gradient);
     expectSameGrid(*built.farPhi, *read.farPhi);
+    expectSameGrid(*built.farGradient, *read.farGradient);
     EXPECT_EQ(read.meshHash, built.meshHash);
     EXPECT_EQ(read.options.resolution, 96);
     EXPECT_EQ(read.triangle->background(), -1);

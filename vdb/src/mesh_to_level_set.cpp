@@ -1,5 +1,6 @@
 // Builds a SurfaceVolume: OpenVDB's mesh-to-volume conversion for the band and the sign, then an
-// exact closest-point pass that fixes distance, triangle ID and barycentrics of every band voxel.
+// exact closest-point pass that fixes distance, triangle ID, barycentrics and distance gradient of
+// every band voxel, and distance and gradient of every far-field voxel.
 #include <ivis/vdb/surface_volume.h>
 
 #include <ivis/core/closest_point.h>
@@ -16,7 +17,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace ivis::vdb {
@@ -59,29 +59,44 @@ private:
     core::Interrupter* mInner;
 };
 
-/// Exact distance, closest triangle and barycentrics for every band voxel. The sign is OpenVDB's,
-/// except within two voxels of a closed, manifold, consistently oriented surface, where the
-/// pseudo-normal test is exact (OpenVDB's flood fill mislabels crevices narrower than a voxel).
-/// OpenVDB's band values are distances to actual polygons, so |phi| bounds the search radius; a
-/// search that finds nothing within it (never seen) retries without bound.
-void refineClosestPoints(const core::TriangleMesh& mesh, SurfaceVolume& volume)
+/// Unit gradient of the distance at @a p whose closest surface point is @a closest on @a triangle,
+/// for the signed value @a phi: (p - closest) / phi; on the surface itself the triangle's normal.
+openvdb::Vec3s distanceGradient(const core::TriangleMesh& mesh, int triangle, const glm::dvec3& p,
+                                const glm::dvec3& closest, double phi)
+{
+    glm::dvec3 direction = p - closest;
+    double length = glm::length(direction);
+    if (length < 1e-9) {
+        const auto& t = mesh.triangles[std::size_t(triangle)];
+        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        direction = glm::cross(b - a, c - a);
+        length = glm::length(direction);
+        if (length == 0.0) return openvdb::Vec3s(0.0f);
+    }
+    direction *= (phi < 0.0 ? -1.0 : 1.0) / length;
+    return openvdb::Vec3s(float(direction.x), float(direction.y), float(direction.z));
+}
+
+/// Exact distance, closest triangle, barycentrics and distance gradient for every band voxel. The
+/// sign is OpenVDB's, except within two voxels of a closed, manifold, consistently oriented
+/// surface, where the pseudo-normal test is exact (OpenVDB's flood fill mislabels crevices
+/// narrower than a voxel). OpenVDB's band values are distances to actual polygons, so |phi| bounds
+/// the search radius; a search that finds nothing within it (never seen) retries without bound.
+void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, SurfaceVolume& volume)
 {
     using namespace openvdb;
-    const core::TriangleBvh bvh(mesh);
     const core::PseudoNormals pseudoNormals(mesh);
-    const bool exactSignNearSurface = !volume.unsignedDistance && pseudoNormals.usable();
-    const double voxelSize = volume.voxelSize();
-    const BoxLattice lattice = volume.lattice();
-    Int32Tree& triangleTree = volume.triangle->tree();
-    Vec3STree& baryTree = volume.barycentric->tree();
     const bool isUnsigned = volume.unsignedDistance;
-
+    const bool exactSignNearSurface = !isUnsigned && pseudoNormals.usable();
+    const BoxLattice lattice = volume.lattice();
+    const double voxelSize = lattice.voxelSize();
     tree::LeafManager<FloatTree> leaves(volume.phi->tree());
     tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
         for (auto leaf = range.begin(); leaf; ++leaf) {
-            Int32Tree::LeafNodeType* triangleLeaf = triangleTree.probeLeaf(leaf->origin());
-            Vec3STree::LeafNodeType* baryLeaf = baryTree.probeLeaf(leaf->origin());
-            IVIS_CHECK(triangleLeaf && baryLeaf);
+            Int32Tree::LeafNodeType* triangleLeaf = volume.triangle->tree().probeLeaf(leaf->origin());
+            Vec3STree::LeafNodeType* baryLeaf = volume.barycentric->tree().probeLeaf(leaf->origin());
+            Vec3STree::LeafNodeType* gradientLeaf = volume.gradient->tree().probeLeaf(leaf->origin());
+            IVIS_CHECK(triangleLeaf && baryLeaf && gradientLeaf);
             for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
                 const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
                 const glm::dvec3 p(centre.x(), centre.y(), centre.z());
@@ -93,13 +108,57 @@ void refineClosestPoints(const core::TriangleMesh& mesh, SurfaceVolume& volume)
                 bool inside = !isUnsigned && *voxel < 0.0f;
                 if (exactSignNearSurface && distance < 2.0 * voxelSize)
                     inside = glm::dot(p - best.point, pseudoNormals.at(triangle, best.barycentric)) < 0.0;
-                voxel.setValue(float(inside ? -distance : distance));
+                const double value = inside ? -distance : distance;
+                voxel.setValue(float(value));
                 triangleLeaf->setValueOnly(voxel.pos(), triangle);
                 baryLeaf->setValueOnly(voxel.pos(), Vec3s(float(best.barycentric.x), float(best.barycentric.y),
                                                           float(best.barycentric.z)));
+                gradientLeaf->setValueOnly(voxel.pos(), distanceGradient(mesh, triangle, p, best.point, value));
             }
         }
     });
+}
+
+/// Exact distance and gradient of every far-field voxel, by the bounded BVH query of the band (no
+/// triangle or barycentrics); the sign is OpenVDB's. (The triangles OpenVDB's polygon-index grid
+/// names at the voxel and its 26 neighbours cost a third as much but miss the closest triangle at
+/// some far voxels, whose gradients are then degrees off: docs/volume.md.)
+void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, const BoxLattice& lattice,
+                       openvdb::FloatGrid& phi, openvdb::Vec3SGrid& gradient)
+{
+    using namespace openvdb;
+    const double voxelSize = lattice.voxelSize();
+    tree::LeafManager<FloatTree> leaves(phi.tree());
+    tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
+        for (auto leaf = range.begin(); leaf; ++leaf) {
+            Vec3STree::LeafNodeType* gradientLeaf = gradient.tree().probeLeaf(leaf->origin());
+            IVIS_CHECK(gradientLeaf);
+            for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
+                const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
+                const glm::dvec3 p(centre.x(), centre.y(), centre.z());
+                int triangle = -1;
+                core::TrianglePoint closest = bvh.closestPoint(p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
+                if (triangle < 0) closest = bvh.closestPoint(p, std::numeric_limits<double>::infinity(), triangle);
+                IVIS_CHECK(triangle >= 0);
+                const double distance = std::sqrt(closest.distanceSquared);
+                const double value = *voxel < 0.0f ? -distance : distance;
+                voxel.setValue(float(value));
+                gradientLeaf->setValueOnly(voxel.pos(), distanceGradient(mesh, triangle, p, closest.point, value));
+            }
+        }
+    });
+}
+
+/// A grid of @a type over the topology of @a phi, named @a name, with @a background.
+template <typename GridT>
+typename GridT::Ptr topologyCopy(const openvdb::FloatGrid& phi, const typename GridT::ValueType& background,
+                                 const char* name)
+{
+    auto grid = GridT::create(background);
+    grid->setTree(std::make_shared<typename GridT::TreeType>(phi.tree(), background, openvdb::TopologyCopy()));
+    grid->setTransform(phi.transform().copy());
+    grid->setName(name);
+    return grid;
 }
 
 }  // namespace
@@ -148,17 +207,11 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
                                   interrupter);
     volume.phi->setName("phi");
 
-    volume.triangle = openvdb::Int32Grid::create(-1);
-    volume.triangle->setTree(std::make_shared<openvdb::Int32Tree>(volume.phi->tree(), -1, openvdb::TopologyCopy()));
-    volume.triangle->setTransform(volume.phi->transform().copy());
-    volume.triangle->setName("triangle");
-    volume.barycentric = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
-    volume.barycentric->setTree(
-        std::make_shared<openvdb::Vec3STree>(volume.phi->tree(), openvdb::Vec3s(0.0f), openvdb::TopologyCopy()));
-    volume.barycentric->setTransform(volume.phi->transform().copy());
-    volume.barycentric->setName("barycentric");
-
-    refineClosestPoints(mesh, volume);
+    volume.triangle = topologyCopy<openvdb::Int32Grid>(*volume.phi, -1, "triangle");
+    volume.barycentric = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "barycentric");
+    volume.gradient = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "gradient");
+    const core::TriangleBvh bvh(mesh);
+    refineClosestPoints(mesh, bvh, volume);
 
     if (!fineReachesHull) {
         const double farVoxel = volume.farLattice().voxelSize();
@@ -167,6 +220,8 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
         volume.farPhi = meshToNarrowBand(mesh, options.farFieldResolution, farExterior, farInterior,
                                 volume.unsignedDistance, interrupter, nullptr);
         volume.farPhi->setName("far_phi");
+        volume.farGradient = topologyCopy<openvdb::Vec3SGrid>(*volume.farPhi, openvdb::Vec3s(0.0f), "far_gradient");
+        farFieldDistances(mesh, bvh, volume.farLattice(), *volume.farPhi, *volume.farGradient);
     }
     return volume;
 }

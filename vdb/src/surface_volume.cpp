@@ -43,7 +43,9 @@ std::size_t SurfaceVolume::memoryBytes() const
     if (phi) bytes += phi->memUsage();
     if (triangle) bytes += triangle->memUsage();
     if (barycentric) bytes += barycentric->memUsage();
+    if (gradient) bytes += gradient->memUsage();
     if (farPhi) bytes += farPhi->memUsage();
+    if (farGradient) bytes += farGradient->memUsage();
     return bytes;
 }
 

@@ -44,7 +44,9 @@ std::string checksum(const SurfaceVolume& volume)
     hashGrid(*volume.phi, hash);
     hashGrid(*volume.triangle, hash);
     hashGrid(*volume.barycentric, hash);
+    hashGrid(*volume.gradient, hash);
     if (volume.farPhi) hashGrid(*volume.farPhi, hash);
+    if (volume.farGradient) hashGrid(*volume.farGradient, hash);
     return hash.hex();
 }
 
@@ -137,7 +139,8 @@ const char* toString(CacheOutcome outcome)
 void writeVolume(const SurfaceVolume& volume, const std::string& path)
 {
     detail::initializeOpenVdb();
-    IVIS_CHECK(volume.phi && volume.triangle && volume.barycentric);
+    IVIS_CHECK(volume.phi && volume.triangle && volume.barycentric && volume.gradient);
+    IVIS_CHECK(bool(volume.farPhi) == bool(volume.farGradient));
     openvdb::MetaMap meta;
     meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kVolumeFormatVersion));
     meta.insertMeta(kMeshHashKey, openvdb::StringMetadata(core::toHex(volume.meshHash)));
@@ -149,8 +152,8 @@ void writeVolume(const SurfaceVolume& volume, const std::string& path)
     meta.insertMeta(kTrianglesKey, openvdb::Int64Metadata(openvdb::Int64(volume.triangleCount)));
     meta.insertMeta(kChecksumKey, openvdb::StringMetadata(checksum(volume)));
 
-    openvdb::GridCPtrVec grids{volume.phi, volume.triangle, volume.barycentric};
-    if (volume.farPhi) grids.push_back(volume.farPhi);
+    openvdb::GridCPtrVec grids{volume.phi, volume.triangle, volume.barycentric, volume.gradient};
+    if (volume.farPhi) grids.insert(grids.end(), {volume.farPhi, volume.farGradient});
 
     const fs::path target(path);
     if (target.has_parent_path()) {
@@ -179,8 +182,12 @@ SurfaceVolume readVolume(const std::string& path)
         volume.phi = findGrid<openvdb::FloatGrid>(grids, "phi", path);
         volume.triangle = findGrid<openvdb::Int32Grid>(grids, "triangle", path);
         volume.barycentric = findGrid<openvdb::Vec3SGrid>(grids, "barycentric", path);
+        volume.gradient = findGrid<openvdb::Vec3SGrid>(grids, "gradient", path);
         for (const auto& base : *grids)
-            if (base->getName() == "far_phi") volume.farPhi = findGrid<openvdb::FloatGrid>(grids, "far_phi", path);
+            if (base->getName() == "far_phi") {
+                volume.farPhi = findGrid<openvdb::FloatGrid>(grids, "far_phi", path);
+                volume.farGradient = findGrid<openvdb::Vec3SGrid>(grids, "far_gradient", path);
+            }
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
@@ -190,6 +197,11 @@ SurfaceVolume readVolume(const std::string& path)
         throw InputError(path + ": volume format version " + std::to_string(key.version) + ", expected " +
                          std::to_string(kVolumeFormatVersion));
     if (checksum(volume) != key.checksum) throw InputError(path + ": corrupt volume file (checksum mismatch)");
+    const bool sameTopology = volume.phi->tree().hasSameTopology(volume.triangle->tree()) &&
+                              volume.phi->tree().hasSameTopology(volume.barycentric->tree()) &&
+                              volume.phi->tree().hasSameTopology(volume.gradient->tree()) &&
+                              (!volume.farPhi || volume.farPhi->tree().hasSameTopology(volume.farGradient->tree()));
+    if (!sameTopology) throw InputError(path + ": corrupt volume file (grids of different extent)");
     volume.options.resolution = key.resolution;
     volume.options.bandVoxels = key.bandVoxels;
     volume.options.farFieldReach = key.reach;

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace ivis::optimize {
 namespace {
@@ -26,6 +27,24 @@ glm::vec3 surfaceGradient(const core::TriangleMesh& mesh, int triangle, const fl
     return (values[0] * glm::cross(unit, c - b) + values[1] * glm::cross(unit, a - c) +
             values[2] * glm::cross(unit, b - a)) /
            twiceArea;
+}
+
+/// The closest surface point of @a p (the landing rule of render::landedAt).
+glm::vec3 closestSurfacePoint(const render::RenderScene& scene, const glm::vec3& p)
+{
+    int triangle = -1;
+    return glm::vec3(scene.bvh().closestPoint(glm::dvec3(p), std::numeric_limits<double>::infinity(), triangle).point);
+}
+
+/// The derivative of the closest surface point as the ray's end @a p moves by @a dp: a central
+/// difference over a hundredth of a voxel. (Projecting dp onto the tangent plane would ignore that
+/// a point off a curved surface moves its closest point by 1 / (1 + phi kappa) less.)
+glm::vec3 closestPointDerivative(const render::RenderScene& scene, const glm::vec3& p, const glm::vec3& dp)
+{
+    const float length = glm::length(dp);
+    if (!(length > 0.0f)) return glm::vec3(0.0f);
+    const float step = 0.01f * scene.distance().voxelSize() / length;
+    return (closestSurfacePoint(scene, p + step * dp) - closestSurfacePoint(scene, p - step * dp)) / (2.0f * step);
 }
 
 }  // namespace
@@ -51,14 +70,9 @@ PixelLaunchDerivative pixelLaunchDerivative(const EnergyEvaluator& evaluator, co
     const render::PixelMapping landed = rays.landedAt(ray.end, sampler);
     const core::TriangleMesh& mesh = scene.mesh();
     if (landed.region != render::Region::Indirect || mesh.isCap(std::size_t(landed.point.triangle))) return result;
-    // The landing point moves with the part of the end position's tangent along the surface.
-    glm::vec3 normal;
-    sampler.phiAndGradient(ray.end.position, normal);
-    const float length = glm::length(normal);
-    normal = length > 0.0f ? normal / length : glm::vec3(0.0f);
     result.landed = true;
     result.point = landed.point;
-    result.dPoint = ray.dPosition - glm::dot(ray.dPosition, normal) * normal;
+    result.dPoint = closestPointDerivative(scene, ray.end.position, ray.dPosition);
     result.perParameter = sensitivity.perParameter;
     // A cell scalar is constant on the triangle: its corners agree and the gradient is zero.
     const std::array<float, 3> corners = core::cornerScalars(scene.field(), std::size_t(landed.point.triangle));

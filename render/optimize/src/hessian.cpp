@@ -1,21 +1,20 @@
 #include <ivis/optimize/hessian.h>
 
-#include <glm/matrix.hpp>
-
 namespace ivis::optimize {
 
-float HessianSampler::phiGradientHessian(const glm::vec3& p, glm::vec3& gradient, glm::mat3& hessian)
+float HessianSampler::phiGradientJacobian(const glm::vec3& p, glm::vec3& gradient, glm::mat3& jacobian,
+                                         glm::vec3& slope)
 {
     const float value = mSampler.phiAndGradient(p, gradient);
-    const float h = mSampler.field().servingVoxelSize(value);
+    const float h = kHessianStep * mSampler.field().servingVoxelSize(value);
     for (int axis = 0; axis < 3; ++axis) {
         glm::vec3 offset(0.0f), up, down;
         offset[axis] = h;
-        mSampler.phiAndGradient(p + offset, up);
-        mSampler.phiAndGradient(p - offset, down);
-        hessian[axis] = (up - down) / (2.0f * h);
+        const float above = mSampler.phiAndGradient(p + offset, up);
+        const float below = mSampler.phiAndGradient(p - offset, down);
+        jacobian[axis] = (up - down) / (2.0f * h);
+        slope[axis] = (above - below) / (2.0f * h);
     }
-    hessian = 0.5f * (hessian + glm::transpose(hessian));
     return value;
 }
 

@@ -1,48 +1,44 @@
 /// @file dense_grid.h
-/// @brief A dense float copy of a sparse grid's active region, sampled trilinearly with the
-///        analytic gradient of the trilinear cell (the fast path for far-field distances).
+/// @brief A dense copy of a sparse distance grid's active region with the exact gradient stored per
+///        voxel, sampled by detail::blend: a gradient continuous across voxel faces (so curved rays
+///        bend smoothly) and a phi consistent with it.
 #pragma once
 
 #include <openvdb/openvdb.h>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
 namespace ivis::render {
 
-/// @brief Dense box of voxel values; outside the box every sample is the background value.
+/// @brief Dense box of voxels (phi, exact gradient); outside the box every sample is the
+///        background value with a zero gradient.
 class DenseGrid {
 public:
     DenseGrid() = default;
-    /// @brief Copies the active bounding box (plus one voxel) of @a grid; inactive voxels keep
-    ///        their (signed) background value.
-    explicit DenseGrid(const openvdb::FloatGrid& grid);
-    /// @brief Adopts @a values (x fastest, then y, then z) of a box of @a dims voxels whose voxel
-    ///        (0,0,0) is centred at @a origin.
-    DenseGrid(const glm::vec3& origin, const std::array<int, 3>& dims, float voxelSize, std::vector<float> values,
-              float background);
+    /// @brief Copies the active bounding box (plus one voxel) of @a phi and @a gradient (same
+    ///        topology); inactive voxels keep their (signed) background value and a zero gradient.
+    DenseGrid(const openvdb::FloatGrid& phi, const openvdb::Vec3SGrid& gradient);
 
-    /// @brief Trilinear value at world point p (background outside the box).
+    /// @brief detail::blend's phi at world point p (background outside the box).
     float value(const glm::vec3& p) const;
-    /// @brief Trilinear value and its exact gradient within the cell containing p.
+    /// @brief detail::blend's phi and gradient at p.
     float valueAndGradient(const glm::vec3& p, glm::vec3& gradient) const;
     /// @brief World-space voxel size.
     float voxelSize() const { return mVoxelSize; }
     /// @brief Value used outside the box.
     float background() const { return mBackground; }
-    /// @brief Bytes held by the value array.
-    std::size_t memoryBytes() const { return mValues.size() * sizeof(float); }
+    /// @brief Bytes held by the voxel array.
+    std::size_t memoryBytes() const { return mVoxels.size() * sizeof(glm::vec4); }
 
 private:
     /// Cell origin index and fractional position of p; false when the cell is outside the box.
     bool locate(const glm::vec3& p, std::size_t& base, glm::vec3& t) const;
-    /// The 8 corner values of the cell whose origin index is @a base, c[zyx bits].
-    void corners(std::size_t base, float c[8]) const;
 
-    std::vector<float> mValues;
+    std::vector<glm::vec4> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
     int mDims[3] = {0, 0, 0};
     glm::vec3 mOrigin{0.0f};  ///< world position of voxel (0,0,0) of the box
     float mVoxelSize = 1.0f;
@@ -51,25 +47,32 @@ private:
 };
 
 namespace detail {
-/// @brief Trilinear interpolation of 8 corner values c[zyx bits] at fractions t, with gradient
-///        (in index units) written to @a gradient when not null.
-inline float trilinear(const float c[8], const glm::vec3& t, glm::vec3* gradient)
+/// @brief Trilinear weights of the 8 corners c[dx | dy << 1 | dz << 2] of a cell at fractions t.
+inline void trilinearWeights(const glm::vec3& t, float w[8])
 {
-    // c[(dx) | (dy << 1) | (dz << 2)]
-    const float x00 = c[0] + t.x * (c[1] - c[0]);
-    const float x10 = c[2] + t.x * (c[3] - c[2]);
-    const float x01 = c[4] + t.x * (c[5] - c[4]);
-    const float x11 = c[6] + t.x * (c[7] - c[6]);
-    const float y0 = x00 + t.y * (x10 - x00);
-    const float y1 = x01 + t.y * (x11 - x01);
-    if (gradient) {
-        const float dx0 = (c[1] - c[0]) + t.y * ((c[3] - c[2]) - (c[1] - c[0]));
-        const float dx1 = (c[5] - c[4]) + t.y * ((c[7] - c[6]) - (c[5] - c[4]));
-        gradient->x = dx0 + t.z * (dx1 - dx0);
-        gradient->y = (x10 - x00) + t.z * ((x11 - x01) - (x10 - x00));
-        gradient->z = y1 - y0;
+    const float x0 = 1.0f - t.x, y0 = 1.0f - t.y, z0 = 1.0f - t.z;
+    const float a = x0 * y0, b = t.x * y0, c = x0 * t.y, d = t.x * t.y;
+    w[0] = a * z0, w[1] = b * z0, w[2] = c * z0, w[3] = d * z0;
+    w[4] = a * t.z, w[5] = b * t.z, w[6] = c * t.z, w[7] = d * t.z;
+}
+
+/// @brief The blend of 8 corner samples c[dx | dy << 1 | dz << 2] = (phi, exact gradient) of a
+///        cell of size @a voxelSize at fractions @a t: the gradient is the trilinear blend of the
+///        corners' gradients, phi the trilinear blend of each corner's first-order Taylor
+///        extrapolation phi_i + g_i . (p - x_i) (exact for a plane, and its derivative is the blended
+///        gradient up to O(h^2), so that phi and the force the rays feel agree).
+inline glm::vec4 blend(const glm::vec4 c[8], const glm::vec3& t, float voxelSize)
+{
+    float w[8];
+    trilinearWeights(t, w);
+    glm::vec4 sum(0.0f);
+    float towardsCorner = 0.0f;  // sum of w_i g_i . d_i, d_i the corner's offset in the cell
+    for (int i = 0; i < 8; ++i) {
+        sum += w[i] * c[i];
+        towardsCorner += w[i] * ((i & 1 ? c[i].y : 0.0f) + (i & 2 ? c[i].z : 0.0f) + (i & 4 ? c[i].w : 0.0f));
     }
-    return y0 + t.z * (y1 - y0);
+    sum.x += voxelSize * (sum.y * t.x + sum.z * t.y + sum.w * t.z - towardsCorner);
+    return sum;
 }
 }  // namespace detail
 
@@ -87,30 +90,6 @@ inline bool DenseGrid::locate(const glm::vec3& p, std::size_t& base, glm::vec3& 
     return true;
 }
 
-inline void DenseGrid::corners(std::size_t base, float c[8]) const
-{
-    const std::size_t sy = std::size_t(mDims[0]), sz = sy * mDims[1];
-    const float* v = mValues.data() + base;
-    c[0] = v[0];
-    c[1] = v[1];
-    c[2] = v[sy];
-    c[3] = v[sy + 1];
-    c[4] = v[sz];
-    c[5] = v[sz + 1];
-    c[6] = v[sz + sy];
-    c[7] = v[sz + sy + 1];
-}
-
-inline float DenseGrid::value(const glm::vec3& p) const
-{
-    std::size_t base;
-    glm::vec3 t;
-    if (!locate(p, base, t)) return mBackground;
-    float c[8];
-    corners(base, c);
-    return detail::trilinear(c, t, nullptr);
-}
-
 inline float DenseGrid::valueAndGradient(const glm::vec3& p, glm::vec3& gradient) const
 {
     std::size_t base;
@@ -119,11 +98,18 @@ inline float DenseGrid::valueAndGradient(const glm::vec3& p, glm::vec3& gradient
         gradient = glm::vec3(0.0f);
         return mBackground;
     }
-    float c[8];
-    corners(base, c);
-    const float v = detail::trilinear(c, t, &gradient);
-    gradient *= mInvVoxelSize;
-    return v;
+    const std::size_t sy = std::size_t(mDims[0]), sz = sy * mDims[1];
+    const glm::vec4* v = mVoxels.data() + base;
+    const glm::vec4 corners[8] = {v[0], v[1], v[sy], v[sy + 1], v[sz], v[sz + 1], v[sz + sy], v[sz + sy + 1]};
+    const glm::vec4 sample = detail::blend(corners, t, mVoxelSize);
+    gradient = glm::vec3(sample.y, sample.z, sample.w);
+    return sample.x;
+}
+
+inline float DenseGrid::value(const glm::vec3& p) const
+{
+    glm::vec3 gradient;
+    return valueAndGradient(p, gradient);
 }
 
 }  // namespace ivis::render

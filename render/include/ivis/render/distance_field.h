@@ -1,6 +1,9 @@
 /// @file distance_field.h
 /// @brief phi and grad phi of a SurfaceVolume anywhere between the surface and the hull: the fine
-///        narrow band where a cell is fully inside it, the dense coarse far field elsewhere.
+///        narrow band where a cell is fully inside it, the dense coarse far field elsewhere. Both
+///        blend the exact distance and gradient stored per voxel (detail::blend): the gradient is
+///        continuous everywhere, so that a curved ray's landing point is a smooth function of its
+///        start (the gradient of a trilinear phi jumps at every voxel face).
 /// @warning DistanceField is immutable and shared; create one Sampler per thread.
 #pragma once
 
@@ -22,9 +25,9 @@ public:
     class Sampler {
     public:
         explicit Sampler(const DistanceField& field);
-        /// @brief Trilinear phi at p (world = normalised units).
+        /// @brief phi at p (world = normalised units), as phiAndGradient.
         float phi(const glm::vec3& p);
-        /// @brief Trilinear phi at p and the analytic gradient of its trilinear cell.
+        /// @brief phi and gradient at p: detail::blend of the corners of its cell.
         float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
         /// @brief Closest triangle stored at the fine voxel nearest to p (-1 outside the band).
         int nearestTriangle(const glm::vec3& p);
@@ -32,16 +35,16 @@ public:
         const DistanceField& field() const { return mField; }
 
     private:
-        /// Fills the 8 fine corner values of the cell containing p; false unless all are active.
-        bool fineCell(const glm::vec3& p, float corners[8], glm::vec3& t);
-        /// phi from the fine band at p where its cell is complete, else @a far.
-        float finePhi(const glm::vec3& p, float far);
+        /// detail::blend's (phi, gradient) of the fine cell containing p, false unless all 8
+        /// corners are active.
+        bool fineSample(const glm::vec3& p, glm::vec4& sample);
         /// phi and gradient from the fine band at p where its cell is complete, else @a far (and
         /// the far gradient already in @a gradient).
         float finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient);
 
         const DistanceField& mField;
         openvdb::FloatGrid::ConstAccessor mPhi;
+        openvdb::Vec3SGrid::ConstAccessor mGradient;
         openvdb::Int32Grid::ConstAccessor mTriangle;
     };
 
@@ -51,6 +54,8 @@ public:
     float voxelSize() const { return mVoxelSize; }
     /// @brief Exterior distance up to which phi is exact; beyond it phi is clamped to this value.
     float reach() const { return mReach; }
+    /// @brief Far-field values above this never use the fine band.
+    float fineTrustBelow() const { return mFineTrustBelow; }
     /// @brief Voxel size of the grid that serves a sample whose value is @a phi (fine band or far field).
     float servingVoxelSize(float phi) const { return mHasFineBand && phi <= mFineTrustBelow ? mVoxelSize : mFar.voxelSize(); }
     /// @brief Whether phi is an unsigned distance (open mesh).
@@ -73,9 +78,8 @@ private:
 
 inline float DistanceField::Sampler::phi(const glm::vec3& p)
 {
-    const float far = mField.mFar.value(p);
-    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
-    return finePhi(p, far);
+    glm::vec3 gradient;
+    return phiAndGradient(p, gradient);
 }
 
 inline float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)

@@ -1,6 +1,7 @@
 /// @file surface_volume.h
-/// @brief The sparse volume of a surface: narrow-band distance, closest triangle and barycentrics,
-///        plus a coarse far field reaching the InverseVis hull.
+/// @brief The sparse volume of a surface: narrow-band distance, closest triangle, barycentrics and
+///        exact distance gradient, plus a coarse far field (distance and gradient) reaching the
+///        InverseVis hull.
 /// @note OpenVDB sign convention: phi < 0 inside, phi > 0 outside; open meshes store |distance|.
 #pragma once
 
@@ -49,8 +50,14 @@ struct SurfaceVolume {
     openvdb::Int32Grid::Ptr triangle;
     /// Barycentric weights of the closest point on that triangle (background 0).
     openvdb::Vec3SGrid::Ptr barycentric;
-    /// Coarse exterior distance reaching farFieldReach; null when phi itself reaches that far.
+    /// Exact gradient of phi per active phi voxel: the unit vector from the closest point, times the
+    /// sign of phi (the triangle's normal on the surface itself); background 0.
+    openvdb::Vec3SGrid::Ptr gradient;
+    /// Coarse exterior distance reaching farFieldReach, exact at every voxel; null when phi itself
+    /// reaches that far.
     openvdb::FloatGrid::Ptr farPhi;
+    /// Exact gradient of farPhi per active voxel, as @a gradient; null with farPhi.
+    openvdb::Vec3SGrid::Ptr farGradient;
 
     VolumeOptions options;
     bool unsignedDistance = false;  ///< true when phi is |distance| (open meshes)

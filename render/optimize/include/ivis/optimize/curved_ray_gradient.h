@@ -15,7 +15,7 @@ namespace ivis::optimize {
 struct PixelLaunchDerivative {
     bool landed = false;             ///< false: direct pixel, missed hull, escaped, a cap, or a launch that does not move
     render::SurfacePoint point;      ///< where the curved ray lands
-    glm::vec3 dPoint{0.0f};          ///< dP along the launch's sensitivity direction, projected onto the surface
+    glm::vec3 dPoint{0.0f};          ///< dP along the launch's sensitivity direction: the closest surface point's derivative
     double dImportance = 0.0;        ///< grad_S s . dPoint
     std::vector<double> perParameter;  ///< d(launch) / d(parameter k) along that direction
 };

@@ -23,32 +23,33 @@ struct CurvedRayTangent {
 };
 
 /// @brief integrateCurvedRay carrying the tangent (dp, dv) of one parameter through every step:
-///        dv' = dv - h H dp;  dp' = dp + h (grad phi . dp) u + h phi (I - u u^T) dv' / |v'|,
-///        u = v'/|v'|, with H the Hessian of the sampled phi. For alpha, dp0 = 0 and dv0 = v0/alpha.
-/// @interface FieldSampler: float phiGradientHessian(const glm::vec3&, glm::vec3&, glm::mat3&);
+///        dv' = dv - h J dp;  dp' = dp + h (s . dp) u + h phi (I - u u^T) dv' / |v'|,
+///        u = v'/|v'|, with J the Jacobian of the sampled gradient and s the slope of the sampled
+///        phi. For alpha, dp0 = 0 and dv0 = v0/alpha.
+/// @interface FieldSampler: float phiGradientJacobian(const glm::vec3&, glm::vec3&, glm::mat3&, glm::vec3&);
 template <typename FieldSampler>
 CurvedRayTangent integrateCurvedRayTangent(FieldSampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
                                            const glm::vec3& dVelocity, const CurvedRayParams& params,
                                            float epsilon, float escapeDistance)
 {
     CurvedRayTangent result;
-    glm::vec3 p = seed, v = velocity, dp(0.0f), dv = dVelocity, gradient;
-    glm::mat3 hessian;
+    glm::vec3 p = seed, v = velocity, dp(0.0f), dv = dVelocity, gradient, slope;
+    glm::mat3 jacobian;
     const float h = params.stepSize;
     for (int step = 0; step < params.maxSteps; ++step) {
-        const float phi = sampler.phiGradientHessian(p, gradient, hessian);
+        const float phi = sampler.phiGradientJacobian(p, gradient, jacobian, slope);
         if (phi < epsilon) {
             result.end.landed = true;
             break;
         }
         if (phi >= escapeDistance) break;
         v -= h * gradient;
-        dv -= h * (hessian * dp);
+        dv -= h * (jacobian * dp);
         const float speed = glm::length(v);
         if (!(speed > 0.0f)) break;
         const glm::vec3 u = v / speed;
         const glm::vec3 du = (dv - glm::dot(u, dv) * u) / speed;
-        dp += h * glm::dot(gradient, dp) * u + h * phi * du;
+        dp += h * glm::dot(slope, dp) * u + h * phi * du;
         p += h * phi * u;
         ++result.end.steps;
     }
