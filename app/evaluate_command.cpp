@@ -123,7 +123,7 @@ Command addEvaluateCommand(CLI::App& app)
             }
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution),
+                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, field.mesh, volumeOptions.resolution),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);

@@ -62,7 +62,7 @@ Command addOptimizeCommand(CLI::App& app)
         const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-            field.mesh, volumeOptions, defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution),
+            field.mesh, volumeOptions, defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions.resolution),
             &progress);
         const render::RenderScene scene(field, volume);
 

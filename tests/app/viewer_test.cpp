@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <ivis/core/camera.h>
+#include <ivis/core/content_hash.h>
 #include <ivis/core/image.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
@@ -88,7 +89,8 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     vdb::VolumeOptions volumeOptions;
     volumeOptions.resolution = volumeResolution;
     // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
-    const std::string cache = dir.file(core::sourceStem(source) + ".res" + std::to_string(volumeOptions.resolution) + ".vdb");
+    const std::string cache = dir.file(core::sourceStem(source) + "." + core::toHex(core::meshHash(field.mesh)) + ".res" +
+                                       std::to_string(volumeOptions.resolution) + ".vdb");
     const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, cache);
     const render::RenderScene scene(field, volume);
     render::RenderOptions options;
