@@ -167,7 +167,7 @@ Command addEvaluateCommand(CLI::App& app)
                 const optimize::EnergyValue value = display.evaluate(camera, best.method);
                 const optimize::Coherence coherent =
                     optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
-                entry.update(measuresJson(value, coherent, displayOptions.reveal));
+                entry.update(measuresJson(value, coherent.value(), displayOptions.reveal));
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
                 entry["fov_y_deg"] = camera.fovYDeg;

@@ -6,6 +6,7 @@
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
+#include <ivis/optimize/coherence.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
@@ -91,7 +92,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"pixels_direct", s.pixelsDirect},
                           {"pixels_indirect", s.pixelsIndirect},
                           {"pixels_background", s.pixelsBackground},
-                          {"nan_pixels", s.nanPixels}});
+                          {"nan_pixels", s.nanPixels},
+                          {"coherence", optimize::mappingCoherence(result.layers).value()}});
         core::logInfo("frame " + std::to_string(k + 1) + "/" + std::to_string(count) + " (" + step.label +
                       "): volume " + volume + ", " + std::to_string(s.seconds) + " s render");
     }

@@ -41,7 +41,8 @@ core::ScalarRange seriesDataRange(core::SurfaceSeries& series);
 
 /// @brief Renders every step of @a series as @a view and @a request say.
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and
-///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range and counts
+///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range,
+///         counts and mapping coherence
 /// @throw InputError when a step cannot be loaded or an output written (no frame is then written);
 ///        Cancelled when interrupted
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,

@@ -255,6 +255,34 @@ TEST_F(CliSeries, BadSeriesWriteNothing)
     expectRejected(render(pvd(), "--range-per-frame --range 0 1"), {"excludes"});
 }
 
+TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
+{
+    const std::string common = " --energy scalar --opt-res 24 --steps 2 --res 32x32 --volume-res 48 --no-video -o " +
+                               quoted(output("best.png")) + " --json " + quoted(output("best.json"));
+    // A series whose geometry changes has no one energy to sum: rejected before anything is written.
+    const std::string tet = input("tet.vtp");
+    test::writeFile(tet, tetrahedron("pressure"));
+    const std::string mixed = input("mixed.pvd");
+    test::writeFile(mixed, collection({arteryStep("0200"), tet}));
+    expectRejected("optimize " + quoted(mixed) + " --scalar pressure" + common,
+                   {tet + ": step 1 (tet.vtp) has other geometry or values than the first step"});
+    expectRejected("optimize " + quoted(artery()) + " --scalar pressure_t200 --fps 3" + common,
+                   {"--fps: applies to a time series"});
+
+    const CliResult result = runCli("optimize " + quoted(artery()) + " --scalar 'pressure_t*'" + common);
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json json = nlohmann::json::parse(test::readFile(output("best.json")));
+    const nlohmann::json& series = json.at("series");
+    ASSERT_EQ(series.at("frames").size(), 5u);
+    EXPECT_EQ(series.at("volumes_loaded"), 1);
+    // Every frame is the best view, with its parameters.
+    EXPECT_DOUBLE_EQ(series.at("theta").get<double>(), json.at("theta").get<double>());
+    EXPECT_DOUBLE_EQ(series.at("fov_y_deg").get<double>(), json.at("fov_y_deg").get<double>());
+    EXPECT_EQ(series.at("alpha"), json.at("params").at("alpha"));
+    for (int k = 0; k < 5; ++k) EXPECT_TRUE(std::filesystem::exists(output("best_000" + std::to_string(k) + ".png")));
+    EXPECT_FALSE(std::filesystem::exists(output("best.png")));
+}
+
 /// Writes a stand-in `ffmpeg` into @a folder that records its arguments in @a folder/args and
 /// writes "video" to its last argument (or fails with @a status and a message).
 void writeFakeFfmpeg(const std::string& folder, int status = 0)
