@@ -5,6 +5,7 @@
 #include "mesh_options.h"
 #include "optimization_options.h"
 #include "series_render.h"
+#include "series_survey.h"
 #include "view_options.h"
 
 #include <ivis/core/image_io.h>
@@ -90,7 +91,7 @@ Command addOptimizeCommand(CLI::App& app)
         core::ScalarRange seriesRange;
         if (isSeries) {
             series.emplace(options->sources, options->mesh.load);
-            const core::ScalarRange dataRange = seriesDataRange(*series);
+            const core::ScalarRange dataRange = surveySeries(*series).range;
             const std::vector<double>& range = options->view.range;
             seriesRange = range.size() == 2 ? core::scalarRangeFromUser(range[0], range[1]) : dataRange;
             field = optimize::meanImportanceField(*series, seriesRange);

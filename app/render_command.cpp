@@ -5,6 +5,7 @@
 #include "json_output.h"
 #include "mesh_options.h"
 #include "series_render.h"
+#include "series_survey.h"
 #include "view_options.h"
 
 #include <ivis/core/errors.h>
@@ -81,7 +82,7 @@ Command addRenderCommand(CLI::App& app)
             request.method = options->view.renderOptions().method;
             request.camera = requested;
             // Loads every step: a bad one fails before anything is written.
-            const core::ScalarRange dataRange = seriesDataRange(series);
+            const core::ScalarRange dataRange = surveySeries(series).range;
             if (options->view.range.size() != 2 && !options->rangePerFrame) request.range = dataRange;
             request.volume = volumeOptions;
             request.cacheFolder = folder;

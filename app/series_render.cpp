@@ -10,40 +10,8 @@
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
-#include <cmath>
-#include <limits>
 
 namespace ivis::app {
-
-namespace {
-
-/// Silences the log for its life (the check of every step says nothing until it is done).
-class SilentLog {
-public:
-    SilentLog() : mLevel(core::logLevel()) { core::setLogLevel(core::LogLevel::Silent); }
-    ~SilentLog() { core::setLogLevel(mLevel); }
-    SilentLog(const SilentLog&) = delete;
-    SilentLog& operator=(const SilentLog&) = delete;
-
-private:
-    core::LogLevel mLevel;
-};
-
-}  // namespace
-
-core::ScalarRange seriesDataRange(core::SurfaceSeries& series)
-{
-    const SilentLog silent;
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (std::size_t k = 0; k < series.steps().size(); ++k) {
-        for (const float v : series.load(k).values) {
-            if (!std::isfinite(v)) continue;
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-    }
-    return lo <= hi ? core::ScalarRange{lo, hi} : core::ScalarRange{0.0f, 0.0f};
-}
 
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
                             core::Interrupter* progress)

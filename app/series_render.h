@@ -33,12 +33,6 @@ struct SeriesRenderRequest {
     int fps = 5;              ///< the video's frames per second
 };
 
-/// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
-///        is written or said) and returns the finite range of their shown scalars together ({0, 0}
-///        when there is none).
-/// @throw InputError naming the step's file for a step that cannot be loaded
-core::ScalarRange seriesDataRange(core::SurfaceSeries& series);
-
 /// @brief Renders every step of @a series as @a view and @a request say.
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and
 ///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range,
