@@ -79,11 +79,7 @@ Command addOptimizeCommand(CLI::App& app)
             options->view.cameraFile.empty() ? glm::dvec2(options->view.theta, options->view.phi) : start.angles();
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
-        if (!isSeries)
-            for (const CLI::Option* flag : options->seriesFlags)
-                if (flag->count() > 0)
-                    throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a "
-                                                        "--scalar pattern); " + options->sources.front() + " is one mesh");
+        if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         // A series is optimised on the mean importance of its steps (optimize/series_importance.h),
         // measured with the importance range [0, 1]; the frames show its steps on their shared range.
         std::optional<core::SurfaceSeries> series;

@@ -1,14 +1,12 @@
 // `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera;
 // `inversevis render SERIES`: one such picture per step of a time series, and a video.
 #include "commands.h"
-#include "frame_video.h"
 #include "json_output.h"
 #include "mesh_options.h"
 #include "series_render.h"
 #include "series_survey.h"
 #include "view_options.h"
 
-#include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
@@ -48,8 +46,8 @@ Command addRenderCommand(CLI::App& app)
     options->view.addTo(*command);
     command
         ->add_option("-o,--output", options->output,
-                     "PNG file; of a series, step k's frame is the name with _ and k in 4 digits (from 0000) before "
-                     "the extension (out.png: out_0000.png, out_0001.png, ...) and the video is out.mp4")
+                     "PNG file; of a series, step k's frame is the name with _ and k in 4 digits (more past 9999 "
+                     "steps) before the extension (out.png: out_0000.png, out_0001.png, ...) and the video is out.mp4")
         ->capture_default_str();
     command->add_option("--exr", options->exr,
                         "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
@@ -95,10 +93,7 @@ Command addRenderCommand(CLI::App& app)
             if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
             return;
         }
-        for (const CLI::Option* flag : options->seriesFlags)
-            if (flag->count() > 0)
-                throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a "
-                                                    "--scalar pattern); " + options->sources.front() + " is one mesh");
+        rejectSeriesFlags(options->seriesFlags, options->sources.front());
         options->mesh.source = options->sources.front();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);

@@ -4,6 +4,7 @@
 #include "series_scene.h"
 
 #include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/optimize/coherence.h>
@@ -12,6 +13,14 @@
 
 
 namespace ivis::app {
+
+void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source)
+{
+    for (const CLI::Option* flag : seriesFlags)
+        if (flag->count() > 0)
+            throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a --scalar "
+                                                "pattern); " + source + " is one mesh");
+}
 
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
                             core::Interrupter* progress)

@@ -12,10 +12,12 @@
 #include <ivis/core/surface_series.h>
 #include <ivis/vdb/surface_volume.h>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
@@ -32,6 +34,10 @@ struct SeriesRenderRequest {
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
     int fps = 5;              ///< the video's frames per second
 };
+
+/// @brief Rejects the first of @a seriesFlags that was given: they apply to a time series only.
+/// @throw InputError "--fps: applies to a time series (...); <source> is one mesh"
+void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source);
 
 /// @brief Renders every step of @a series as @a view and @a request say.
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and

@@ -382,8 +382,10 @@ void ViewerApp::drawPanel()
         const std::size_t count = mSeries->steps().size();
         int step = int(mStep);
         const core::SeriesStep& shown = mSeries->steps()[mStep];
+        std::string format;  // the slider's text is a printf format: a '%' of the label doubled
+        for (const char c : shown.label) format += c == '%' ? std::string("%%") : std::string(1, c);
         ImGui::BeginDisabled(mJob.valid());
-        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, shown.label.c_str(), ImGuiSliderFlags_AlwaysClamp) &&
+        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp) &&
             std::size_t(step) != mStep) {
             try {
                 showStep(std::size_t(step));
