@@ -11,12 +11,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace ivis::app {
 namespace {
@@ -281,6 +285,23 @@ TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
     EXPECT_EQ(series.at("alpha"), json.at("params").at("alpha"));
     for (int k = 0; k < 5; ++k) EXPECT_TRUE(std::filesystem::exists(output("best_000" + std::to_string(k) + ".png")));
     EXPECT_FALSE(std::filesystem::exists(output("best.png")));
+}
+
+TEST_F(CliSeries, CtrlCAfterSomeFramesLeavesNoFrame)
+{
+    const test::Child child = test::startCli(renderSeries(quoted(pvd()), "--no-video", "1600x1600"));
+    // Wait until two frames are done (and held back under temporary names), then press Ctrl-C.
+    const auto start = std::chrono::steady_clock::now();
+    while (test::readFile(child.err).find("frame 2/5") == std::string::npos &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+        usleep(20000);
+    ASSERT_NE(test::readFile(child.err).find("frame 2/5"), std::string::npos) << test::readFile(child.err);
+    kill(child.pid, SIGINT);
+    const CliResult result = test::waitCli(child);
+    ASSERT_EQ(result.status, 130) << result.err;
+    // The volume cache is a cache; of the outputs, nothing.
+    for (const std::string& name : contents(mOutputs.path()))
+        EXPECT_EQ(name.substr(name.size() - 4), ".vdb") << name << " left behind";
 }
 
 /// Writes a stand-in `ffmpeg` into @a folder that records its arguments in @a folder/args and
