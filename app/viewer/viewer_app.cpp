@@ -153,6 +153,16 @@ void ViewerApp::showStep(std::size_t step)
     mDirty = true;
 }
 
+void ViewerApp::switchStep(std::size_t step)
+{
+    if (step == mStep) return;
+    try {
+        showStep(step);
+    } catch (const std::exception& e) {  // a step's file changed on disk since it was checked
+        mStatus = e.what();
+    }
+}
+
 bool ViewerApp::pollLoader()
 {
     if (!mLoader || !mLoader->finished()) return false;
@@ -366,6 +376,10 @@ void ViewerApp::handleInput()
             mDirty = true;
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
+        if (mSeries && !mJob.valid()) {
+            if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) && mStep + 1 < mSeries->steps().size()) switchStep(mStep + 1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_LEFT) && mStep > 0) switchStep(mStep - 1);
+        }
     }
 }
 
@@ -385,14 +399,8 @@ void ViewerApp::drawPanel()
         std::string format;  // the slider's text is a printf format: a '%' of the label doubled
         for (const char c : shown.label) format += c == '%' ? std::string("%%") : std::string(1, c);
         ImGui::BeginDisabled(mJob.valid());
-        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp) &&
-            std::size_t(step) != mStep) {
-            try {
-                showStep(std::size_t(step));
-            } catch (const std::exception& e) {
-                mStatus = e.what();
-            }
-        }
+        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp))
+            switchStep(std::size_t(step));
         ImGui::EndDisabled();
         tooltip("The steps of the time series (time of each from the .pvd; its index for files or a --scalar "
                 "pattern); one colour range over all steps; the volume stays while the geometry does. Disabled "
@@ -456,7 +464,8 @@ void ViewerApp::drawPanel()
     ImGui::Text("camera theta %.1f phi %.1f distance %.2f, field of view %.1f", mOrbit.thetaDeg, mOrbit.phiDeg,
                 mOrbit.distance, mOrbit.fovYDeg);
     ImGui::TextDisabled("%s", mGlRenderer.c_str());
-    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot");
+    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot%s",
+                        mSeries ? "; left/right: time step" : "");
     ImGui::PopTextWrapPos();
     ImGui::End();
     if (changed) mDirty = true;

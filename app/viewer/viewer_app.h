@@ -50,6 +50,8 @@ private:
     /// Shows step @a step of the series: its scalar replaces the shown one when its geometry is the
     /// same (the volume stays); other geometry is uploaded and its volume loaded in the background.
     void showStep(std::size_t step);
+    /// showStep for the slider and the arrow keys: an error goes to the panel's status line.
+    void switchStep(std::size_t step);
     /// Uploads the loaded scene once the loader is done; true when it did so this call.
     bool pollLoader();
     void waitForScene();
