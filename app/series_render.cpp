@@ -11,6 +11,8 @@
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
+#include <cstdio>
+
 
 namespace ivis::app {
 
@@ -21,6 +23,21 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
             throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a --scalar "
                                                 "pattern); " + source + " is one mesh");
 }
+
+namespace {
+
+/// The colour bar's title of @a step: the scalar's name, and which step it is unless the name
+/// says it (a pattern's array): "pressure, t = 600" (a .pvd), "pressure, b.vtp" (a list of files).
+std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
+{
+    if (!step.array.empty()) return name;
+    if (!series.timed()) return name + ", " + step.label;
+    char time[32];
+    std::snprintf(time, sizeof time, "%g", step.time);
+    return name + ", t = " + time;
+}
+
+}  // namespace
 
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
                             core::Interrupter* progress)
@@ -37,6 +54,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         render::RenderOptions options = view.renderOptions(current.field());
         options.method = request.method;
         if (request.range) options.shading.range = *request.range;
+        options.scalarName = legendTitle(series, step, current.field().name);
         width = options.width;
         height = options.height;
         // One camera for every frame: framed on the first step's picture.
@@ -60,6 +78,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"label", step.label},
                           {"file", step.path},
                           {"scalar", current.field().name},
+                          {"legend", options.scalarName},
                           {"output", png},
                           {"exr", exr.empty() ? nlohmann::json() : nlohmann::json(exr)},
                           {"volume", volume},

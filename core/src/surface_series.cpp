@@ -38,6 +38,7 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
         for (const std::string& name : arraysMatching(file, scalar))
             mSteps.push_back({sources.front(), name, double(mSteps.size()), name});
     } else if (isTimeSeries(sources.front())) {
+        mTimed = true;
         for (const TimeStep& step : readPvd(sources.front()))
             mSteps.push_back({step.path, "", step.time, std::filesystem::path(step.path).filename().string()});
     } else {

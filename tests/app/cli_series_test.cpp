@@ -122,6 +122,7 @@ TEST_F(CliSeries, PvdRendersOneFramePerStepOnOneVolumeWithOneRange)
         EXPECT_EQ(frames[k].at("step"), k);
         EXPECT_EQ(frames[k].at("time"), 200.0 * double(k + 1));
         EXPECT_EQ(frames[k].at("volume"), k == 0 ? "built" : "kept") << k;
+        EXPECT_EQ(frames[k].at("legend"), "pressure, t = " + std::to_string(200 * (k + 1)));
         EXPECT_EQ(frames[k].at("volume_cache"), output(cache));
         EXPECT_FLOAT_EQ(frames[k].at("range")[0].get<float>(), lo);
         EXPECT_FLOAT_EQ(frames[k].at("range")[1].get<float>(), hi);
@@ -135,6 +136,20 @@ TEST_F(CliSeries, PvdRendersOneFramePerStepOnOneVolumeWithOneRange)
     ASSERT_EQ(runCli(renderSeries(quoted(pvd()), "--no-video")).status, 0);
     EXPECT_EQ(stats().at("frames")[0].at("volume"), "reused");
     EXPECT_EQ(contents(mOutputs.path()).size(), 8u);
+}
+
+TEST_F(CliSeries, SeveralFilesAreASeriesInTheOrderGiven)
+{
+    const CliResult result =
+        runCli(renderSeries(quoted(arteryStep("0800")) + " " + quoted(arteryStep("0200")), "--no-video --scalar pressure_cell"));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json frames = stats().at("frames");
+    ASSERT_EQ(frames.size(), 2u);
+    EXPECT_EQ(frames[0].at("label"), "artery_t0800.vtp");
+    EXPECT_EQ(frames[1].at("legend"), "pressure_cell, artery_t0200.vtp");
+    EXPECT_EQ(frames[1].at("volume"), "kept");
+    EXPECT_TRUE(std::filesystem::exists(output("f_0001.png")));
+    EXPECT_FALSE(std::filesystem::exists(output("f_0002.png")));
 }
 
 TEST_F(CliSeries, EachGeometryGetsItsOwnVolumeAndCache)
@@ -151,6 +166,7 @@ TEST_F(CliSeries, EachGeometryGetsItsOwnVolumeAndCache)
     EXPECT_EQ(frames[1].at("volume"), "built");   // other geometry: rebuilt, not an error
     EXPECT_EQ(frames[2].at("volume"), "reused");  // the artery again: its cache from step 0
     EXPECT_EQ(frames[3].at("volume"), "kept");
+    EXPECT_EQ(frames[1].at("legend"), "pressure, t = 1");
     EXPECT_EQ(stats().at("volumes_loaded"), 3);
     EXPECT_NE(frames[0].at("volume_cache"), frames[1].at("volume_cache"));
     EXPECT_EQ(frames[0].at("volume_cache"), frames[2].at("volume_cache"));
@@ -207,6 +223,7 @@ TEST_F(CliSeries, PatternOnTheArteryMapsOneValueToOneColourInEveryFrame)
     ASSERT_EQ(frames.size(), 5u);
     EXPECT_EQ(frames[0].at("label"), "pressure_t200");
     EXPECT_EQ(frames[4].at("label"), "pressure_t1000");
+    EXPECT_EQ(frames[4].at("legend"), "pressure_t1000");
     // t600 and t800 share values (-0.0095 .. 0.082; t200 and t1000 do not).
     const auto first = indirectColours(mOutputs.path(), 2), last = indirectColours(mOutputs.path(), 3);
     ASSERT_GT(first.size(), 500u);

@@ -51,6 +51,7 @@ TEST(SurfaceSeries, PvdStepsAreItsFilesInTimeOrderEachAsThePlyStep)
     SurfaceSeries series({pvd()}, {});
     ASSERT_EQ(series.steps().size(), 5u);
     EXPECT_EQ(series.source(), pvd());
+    EXPECT_TRUE(series.timed());
     const std::vector<std::string> times = {"200", "400", "600", "800", "1000"};
     for (std::size_t k = 0; k < 5; ++k) {
         const SeriesStep& step = series.steps()[k];
@@ -70,6 +71,7 @@ TEST(SurfaceSeries, PatternStepsAreTheMatchingArraysOfOneFile)
 {
     SurfaceSeries series({artery()}, scalar("pressure_t*"));
     ASSERT_EQ(series.steps().size(), 5u);
+    EXPECT_FALSE(series.timed());
     const std::vector<std::string> names = {"pressure_t200", "pressure_t400", "pressure_t600", "pressure_t800",
                                             "pressure_t1000"};
     for (std::size_t k = 0; k < 5; ++k) {

@@ -39,6 +39,8 @@ public:
 
     /// @brief The steps in order.
     const std::vector<SeriesStep>& steps() const { return mSteps; }
+    /// @brief True when the steps carry times of their own (a .pvd's timesteps), not their indices.
+    bool timed() const { return mTimed; }
     /// @brief The source that names the series (its caches): the .pvd, the pattern's file, or the
     ///        first file.
     const std::string& source() const { return mSource; }
@@ -50,6 +52,7 @@ public:
 private:
     std::vector<SeriesStep> mSteps;
     std::string mSource;
+    bool mTimed = false;
     SurfaceLoadOptions mOptions;
     SurfaceField mPatternFile;  ///< the pattern's file, read once (empty for a series of files)
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
