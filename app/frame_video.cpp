@@ -113,7 +113,9 @@ std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::
         core::writeAtomically(video, [&](const std::string& temporary) {
             const std::string errorLog = temporary + ".log";
             const int status = runProgram({ffmpeg, "-nostdin", "-y", "-loglevel", "error", "-framerate",
-                                           std::to_string(fps), "-i", framePattern(path, count), "-vf",
+                                           std::to_string(fps), "-i", framePattern(path, count),
+                                           // only this series' frames, whatever an older, longer one left
+                                           "-frames:v", std::to_string(count), "-vf",
                                            "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "-f", "mp4",
                                            temporary},
                                           errorLog);

@@ -22,7 +22,8 @@ std::string videoPath(const std::string& path);
 /// @brief The `ffmpeg` program found on PATH, if any.
 std::optional<std::string> findFfmpeg();
 
-/// @brief Runs @a ffmpeg to encode the frames of @a path (framePath's names, 0 to @a count - 1) at
+/// @brief Runs @a ffmpeg to encode the frames of @a path (framePath's names, 0 to @a count - 1, and
+///        no more even when older frames follow) at
 ///        @a fps frames per second into an H.264 (or ffmpeg's default) MP4 at @a video, written
 ///        through a temporary file.
 /// @return "" when the video was written, else why not (ffmpeg's last line of error)

@@ -343,7 +343,7 @@ TEST_F(CliSeries, VideoWhenFfmpegIsOnPathAndFramesAlone)
     EXPECT_EQ(test::readFile(output("f.mp4")), "video\n");
     EXPECT_EQ(stats().at("video"), output("f.mp4"));
     const std::string args = test::readFile(input("args"));
-    EXPECT_NE(args.find("-framerate 7 -i " + output("f_%04d.png")), std::string::npos) << args;
+    EXPECT_NE(args.find("-framerate 7 -i " + output("f_%04d.png") + " -frames:v 5 "), std::string::npos) << args;
 
     // No ffmpeg: one line says so; the frames are written all the same.
     const test::TempDir empty;
@@ -371,14 +371,24 @@ TEST_F(CliSeries, VideoWhenFfmpegIsOnPathAndFramesAlone)
     EXPECT_FALSE(std::filesystem::exists(output("f.mp4")));
 }
 
-TEST_F(CliSeries, RealFfmpegWritesAnMp4)
+TEST_F(CliSeries, RealFfmpegWritesAnMp4OfTheSeriesFramesOnly)
 {
-    if (!std::filesystem::exists("/usr/bin/ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed (it is optional)";
+    if (!std::filesystem::exists("/usr/bin/ffmpeg") || !std::filesystem::exists("/usr/bin/ffprobe"))
+        GTEST_SKIP() << "ffmpeg is not installed (it is optional)";
+    ASSERT_EQ(runCli(renderSeries(quoted(pvd()), "--no-video")).status, 0);
+    // A frame left by an older, longer series right after this one's last: not in the video.
+    std::filesystem::copy_file(output("f_0000.png"), output("f_0005.png"));
     const CliResult result = runCli(renderSeries(quoted(pvd())));
     ASSERT_EQ(result.status, 0) << result.err;
     const std::string video = test::readFile(output("f.mp4"));
     ASSERT_GT(video.size(), 8u);
     EXPECT_EQ(video.substr(4, 4), "ftyp") << "an ISO base media (MP4) file";
+    const test::TempDir probe;
+    const std::string counted = probe.file("frames");
+    ASSERT_EQ(std::system(("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+                           "-of csv=p=0 " + quoted(output("f.mp4")) + " > " + quoted(counted)).c_str()),
+              0);
+    EXPECT_EQ(test::readFile(counted), "5\n");
 }
 
 }  // namespace
