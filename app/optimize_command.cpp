@@ -122,7 +122,7 @@ Command addOptimizeCommand(CLI::App& app)
             options->view.pictureCamera(scene, best.camera, *best.method, renderOptions.width, renderOptions.height);
         renderOptions.method = best.method;
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
-        nlohmann::json frames;
+        nlohmann::json seriesStats;
         double coherence = 0.0;
         if (isSeries) {
             SeriesRenderRequest request;
@@ -136,8 +136,8 @@ Command addOptimizeCommand(CLI::App& app)
             request.cameraOut = cameraPath;
             request.video = !options->noVideo;
             request.fps = options->fps;
-            frames = renderSeries(*series, options->view, request, &progress);
-            coherence = frames.at("frames").at(0).at("coherence").get<double>();
+            seriesStats = renderSeries(*series, options->view, request, &progress);
+            coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
             core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
@@ -185,7 +185,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"measures", measuresJson(measured, coherence, measureOptions.reveal)},
             {"output", options->output},
             {"visited", visited}};
-        if (isSeries) json["series"] = frames;
+        if (isSeries) json["series"] = seriesStats;
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +

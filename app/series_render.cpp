@@ -13,8 +13,21 @@
 
 #include <cstdio>
 
-
 namespace ivis::app {
+namespace {
+
+/// The colour bar's title of @a step: the scalar's name, and which step it is unless the name
+/// says it (a pattern's array): "pressure, t = 600" (a .pvd), "pressure, b.vtp" (a list of files).
+std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
+{
+    if (!step.array.empty() || name.empty()) return name;
+    if (!series.timed()) return name + ", " + step.label;
+    char time[32];
+    std::snprintf(time, sizeof time, "%g", step.time);
+    return name + ", t = " + time;
+}
+
+}  // namespace
 
 void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source)
 {
@@ -23,21 +36,6 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
             throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a --scalar "
                                                 "pattern); " + source + " is one mesh");
 }
-
-namespace {
-
-/// The colour bar's title of @a step: the scalar's name, and which step it is unless the name
-/// says it (a pattern's array): "pressure, t = 600" (a .pvd), "pressure, b.vtp" (a list of files).
-std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
-{
-    if (!step.array.empty()) return name;
-    if (!series.timed()) return name + ", " + step.label;
-    char time[32];
-    std::snprintf(time, sizeof time, "%g", step.time);
-    return name + ", t = " + time;
-}
-
-}  // namespace
 
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
                             core::Interrupter* progress)
