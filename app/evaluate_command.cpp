@@ -123,7 +123,7 @@ Command addEvaluateCommand(CLI::App& app)
             }
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, volumeOptions.resolution),
+                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, field.mesh, volumeOptions.resolution),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);
@@ -167,7 +167,7 @@ Command addEvaluateCommand(CLI::App& app)
                 const optimize::EnergyValue value = display.evaluate(camera, best.method);
                 const optimize::Coherence coherent =
                     optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
-                entry.update(measuresJson(value, coherent, displayOptions.reveal));
+                entry.update(measuresJson(value, coherent.value(), displayOptions.reveal));
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
                 entry["fov_y_deg"] = camera.fovYDeg;

@@ -19,12 +19,12 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
             {"params", render::methodToJson(*view.method)}};
 }
 
-nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::Coherence& coherence, bool withReveal)
+nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)
 {
     nlohmann::json json = {{"visibility", value.energy},
                            {"paper_literal", value.paperLiteral},
                            {"front_visibility", value.front},
-                           {"coherence", coherence.value()}};
+                           {"coherence", coherence}};
     if (withReveal)
         json["reveal"] = {{"total", value.reveal.total}, {"direct", value.reveal.direct}, {"per_region", value.reveal.perRegion}};
     return json;

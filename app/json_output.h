@@ -15,8 +15,9 @@ namespace ivis::app {
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
 /// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,
-///        coherence and, when @a withReveal, reveal (total, direct, per_region).
-nlohmann::json measuresJson(const optimize::EnergyValue& value, const optimize::Coherence& coherence, bool withReveal);
+///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
+///        direct, per_region).
+nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal);
 
 /// @brief Writes @a text to @a path through a temporary file.
 /// @throw InputError naming the path when it cannot be written

@@ -1,16 +1,17 @@
 #include "mesh_options.h"
 
+#include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 
 #include <filesystem>
 
 namespace ivis::app {
 
-void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources)
+void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, const std::string& sourcesNote)
 {
     const std::string help = "Mesh file (.obj .off .ply .stl .vtk .vtp .vtu) or scene:sphere|torus|vessel-tree";
     if (sources)
-        command.add_option("meshes", *sources, help + "; one or more")->required();
+        command.add_option("meshes", *sources, help + "; " + sourcesNote)->required();
     else
         command.add_option("mesh", source, help)->required();
     auto* scalar = command.add_option("--scalar", load.read.scalarName,
@@ -61,9 +62,11 @@ std::string volumeCacheFolder(const std::string& output, const std::string& cach
     return path.has_parent_path() ? path.parent_path().string() : ".";
 }
 
-std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution)
+std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
+                              int resolution)
 {
-    const std::string name = core::sourceStem(source) + ".res" + std::to_string(resolution) + ".vdb";
+    const std::string name =
+        core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" + std::to_string(resolution) + ".vdb";
     return (std::filesystem::path(folder) / name).string();
 }
 

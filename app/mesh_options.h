@@ -22,7 +22,9 @@ struct MeshOptions {
     /// @brief Registers MESH, --scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes and the volume's
     ///        options (--volume-res, --band, --reach, --distance).
     /// @param sources when given, the command takes one or more meshes into it instead of one MESH
-    void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr);
+    /// @param sourcesNote what the meshes are, for the help
+    void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr,
+               const std::string& sourcesNote = "one or more");
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
 };
@@ -30,8 +32,11 @@ struct MeshOptions {
 /// @brief Folder for volume caches: @a cacheDir when given, else the folder of @a output, else ".".
 std::string volumeCacheFolder(const std::string& output, const std::string& cacheDir);
 
-/// @brief Default cache file for a source and resolution inside @a folder: "<stem>.res<N>.vdb".
-std::string defaultVolumePath(const std::string& folder, const std::string& source, int resolution);
+/// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source at
+///        @a resolution: "<stem>.<mesh hash>.res<N>.vdb", so that every geometry of a time series
+///        (and every mesh of one name) keeps a cache of its own.
+std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
+                              int resolution);
 
 /// @brief Checks, before any work, that the folder of output file @a path exists (outputs never
 ///        create folders, so a mistyped -o leaves nothing behind).

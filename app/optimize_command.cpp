@@ -1,8 +1,11 @@
-// `inversevis optimize MESH`: the best viewpoint and parameters of a method by simulated annealing.
+// `inversevis optimize MESH`: the best viewpoint and parameters of a method by simulated annealing;
+// of a time series, one optimisation for all its steps (their mean scalar energy) and a frame per step.
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
 #include "optimization_options.h"
+#include "series_render.h"
+#include "series_survey.h"
 #include "view_options.h"
 
 #include <ivis/core/image_io.h>
@@ -11,10 +14,12 @@
 #include <ivis/core/errors.h>
 #include <ivis/optimize/annealing_plot.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/series_importance.h>
 #include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <memory>
+#include <optional>
 
 namespace ivis::app {
 
@@ -31,21 +36,37 @@ Command addOptimizeCommand(CLI::App& app)
         std::string exr;
         std::string cameraOut;
         std::string cacheDir;
+        std::vector<std::string> sources;
+        int fps = 5;
+        bool noVideo = false;
+        std::vector<CLI::Option*> seriesFlags;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command =
-        app.add_subcommand("optimize", "Find the best viewpoint and method parameters (simulated annealing)");
-    options->mesh.addTo(*command);
+    CLI::App* command = app.add_subcommand(
+        "optimize", "Find the best viewpoint and method parameters (simulated annealing); of a time series, one "
+                    "view for all its steps");
+    options->mesh.addTo(*command, &options->sources,
+                        "one, or a time series of one geometry (a .pvd, several files, or one file with a --scalar "
+                        "pattern), optimised once on the mean of its steps' energies");
     options->view.addTo(*command);
     options->optimization.addTo(*command);
     command->add_option("--opt-res", options->optResolution, "Optimisation resolution (rays per side)")
         ->capture_default_str();
-    command->add_option("-o,--output", options->output, "Picture of the best view at --res")->capture_default_str();
+    command
+        ->add_option("-o,--output", options->output,
+                     "Picture of the best view at --res; of a series, a frame per step named as render names them "
+                     "(out_0000.png, ...; out.mp4 when ffmpeg is on PATH)")
+        ->capture_default_str();
     command->add_option("--json", options->json, "Result JSON: best view, parameters, energies, visited views");
     command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
     command->add_option("--exr", options->exr, "Multi-layer OpenEXR file of the best view (as render --exr)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON of the best view (default: <output>.camera.json)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+    options->seriesFlags = {
+        command->add_option("--fps", options->fps, "Series: frames per second of the video")
+            ->check(CLI::Range(1, 240))
+            ->capture_default_str(),
+        command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
         for (const std::string& path : {options->output, options->json, options->plot, options->exr, options->cameraOut})
@@ -57,20 +78,38 @@ Command addOptimizeCommand(CLI::App& app)
         const glm::dvec2 startAngles =
             options->view.cameraFile.empty() ? glm::dvec2(options->view.theta, options->view.phi) : start.angles();
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
-        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
+        const bool isSeries = core::isSeries(options->sources, options->mesh.load);
+        if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
+        // A series is optimised on the mean importance of its steps (optimize/series_importance.h),
+        // measured with the importance range [0, 1]; the frames show its steps on their shared range.
+        std::optional<core::SurfaceSeries> series;
+        core::SurfaceField field;
+        core::ScalarRange seriesRange;
+        if (isSeries) {
+            series.emplace(options->sources, options->mesh.load);
+            const core::ScalarRange dataRange = surveySeries(*series).range;
+            const std::vector<double>& range = options->view.range;
+            seriesRange = range.size() == 2 ? core::scalarRangeFromUser(range[0], range[1]) : dataRange;
+            field = optimize::meanImportanceField(*series, seriesRange);
+        } else {
+            options->mesh.source = options->sources.front();
+            field = core::loadSurface(options->mesh.source, options->mesh.load);
+        }
         render::RenderOptions renderOptions = options->view.renderOptions(field);
+        const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.range;
+        const std::string source = isSeries ? series->source() : options->mesh.source;
         const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-            field.mesh, volumeOptions, defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution),
+            field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions.resolution),
             &progress);
         const render::RenderScene scene(field, volume);
 
         const optimize::EnergyOptions energyOptions =
-            options->optimization.energyOptions(options->optResolution, renderOptions.shading.range);
+            options->optimization.energyOptions(options->optResolution, importanceRange);
         const optimize::EnergyEvaluator evaluator(scene, energyOptions);
         const auto ascentEvaluator =
-            options->optimization.ascentEvaluator(scene, options->optResolution, renderOptions.shading.range);
+            options->optimization.ascentEvaluator(scene, options->optResolution, importanceRange);
         const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
             options->optimization.annealingOptions(startAngles.x, startAngles.y,
@@ -82,13 +121,32 @@ Command addOptimizeCommand(CLI::App& app)
         const core::Camera camera =
             options->view.pictureCamera(scene, best.camera, *best.method, renderOptions.width, renderOptions.height);
         renderOptions.method = best.method;
-        const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
-        core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
-        if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
-        core::writeCameraJson(camera, cameraPath);
+        nlohmann::json seriesStats;
+        double coherence = 0.0;
+        if (isSeries) {
+            SeriesRenderRequest request;
+            request.method = best.method;
+            request.camera = best.camera;
+            request.range = seriesRange;
+            request.volume = volumeOptions;
+            request.cacheFolder = folder;
+            request.png = options->output;
+            request.exr = options->exr;
+            request.cameraOut = cameraPath;
+            request.video = !options->noVideo;
+            request.fps = options->fps;
+            seriesStats = renderSeries(*series, options->view, request, &progress);
+            coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
+        } else {
+            const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
+            core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
+            if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
+            core::writeCameraJson(camera, cameraPath);
+            coherence = optimize::mappingCoherence(picture.layers).value();
+        }
         const optimize::EnergyOptions displayOptions =
-            options->optimization.measureOptions(renderOptions.height, renderOptions.shading.range);
+            options->optimization.measureOptions(renderOptions.height, importanceRange);
         optimize::EnergyOptions measureOptions = displayOptions;
         measureOptions.kind = optimize::EnergyKind::Visibility;
         measureOptions.paperLiteral = true;
@@ -103,8 +161,8 @@ Command addOptimizeCommand(CLI::App& app)
 
         nlohmann::json visited = nlohmann::json::array();
         for (const auto& view : result.visited) visited.push_back(visitedViewJson(view));
-        const nlohmann::json json = {
-            {"mesh", options->mesh.source},
+        nlohmann::json json = {
+            {"mesh", source},
             {"energy", optimize::toString(energyOptions.kind)},
             {"opt_res", options->optResolution},
             {"ascent_res", ascentEvaluator ? options->optimization.ascentResolution : options->optResolution},
@@ -124,9 +182,10 @@ Command addOptimizeCommand(CLI::App& app)
             {"display_energy_value", display.energy},
             {"display_front_energy_value", display.front},
             {"mean_importance", best.value.meanImportance},
-            {"measures", measuresJson(measured, optimize::mappingCoherence(picture.layers), measureOptions.reveal)},
+            {"measures", measuresJson(measured, coherence, measureOptions.reveal)},
             {"output", options->output},
             {"visited", visited}};
+        if (isSeries) json["series"] = seriesStats;
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +

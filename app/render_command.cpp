@@ -1,7 +1,10 @@
-// `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera.
+// `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera;
+// `inversevis render SERIES`: one such picture per step of a time series, and a video.
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
+#include "series_render.h"
+#include "series_survey.h"
 #include "view_options.h"
 
 #include <ivis/core/image_io.h>
@@ -28,16 +31,39 @@ Command addRenderCommand(CLI::App& app)
         std::string statsJson;
         std::string cameraOut;
         std::string cacheDir;
+        std::vector<std::string> sources;
+        bool rangePerFrame = false;
+        int fps = 5;
+        bool noVideo = false;
+        std::vector<CLI::Option*> seriesFlags;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("render", "Render a method's picture to PNG (and EXR layers)");
-    options->mesh.addTo(*command);
+    CLI::App* command = app.add_subcommand(
+        "render", "Render a method's picture to PNG (and EXR layers); of a time series, one picture per step");
+    options->mesh.addTo(*command, &options->sources,
+                        "one, or a time series: a .pvd, several files (one step each), or one file with a "
+                        "--scalar pattern such as 'pressure_t*' (one step per matching array, in natural order)");
     options->view.addTo(*command);
-    command->add_option("-o,--output", options->output, "PNG file")->capture_default_str();
-    command->add_option("--exr", options->exr, "Multi-layer OpenEXR file (linear colour + per-pixel layers)");
-    command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON");
+    command
+        ->add_option("-o,--output", options->output,
+                     "PNG file; of a series, step k's frame is the name with _ and k in 4 digits (more past 9999 "
+                     "steps) before the extension (out.png: out_0000.png, out_0001.png, ...) and the video is out.mp4")
+        ->capture_default_str();
+    command->add_option("--exr", options->exr,
+                        "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
+    command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON (of a series: per frame too)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+    options->seriesFlags = {
+        command->add_flag("--range-per-frame", options->rangePerFrame,
+                          "Series: each frame's colour range is its own step's data range (default: one range over "
+                          "all steps)")
+            ->excludes("--range"),
+        command->add_option("--fps", options->fps, "Series: frames per second of the video")
+            ->check(CLI::Range(1, 240))
+            ->capture_default_str(),
+        command->add_flag("--no-video", options->noVideo,
+                          "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
         for (const std::string& path : {options->output, options->exr, options->statsJson, options->cameraOut})
@@ -46,12 +72,33 @@ Command addRenderCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
+        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
+        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        if (core::isSeries(options->sources, options->mesh.load)) {
+            core::SurfaceSeries series(options->sources, options->mesh.load);
+            SeriesRenderRequest request;
+            request.method = options->view.renderOptions().method;
+            request.camera = requested;
+            // Loads every step: a bad one fails before anything is written.
+            const core::ScalarRange dataRange = surveySeries(series).range;
+            if (options->view.range.size() != 2 && !options->rangePerFrame) request.range = dataRange;
+            request.volume = volumeOptions;
+            request.cacheFolder = folder;
+            request.png = options->output;
+            request.exr = options->exr;
+            request.cameraOut = options->cameraOut;
+            request.video = !options->noVideo;
+            request.fps = options->fps;
+            const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
+            if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
+            return;
+        }
+        rejectSeriesFlags(options->seriesFlags, options->sources.front());
+        options->mesh.source = options->sources.front();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
 
-        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
-        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, volumeOptions.resolution);
-        core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions.resolution);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
         const core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,

@@ -24,7 +24,7 @@ Command addSdfCommand(CLI::App& app)
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
     options->mesh.addTo(*command);
-    command->add_option("-o,--output", options->output, "Volume file (default: <mesh>.res<N>.vdb here)");
+    command->add_option("-o,--output", options->output, "Volume file (default: <mesh>.<mesh hash>.res<N>.vdb here)");
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {
@@ -33,7 +33,7 @@ Command addSdfCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
-                                     ? defaultVolumePath(".", options->mesh.source, volumeOptions.resolution)
+                                     ? defaultVolumePath(".", options->mesh.source, field.mesh, volumeOptions.resolution)
                                      : options->output;
         vdb::CacheOutcome outcome{};
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);

@@ -88,6 +88,12 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
     mHasVolume = true;
 }
 
+void GpuRenderer::dropVolume()
+{
+    mHasVolume = false;
+    mSceneUniforms.set("uVolumeReady", false);
+}
+
 void GpuRenderer::setColormap(const std::string& name)
 {
     const core::Colormap& map = core::colormap(name);

@@ -42,6 +42,8 @@ public:
     void setColormap(const std::string& name);
     /// @brief True once setVolume succeeded (indirect rays and shadows need it).
     bool hasVolume() const { return mHasVolume; }
+    /// @brief Forgets the volume (the mesh changed): only the direct part is drawn until setVolume.
+    void dropVolume();
 
     /// @brief Renders @a frame into the offscreen target (resized to the frame's size).
     /// @throw GlError when the method's indirect program does not compile

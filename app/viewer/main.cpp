@@ -1,9 +1,11 @@
 // `inversevis-view`: the interactive viewer; parses arguments and maps errors to exit statuses.
 #include "viewer_app.h"
 #include "viewer_options.h"
+#include "../series_survey.h"
 #include "../version.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/surface_series.h>
 #include <ivis/core/surface_source.h>
 
 #include <CLI/CLI.hpp>
@@ -19,9 +21,16 @@ int main(int argc, char** argv)
                          "Print the version and those of OpenVDB, Embree and OpenEXR");
     try {
         app.parse(argc, argv);
+        options.takeSources();
         options.validate();
-        ivis::core::SurfaceField field = ivis::core::loadSurface(options.mesh.source, options.mesh.load);
-        ivis::app::ViewerApp viewer(options, std::move(field));
+        if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
+            ivis::app::ViewerApp viewer(options, ivis::core::loadSurface(options.mesh.source, options.mesh.load));
+            return viewer.run();
+        }
+        auto series = std::make_unique<ivis::core::SurfaceSeries>(options.sources, options.mesh.load);
+        const ivis::app::SeriesSurvey survey = ivis::app::surveySeries(*series);  // every step, before a word
+        ivis::core::SurfaceField first = series->load(0);
+        ivis::app::ViewerApp viewer(options, std::move(first), std::move(series), survey);
         return viewer.run();
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help

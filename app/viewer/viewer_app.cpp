@@ -3,6 +3,7 @@
 #include "gl_window.h"
 #include "viewer_panel.h"
 
+#include "../frame_video.h"
 #include "../mesh_options.h"
 
 #include <ivis/core/colormap.h>
@@ -43,15 +44,19 @@ double timedMs(Work&& work)
 
 }  // namespace
 
-ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field)
+ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
+                     std::unique_ptr<core::SurfaceSeries> series, SeriesSurvey survey)
     : mOptions(options),
-      mField(std::make_unique<core::SurfaceField>(std::move(field)))
+      mField(std::make_unique<core::SurfaceField>(std::move(field))),
+      mSeries(std::move(series)),
+      mSurvey(std::move(survey))
 {
     mOptions.view.resolution = std::to_string(options.width) + "x" + std::to_string(options.height);
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
     mMethod = render.method;
     mShading = render.shading;
-    mDataRange = core::scalarRangeFromData(mField->values);
+    mDataRange = mSeries ? mSurvey.range : core::scalarRangeFromData(mField->values);
+    if (mSeries && mOptions.view.range.size() != 2) mShading.range = mDataRange;  // one range for every step
     mOptimiser.optimization = mOptions.optimization;
     mOptimiser.resolution = mOptions.optResolution;
     mOptions.optimization.energyOptions(mOptions.optResolution, mShading.range);  // validates --energy
@@ -82,7 +87,8 @@ void ViewerApp::openWindow()
     glfwSwapInterval(mOptions.headless() ? 0 : 1);
     mGlRenderer = glRendererName();
     mRenderer = std::make_unique<GpuRenderer>();
-    mRenderer->setMesh(*mField, render::vertexNormals(mField->mesh));
+    mNormals = render::vertexNormals(mField->mesh);
+    mRenderer->setMesh(*mField, mNormals);
     mRenderer->setColormap(mShading.colormap);
     // Software rasterisers trace every pixel on the CPU: start at half resolution there.
     if (mGlRenderer.find("llvmpipe") != std::string::npos || mGlRenderer.find("softpipe") != std::string::npos)
@@ -108,13 +114,53 @@ void ViewerApp::startLoading()
 {
     const vdb::VolumeOptions volumeOptions = mOptions.mesh.volumeOptions();
     const std::string cachePath =
-        defaultVolumePath(mOptions.resolvedCacheDir(), mOptions.mesh.source, volumeOptions.resolution);
+        defaultVolumePath(mOptions.resolvedCacheDir(), mOptions.mesh.source, mField->mesh, volumeOptions.resolution);
     DenseSliceOptions slices;
     slices.budgetBytes = std::size_t(mOptions.textureBudgetMiB) << 20;
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
     slices.maxTextureSize = std::max(16, int(maxSize));
     mLoader = std::make_unique<SceneLoader>(*mField, volumeOptions, cachePath, slices);
+}
+
+void ViewerApp::showStep(std::size_t step)
+{
+    IVIS_CHECK(mSeries && step < mSeries->steps().size() && !mJob.valid());
+    core::SurfaceField field = mSeries->load(step);
+    const bool sameGeometry = mSurvey.meshHashes[step] == mSurvey.meshHashes[mStep];
+    mStep = step;
+    const core::SeriesStep& shown = mSeries->steps()[step];
+    if (sameGeometry) {
+        // The mesh stays (the loaded scene and the GPU volume refer to it); only what it shows changes.
+        mField->values = std::move(field.values);
+        mField->valuesOn = field.valuesOn;
+        mField->name = std::move(field.name);
+        mField->sourcePath = std::move(field.sourcePath);
+        mField->arrays = std::move(field.arrays);
+        mField->triangleCells = std::move(field.triangleCells);
+    } else {
+        mLoader.reset();  // cancels and joins: it reads the field being replaced
+        mLoaded.reset();
+        mRenderer->dropVolume();
+        mField = std::make_unique<core::SurfaceField>(std::move(field));
+        mNormals = render::vertexNormals(mField->mesh);
+    }
+    mRenderer->setMesh(*mField, mNormals);
+    if (!sameGeometry) startLoading();
+    std::printf("inversevis-view: step %zu/%zu (%s): %s\n", step + 1, mSeries->steps().size(), shown.label.c_str(),
+                sameGeometry ? "volume kept" : "other geometry, loading its volume");
+    std::fflush(stdout);
+    mDirty = true;
+}
+
+void ViewerApp::switchStep(std::size_t step)
+{
+    if (step == mStep) return;
+    try {
+        showStep(step);
+    } catch (const std::exception& e) {  // a step's file changed on disk since it was checked
+        mStatus = e.what();
+    }
 }
 
 bool ViewerApp::pollLoader()
@@ -211,20 +257,30 @@ int ViewerApp::run()
 int ViewerApp::runHeadlessScreenshot()
 {
     waitForScene();
-    int fbWidth = 0, fbHeight = 0;
-    for (int k = 0; k < mOptions.frames; ++k) {
-        renderFrame(mOptions.width, mOptions.height);
-        glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glViewport(0, 0, fbWidth, fbHeight);
-        mRenderer->blitTo(0, 0, fbWidth, fbHeight);
-        glfwSwapBuffers(mWindow);
-        glfwPollEvents();
+    // A series: every step in turn, as the time slider shows it, one numbered screenshot each.
+    const std::size_t steps = mSeries ? mSeries->steps().size() : 1;
+    for (std::size_t step = 0; step < steps; ++step) {
+        if (step > 0) showStep(step);
+        if (mLoader) waitForScene();
+        int fbWidth = 0, fbHeight = 0;
+        for (int k = 0; k < mOptions.frames; ++k) {
+            renderFrame(mOptions.width, mOptions.height);
+            glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glViewport(0, 0, fbWidth, fbHeight);
+            mRenderer->blitTo(0, 0, fbWidth, fbHeight);
+            glfwSwapBuffers(mWindow);
+            glfwPollEvents();
+        }
+        const auto numbered = [&](const std::string& path) {
+            return mSeries && !path.empty() ? framePath(path, step, steps) : path;
+        };
+        const std::string path = numbered(mOptions.screenshot);
+        writeScreenshot(path, numbered(mOptions.regionPng));
+        std::printf("inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n", path.c_str(),
+                    mOptions.width, mOptions.height, mMethod->name().c_str(), mOptions.frames, mLastFrameMs,
+                    mGlRenderer.c_str());
     }
-    writeScreenshot(mOptions.screenshot, mOptions.regionPng);
-    std::printf("inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n",
-                mOptions.screenshot.c_str(), mOptions.width, mOptions.height, mMethod->name().c_str(),
-                mOptions.frames, mLastFrameMs, mGlRenderer.c_str());
     return 0;
 }
 
@@ -320,6 +376,10 @@ void ViewerApp::handleInput()
             mDirty = true;
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
+        if (mSeries && !mJob.valid()) {
+            if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) && mStep + 1 < mSeries->steps().size()) switchStep(mStep + 1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_LEFT) && mStep > 0) switchStep(mStep - 1);
+        }
     }
 }
 
@@ -332,6 +392,21 @@ void ViewerApp::drawPanel()
     ImGui::PushTextWrapPos(wrap);
     ImGui::Text("%s: %zu triangles, scalar '%s'", core::sourceStem(mOptions.mesh.source).c_str(),
                 mField->mesh.triangles.size(), mField->hasScalar() ? mField->name.c_str() : "(none)");
+    if (mSeries) {
+        const std::size_t count = mSeries->steps().size();
+        int step = int(mStep);
+        const core::SeriesStep& shown = mSeries->steps()[mStep];
+        std::string format;  // the slider's text is a printf format: a '%' of the label doubled
+        for (const char c : shown.label) format += c == '%' ? std::string("%%") : std::string(1, c);
+        ImGui::BeginDisabled(mJob.valid());
+        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp))
+            switchStep(std::size_t(step));
+        ImGui::EndDisabled();
+        tooltip("The steps of the time series (time of each from the .pvd; its index for files or a --scalar "
+                "pattern); one colour range over all steps; the volume stays while the geometry does. Disabled "
+                "while an optimiser runs.");
+        ImGui::Text("step %zu of %zu, time %g", mStep + 1, count, shown.time);
+    }
     if (mLoader) {
         const int percent = mLoader->progress().percent();
         const std::string label = mLoader->progress().stage() + (percent >= 0 ? " " + std::to_string(percent) + "%" : "");
@@ -389,7 +464,8 @@ void ViewerApp::drawPanel()
     ImGui::Text("camera theta %.1f phi %.1f distance %.2f, field of view %.1f", mOrbit.thetaDeg, mOrbit.phiDeg,
                 mOrbit.distance, mOrbit.fovYDeg);
     ImGui::TextDisabled("%s", mGlRenderer.c_str());
-    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot");
+    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot%s",
+                        mSeries ? "; left/right: time step" : "");
     ImGui::PopTextWrapPos();
     ImGui::End();
     if (changed) mDirty = true;

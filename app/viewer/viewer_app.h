@@ -9,8 +9,10 @@
 #include "scene_loader.h"
 #include "view_optimiser.h"
 #include "viewer_options.h"
+#include "../series_survey.h"
 
 #include <ivis/core/surface_field.h>
+#include <ivis/core/surface_series.h>
 #include <ivis/render/method.h>
 #include <ivis/render/shading.h>
 
@@ -23,12 +25,15 @@ struct GLFWwindow;
 
 namespace ivis::app {
 
-/// @brief One viewer session on one surface.
+/// @brief One viewer session on one surface, or on the steps of a time series.
 class ViewerApp {
 public:
     /// @brief Validates the view options against @a field (colour map, range, method).
+    /// @param series when given, @a field is its first step and a time slider shows the others; the
+    ///        colour range is @a survey's, over all steps, unless --range is given
     /// @throw InputError / ValueError for bad options
-    ViewerApp(const ViewerOptions& options, core::SurfaceField field);
+    ViewerApp(const ViewerOptions& options, core::SurfaceField field,
+              std::unique_ptr<core::SurfaceSeries> series = nullptr, SeriesSurvey survey = {});
     ~ViewerApp();
     ViewerApp(const ViewerApp&) = delete;
     ViewerApp& operator=(const ViewerApp&) = delete;
@@ -42,6 +47,11 @@ private:
     void openWindow();
     void closeWindow();
     void startLoading();
+    /// Shows step @a step of the series: its scalar replaces the shown one when its geometry is the
+    /// same (the volume stays); other geometry is uploaded and its volume loaded in the background.
+    void showStep(std::size_t step);
+    /// showStep for the slider and the arrow keys: an error goes to the panel's status line.
+    void switchStep(std::size_t step);
     /// Uploads the loaded scene once the loader is done; true when it did so this call.
     bool pollLoader();
     void waitForScene();
@@ -66,6 +76,10 @@ private:
 
     ViewerOptions mOptions;
     std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
+    std::vector<glm::vec3> mNormals;             ///< vertex normals of mField's mesh
+    std::unique_ptr<core::SurfaceSeries> mSeries;  ///< the time series shown (null for one surface)
+    SeriesSurvey mSurvey;
+    std::size_t mStep = 0;                         ///< the step of mSeries shown
     render::MethodPtr mMethod;
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;

@@ -10,7 +10,9 @@ namespace ivis::app {
 
 void ViewerOptions::addTo(CLI::App& app)
 {
-    mesh.addTo(app);
+    mesh.addTo(app, &sources,
+               "one, or a time series (a .pvd, several files, or one file with a --scalar pattern such as "
+               "'pressure_t*'): a time slider shows its steps");
     view.addTo(app);
     optimization.addTo(app);
     app.add_option("--opt-res", optResolution, "Optimisation resolution (rays per side) of the optimise buttons")
@@ -20,7 +22,9 @@ void ViewerOptions::addTo(CLI::App& app)
         app.remove_option(app.get_option(name));
     app.add_option("--width", width, "Window width in pixels (headless: the image width)")->capture_default_str();
     app.add_option("--height", height, "Window height in pixels (headless: the image height)")->capture_default_str();
-    app.add_option("--screenshot", screenshot, "Render without input, write this PNG and exit");
+    app.add_option("--screenshot", screenshot,
+                   "Render without input, write this PNG and exit; of a series, one per step, numbered as render "
+                   "numbers frames (shot_0000.png, ...), each step shown as the time slider shows it");
     app.add_option("--frames", frames, "Frames rendered before the screenshot")->capture_default_str();
     app.add_option("--region-png", regionPng,
                    "Also write the last frame's regions as grey levels (0 background, 128 direct, 255 indirect)");

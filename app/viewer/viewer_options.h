@@ -13,18 +13,20 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
 /// @brief Everything `inversevis-view` reads from its command line.
 struct ViewerOptions {
-    MeshOptions mesh;           ///< MESH, --scalar, --volume-res, ... (as the CLI)
+    MeshOptions mesh;           ///< MESH, --scalar, --volume-res, ... (as the CLI); source: the first of sources
+    std::vector<std::string> sources;  ///< one mesh, or the steps of a time series (core::isSeries)
     ViewOptions view;           ///< --theta, --phi, --method, --alpha, --colormap, --range, ...
     OptimizationOptions optimization;  ///< --energy, --steps, --seed, ... (as `inversevis optimize`)
     int optResolution = 100;    ///< rays per side while optimising (--opt-res)
     int width = 1024;           ///< window (and headless image) width in pixels
     int height = 768;           ///< window (and headless image) height in pixels
-    std::string screenshot;     ///< headless: write the last frame here and exit
+    std::string screenshot;     ///< headless: write the last frame here (of a series, each step's, numbered) and exit
     int frames = 3;             ///< headless: frames rendered before the screenshot
     std::string regionPng;      ///< debug: region of the last frame as grey (0 background, 128 direct, 255 indirect)
     std::string uiScreenshot;   ///< debug: run the window with its panel, write it (panel included) once settled, exit
@@ -36,6 +38,8 @@ struct ViewerOptions {
 
     /// @brief Registers every option on @a app.
     void addTo(CLI::App& app);
+    /// @brief After parsing: the mesh source is the first of the sources.
+    void takeSources() { mesh.source = sources.front(); }
     /// @brief Throws InputError / ValueError for values CLI11 does not check (sizes, frames, budget,
     ///        the method's parameters and the hull offset against the volume's reach).
     void validate() const;

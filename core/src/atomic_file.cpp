@@ -8,15 +8,26 @@
 
 namespace ivis::core {
 
-void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
+namespace {
+
+/// A fresh temporary name beside @a path: "<path>.tmp.<pid>.<n>".
+std::string temporaryFor(const std::string& path)
 {
     static std::atomic<int> counter{0};
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+}
+
+/// Calls @a write with @a temporary; on failure removes it and rethrows (naming @a path).
+void writeTemporary(const std::string& temporary, const std::string& path,
+                    const std::function<void(const std::string&)>& write, bool rename)
+{
     try {
         write(temporary);
-        std::error_code error;
-        std::filesystem::rename(temporary, path, error);
-        if (error) throw std::runtime_error(error.message());
+        if (rename) {
+            std::error_code error;
+            std::filesystem::rename(temporary, path, error);
+            if (error) throw std::runtime_error(error.message());
+        }
     } catch (const Cancelled&) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
@@ -29,6 +40,38 @@ void writeAtomically(const std::string& path, const std::function<void(const std
         const std::size_t colon = why.rfind(": ");
         throw InputError(path + ": cannot write (" + (colon == std::string::npos ? why : why.substr(colon + 2)) + ")");
     }
+}
+
+}  // namespace
+
+void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
+{
+    writeTemporary(temporaryFor(path), path, write, /*rename=*/true);
+}
+
+AtomicFileSet::~AtomicFileSet()
+{
+    for (const auto& [temporary, path] : mFiles) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+    }
+}
+
+void AtomicFileSet::write(const std::string& path, const std::function<void(const std::string&)>& write)
+{
+    const std::string temporary = temporaryFor(path);
+    writeTemporary(temporary, path, write, /*rename=*/false);
+    mFiles.emplace_back(temporary, path);
+}
+
+void AtomicFileSet::commit()
+{
+    for (const auto& [temporary, path] : mFiles) {
+        std::error_code error;
+        std::filesystem::rename(temporary, path, error);
+        if (error) throw InputError(path + ": cannot write (" + error.message() + ")");
+    }
+    mFiles.clear();
 }
 
 }  // namespace ivis::core

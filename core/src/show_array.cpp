@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
+#include <fnmatch.h>
 #include <limits>
+#include <string_view>
 
 namespace ivis::core {
 namespace {
@@ -34,7 +37,51 @@ std::string availableArrays(const SurfaceField& field)
     return list.empty() ? "none" : list;
 }
 
+bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+/// Natural order: runs of digits compare as numbers (without leading zeros), the rest byte by byte.
+bool naturalLess(const std::string& a, const std::string& b)
+{
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (isDigit(a[i]) && isDigit(b[j])) {
+            std::size_t endA = i, endB = j;
+            while (endA < a.size() && isDigit(a[endA])) ++endA;
+            while (endB < b.size() && isDigit(b[endB])) ++endB;
+            std::size_t startA = i, startB = j;
+            while (startA + 1 < endA && a[startA] == '0') ++startA;
+            while (startB + 1 < endB && b[startB] == '0') ++startB;
+            const std::string_view numberA(a.data() + startA, endA - startA), numberB(b.data() + startB, endB - startB);
+            if (numberA.size() != numberB.size()) return numberA.size() < numberB.size();
+            if (numberA != numberB) return numberA < numberB;
+            i = endA;
+            j = endB;
+        } else {
+            if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+            ++i;
+            ++j;
+        }
+    }
+    if ((a.size() - i) != (b.size() - j)) return a.size() - i < b.size() - j;
+    return a < b;  // equal up to leading zeros: any fixed order
+}
+
 }  // namespace
+
+bool isArrayPattern(const std::string& spec) { return spec.find_first_of("*?") != std::string::npos; }
+
+std::vector<std::string> arraysMatching(const SurfaceField& field, const std::string& pattern)
+{
+    std::vector<std::string> names;
+    for (const DataArray& a : field.arrays)
+        if (::fnmatch(pattern.c_str(), a.name.c_str(), 0) == 0 &&
+            std::find(names.begin(), names.end(), a.name) == names.end())
+            names.push_back(a.name);
+    if (names.empty())
+        detail::failInput(field.sourcePath, "no array matches '" + pattern + "'; available: " + availableArrays(field));
+    std::sort(names.begin(), names.end(), naturalLess);
+    return names;
+}
 
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 {

@@ -34,7 +34,12 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
     } else if (isTimeSeries(source)) {
         const std::vector<TimeStep> steps = readPvd(source);
         throw InputError(source + ": a time series of " + std::to_string(steps.size()) +
-                         " steps; series are not rendered yet, so give one step's file, such as " + steps.front().path);
+                         " steps; this command takes one step's file, such as " + steps.front().path +
+                         " (render, optimize and the viewer take series)");
+    } else if (isArrayPattern(options.read.scalarName)) {
+        throw InputError(source + ": --scalar '" + options.read.scalarName +
+                         "' is a pattern, which makes a time series of the arrays it matches; this command shows "
+                         "one array (render, optimize and the viewer take series)");
     } else {
         MeshReadReport report;
         field = readMesh(source, options.read, &report);

@@ -1,5 +1,5 @@
 // The program with VTK files and arrays: info lists point and cell arrays and the steps of a
-// series; every command takes --scalar, --scalar-file and --cell-to-point; a cell array renders
+// series (which sdf does not take); every command takes --scalar, --scalar-file and --cell-to-point; a cell array renders
 // flat per triangle; a file with arrays and no choice shows its first point array and says so.
 #include "cli_fixture.h"
 #include "vtk_files.h"
@@ -49,7 +49,7 @@ TEST_F(Cli, InfoListsPointAndCellArrays)
     EXPECT_NE(text.out.find("pressure_cell         cell   Float32  1 component"), std::string::npos) << text.out;
 }
 
-TEST_F(Cli, InfoListsTheStepsOfASeriesAndRenderSaysSeriesComeLater)
+TEST_F(Cli, InfoListsTheStepsOfASeriesAndSdfTakesOneStep)
 {
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
     const CliResult result = runCli("info " + quoted(pvd) + " --json");
@@ -57,7 +57,8 @@ TEST_F(Cli, InfoListsTheStepsOfASeriesAndRenderSaysSeriesComeLater)
     const nlohmann::json steps = nlohmann::json::parse(result.out).at("time_steps");
     ASSERT_EQ(steps.size(), 5u);
     for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(steps[i].at("time"), 200.0 * double(i + 1));
-    expectRejected(render(pvd), {pvd + ": a time series of 5 steps", "artery_t0200.vtp"});
+    expectRejected(sdf(pvd), {pvd + ": a time series of 5 steps; this command takes one step's file",
+                              "artery_t0200.vtp", "(render, optimize and the viewer take series)"});
 }
 
 TEST_F(Cli, FirstPointArrayIsShownWhenNoneIsChosen)

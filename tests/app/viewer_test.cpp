@@ -1,8 +1,10 @@
 // inversevis-view against the CPU renderer: the same view of the generated vessel tree rendered by
 // the viewer's shaders (under Xvfb with Mesa's llvmpipe) and by render::renderImage.
 #include "test_support.h"
+#include "vtk_files.h"
 
 #include <ivis/core/camera.h>
+#include <ivis/core/content_hash.h>
 #include <ivis/core/image.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
@@ -73,6 +75,34 @@ struct Agreement {
     std::size_t cpuIndirect = 0, gpuIndirect = 0;
 };
 
+/// How a viewer screenshot (@a gpu, its --region-png @a gpuRegion) agrees with a CPU picture of the
+/// same size (@a cpu, its region layer @a cpuRegion).
+Agreement agreement(const core::Image& cpu, const std::vector<float>& cpuRegion, const core::Image& gpu,
+                    const core::Image& gpuRegion)
+{
+    const int width = cpu.width(), height = cpu.height();
+    Agreement a;
+    std::size_t same = 0, bothDirect = 0;
+    double indirectSum = 0.0, directSum = 0.0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = std::size_t(y) * width + x;
+            const int c = int(cpuRegion[i]), g = regionOfGrey(gpuRegion.at(x, y).r);
+            same += c == g;
+            a.cpuIndirect += c == 2;
+            a.gpuIndirect += g == 2;
+            if (c != g || c == 0) continue;
+            double diff = 0.0;
+            for (int k = 0; k < 3; ++k) diff += std::abs(level(cpu.at(x, y)[k]) - level(gpu.at(x, y)[k]));
+            (c == 2 ? indirectSum : directSum) += diff / 3.0;
+            (c == 2 ? a.bothIndirect : bothDirect)++;
+        }
+    a.regionAgreement = double(same) / double(width * height);
+    a.indirectMeanDiff = a.bothIndirect ? indirectSum / double(a.bothIndirect) : 0.0;
+    a.directMeanDiff = bothDirect ? directSum / double(bothDirect) : 0.0;
+    return a;
+}
+
 /// Renders @a method on the CPU and in the viewer at 512x512 (theta 90, phi 0, framed) and compares.
 /// @param volumeResolution volume resolution of both
 /// @param viewerArguments further viewer arguments (with the scalar options matching @a load)
@@ -88,7 +118,8 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     vdb::VolumeOptions volumeOptions;
     volumeOptions.resolution = volumeResolution;
     // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
-    const std::string cache = dir.file(core::sourceStem(source) + ".res" + std::to_string(volumeOptions.resolution) + ".vdb");
+    const std::string cache = dir.file(core::sourceStem(source) + "." + core::toHex(core::meshHash(field.mesh)) + ".res" +
+                                       std::to_string(volumeOptions.resolution) + ".vdb");
     const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, cache);
     const render::RenderScene scene(field, volume);
     render::RenderOptions options;
@@ -117,25 +148,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     EXPECT_EQ(gpu.height(), kSize);
     if (gpu.width() != kSize || gpu.height() != kSize || gpuRegion.width() != kSize) return {};
 
-    Agreement a;
-    std::size_t same = 0, bothDirect = 0;
-    double indirectSum = 0.0, directSum = 0.0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            const std::size_t i = std::size_t(y) * kSize + x;
-            const int c = int(cpuRegion[i]), g = regionOfGrey(gpuRegion.at(x, y).r);
-            same += c == g;
-            a.cpuIndirect += c == 2;
-            a.gpuIndirect += g == 2;
-            if (c != g || c == 0) continue;
-            double diff = 0.0;
-            for (int k = 0; k < 3; ++k) diff += std::abs(level(cpu.image.at(x, y)[k]) - level(gpu.at(x, y)[k]));
-            (c == 2 ? indirectSum : directSum) += diff / 3.0;
-            (c == 2 ? a.bothIndirect : bothDirect)++;
-        }
-    a.regionAgreement = double(same) / double(kSize * kSize);
-    a.indirectMeanDiff = a.bothIndirect ? indirectSum / double(a.bothIndirect) : 0.0;
-    a.directMeanDiff = bothDirect ? directSum / double(bothDirect) : 0.0;
+    const Agreement a = agreement(cpu.image, cpuRegion, gpu, gpuRegion);
     std::cout << "[ viewer   ] " << method << " (volume " << volumeResolution << " " << viewerArguments << "): regions agree on " << 100.0 * a.regionAgreement << "% of pixels; "
               << "indirect CPU " << a.cpuIndirect << " / GPU " << a.gpuIndirect << " pixels; mean colour difference "
               << a.indirectMeanDiff << " (indirect), " << a.directMeanDiff << " (direct) 8-bit levels\n";
@@ -246,6 +259,98 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
 // The interactive path: the ImGui panel, the background loader, the "optimise alpha" (parameters) button pressed
 // by --optimize (optimize::optimizeParameters on a background thread), the animation toward its result
 // and the window read back with the panel.
+// A time series: each step as the time slider shows it (--screenshot writes one per step), on the
+// volume loaded once since the geometry stays (the CLI's cache, named by the mesh's hash, is reused),
+// with one colour range over all steps: each screenshot agrees with `render`'s frame of its step as
+// closely as one picture does (a range of each step's own would move the colours by tens of levels).
+TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
+    const CliResult cpu = runCli("render '" + pvd + "' --res 256x256 --volume-res 100 --no-legend --no-outline --no-video -o '" +
+                                 dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const RunResult run = runViewer("'" + pvd + "' --width 256 --height 256 --volume-res 100 --frames 2 --screenshot '" +
+                                        dir.file("gpu.png") + "' --region-png '" + dir.file("gpu-region.png") +
+                                        "' --cache-dir '" + dir.path() + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find(".res100.vdb (reused"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("inversevis-view: volume "), run.output.rfind("inversevis-view: volume ")) << run.output;
+    for (int step = 2; step <= 5; ++step)
+        EXPECT_NE(run.output.find("step " + std::to_string(step) + "/5 (artery_t"), std::string::npos) << run.output;
+    std::size_t kept = 0;
+    for (std::size_t at = run.output.find("volume kept"); at != std::string::npos; at = run.output.find("volume kept", at + 1))
+        ++kept;
+    EXPECT_EQ(kept, 4u) << run.output;
+    for (int step = 0; step < 5; ++step) {
+        SCOPED_TRACE("step " + std::to_string(step));
+        const std::string suffix = "_000" + std::to_string(step);
+        const Agreement a = agreement(core::readPng(dir.file("cpu" + suffix + ".png")),
+                                      core::readExrChannel(dir.file("cpu" + suffix + ".exr"), "region"),
+                                      core::readPng(dir.file("gpu" + suffix + ".png")),
+                                      core::readPng(dir.file("gpu-region" + suffix + ".png")));
+        std::cout << "[ viewer   ] series step " << step << ": regions agree on " << 100.0 * a.regionAgreement
+                  << "% of pixels; mean colour difference " << a.indirectMeanDiff << " (indirect), "
+                  << a.directMeanDiff << " (direct) 8-bit levels\n";
+        EXPECT_GE(a.regionAgreement, 0.97);
+        EXPECT_GT(a.bothIndirect, std::size_t(3000));
+        EXPECT_LT(a.indirectMeanDiff, 1.0);
+        EXPECT_LT(a.directMeanDiff, 0.5);
+    }
+#endif
+}
+
+// A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
+// shows meanwhile); back on the artery, the artery's cache is read again.
+TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    VtkDataSet tet;
+    tet.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    tet.polys.connectivity = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+    tet.polys.offsets = {3, 6, 9, 12};
+    tet.pointData = {{"pressure", "Float32", 1, {0.1, 0.2, 0.3, 0.4}}};
+    VtkXmlLayout layout;
+    layout.format = VtkXmlLayout::Ascii;
+    writeFile(dir.file("tet.vtp"), vtpText(tet, layout));
+    writeFile(dir.file("mixed.pvd"),
+              "<VTKFile type=\"Collection\"><Collection>\n<DataSet timestep=\"0\" file=\"" +
+                  sharedMesh("vtk/artery_series/artery_t0200.vtp") + "\"/>\n<DataSet timestep=\"1\" file=\"tet.vtp\"/>\n" +
+                  "<DataSet timestep=\"2\" file=\"" + sharedMesh("vtk/artery_series/artery_t0400.vtp") +
+                  "\"/>\n</Collection></VTKFile>\n");
+    const RunResult run = runViewer("'" + dir.file("mixed.pvd") + "' --width 128 --height 128 --volume-res 64 --frames 1 " +
+                                        "--screenshot '" + dir.file("gpu.png") + "' --region-png '" +
+                                        dir.file("region.png") + "' --cache-dir '" + dir.path() + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("step 2/3 (tet.vtp): other geometry, loading its volume"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("step 3/3 (artery_t0400.vtp): other geometry, loading its volume"), std::string::npos)
+        << run.output;
+    const std::size_t built = run.output.find("(built"), reused = run.output.find("(reused");
+    EXPECT_NE(built, std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("(built", built + 1), std::string::npos) << "the tetrahedron's own volume\n" << run.output;
+    EXPECT_NE(reused, std::string::npos) << "the artery's volume read back for step 3\n" << run.output;
+    // Each step's picture is of its own mesh: the tetrahedron's regions differ from the artery's.
+    std::array<std::size_t, 3> direct{};
+    for (int step = 0; step < 3; ++step) {
+        const core::Image region = core::readPng(dir.file("region_000" + std::to_string(step) + ".png"));
+        for (int y = 0; y < region.height(); ++y)
+            for (int x = 0; x < region.width(); ++x) direct[std::size_t(step)] += regionOfGrey(region.at(x, y).r) == 1;
+    }
+    EXPECT_EQ(direct[0], direct[2]);
+    EXPECT_NE(direct[0], direct[1]);
+#endif
+}
+
 TEST(Viewer, PanelRunsTheParameterOptimiser)
 {
 #ifndef IVIS_VIEW_PATH
@@ -275,6 +380,17 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
     writeFile(dir.file("broken.obj"), "this is not a mesh\n");
     for (const std::string& mesh : {dir.file("missing.ply"), dir.file("broken.obj")}) {
         const RunResult run = runViewer("'" + mesh + "' --screenshot '" + dir.file("x.png") + "'", false, dir);
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
+        EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    }
+    // A series with a bad step, or a pattern matching no array: every step is checked before a word.
+    writeFile(dir.file("late.pvd"), "<VTKFile type=\"Collection\"><Collection>\n<DataSet file=\"" +
+                                        sharedMesh("vtk/artery_series/artery_t0200.vtp") +
+                                        "\"/>\n<DataSet file=\"broken.obj\"/>\n</Collection></VTKFile>\n");
+    for (const std::string& arguments :
+         {"'" + dir.file("late.pvd") + "'", "'" + sharedMesh("vampy_artery_cfd_pressure.ply") + "' --scalar 'velocity*'"}) {
+        const RunResult run = runViewer(arguments + " --screenshot '" + dir.file("x.png") + "'", false, dir);
         EXPECT_EQ(run.status, 2) << run.output;
         EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
         EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace ivis::core {
 namespace {
@@ -108,6 +111,41 @@ TEST(ShowArray, DefaultIsTheFirstPointArrayElseTheFirstCellArray)
     EXPECT_EQ(&defaultArray(f), &f.arrays[3]);
     f.arrays.resize(3);
     EXPECT_EQ(&defaultArray(f), &f.arrays[0]);
+}
+
+
+TEST(ArrayPattern, StarAndQuestionMarkMakeAPattern)
+{
+    EXPECT_TRUE(isArrayPattern("pressure_t*"));
+    EXPECT_TRUE(isArrayPattern("p?"));
+    EXPECT_FALSE(isArrayPattern("pressure_t200"));
+    EXPECT_FALSE(isArrayPattern("v:1"));
+}
+
+TEST(ArrayPattern, MatchesWholeNamesOnceInNaturalOrder)
+{
+    SurfaceField f = field();
+    f.arrays.clear();
+    for (const char* name : {"p_t1000", "p_t200", "q_t300", "p_t0400", "p_t30", "p_t200x", "p_t99"})
+        f.arrays.push_back({name, Association::Point, ValueType::Float32, 1, {0, 0, 0, 0, 0}});
+    f.arrays.push_back({"p_t200", Association::Cell, ValueType::Float32, 1, {0, 0}});  // a second p_t200: listed once
+    EXPECT_EQ(arraysMatching(f, "p_t*"),
+              (std::vector<std::string>{"p_t30", "p_t99", "p_t200", "p_t200x", "p_t0400", "p_t1000"}));
+    EXPECT_EQ(arraysMatching(f, "?_t30?"), (std::vector<std::string>{"q_t300"}));
+    EXPECT_EQ(arraysMatching(f, "*00"), (std::vector<std::string>{"p_t200", "p_t0400", "p_t1000", "q_t300"}));
+}
+
+TEST(ArrayPattern, NoMatchNamesTheArrays)
+{
+    const SurfaceField f = field();
+    try {
+        arraysMatching(f, "wss_*");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "f.vtp: no array matches 'wss_*'; available: p (point), v (point, 3 components), c (cell), "
+                  "p (cell), a:b (cell)");
+    }
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace ivis::core {
 
@@ -13,5 +15,26 @@ namespace ivis::core {
 ///        thrown; an existing file at @a path is left untouched.
 /// @param write writes the complete content to the path it is given; throws on failure
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
+
+/// @brief Outputs written under temporary names and renamed into place together, so that a set of
+///        files (the frames of a series) appears whole or not at all.
+class AtomicFileSet {
+public:
+    AtomicFileSet() = default;
+    AtomicFileSet(const AtomicFileSet&) = delete;
+    AtomicFileSet& operator=(const AtomicFileSet&) = delete;
+    /// @brief Removes the temporaries of a set that was not committed.
+    ~AtomicFileSet();
+
+    /// @brief Calls @a write with a temporary path beside @a path; commit() renames it to @a path.
+    /// @throw InputError "<path>: cannot write (<why>)" when @a write fails (its temporary removed)
+    void write(const std::string& path, const std::function<void(const std::string&)>& write);
+    /// @brief Renames every temporary into place, in the order written.
+    /// @throw InputError "<path>: cannot write (<why>)" when a rename fails
+    void commit();
+
+private:
+    std::vector<std::pair<std::string, std::string>> mFiles;  ///< (temporary, path)
+};
 
 }  // namespace ivis::core

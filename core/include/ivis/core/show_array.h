@@ -6,6 +6,7 @@
 #include <ivis/core/surface_field.h>
 
 #include <string>
+#include <vector>
 
 namespace ivis::core {
 
@@ -23,5 +24,14 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
 ///        else the first cell array (ParaView's habit).
 /// @note Call only when field.arrays is not empty.
 const DataArray& defaultArray(const SurfaceField& field);
+
+/// @brief True when @a spec is a pattern of array names: it holds '*' (any run of characters) or
+///        '?' (one character).
+bool isArrayPattern(const std::string& spec);
+
+/// @brief The names of @a field's arrays that the pattern @a pattern matches whole, each once, in
+///        natural order (runs of digits compared as numbers: "p_t200" before "p_t1000").
+/// @throw InputError "<source>: no array matches 'x*'; available: ..."
+std::vector<std::string> arraysMatching(const SurfaceField& field, const std::string& pattern);
 
 }  // namespace ivis::core

@@ -24,8 +24,9 @@ struct SurfaceLoadOptions {
 ///        says so), caps holes when asked, normalises into [-1,1]^3 and, when asked, puts hot
 ///        spots on it as its scalar ("hotspots", in [0, 1]; cap vertices included, caps are never
 ///        coloured).
-/// @throw InputError for bad files or scene names, and for a time series (rendering series comes
-///        later; the message names the series' first file), each message naming the source
+/// @throw InputError for bad files or scene names, and for a time series (a .pvd, whose message
+///        names its first file, or a --scalar pattern: core::SurfaceSeries loads series), each
+///        message naming the source
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options = {});
 
 /// @brief True when @a source is a time series (a ParaView collection, `.pvd`).

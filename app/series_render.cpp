@@ -1,0 +1,138 @@
+#include "series_render.h"
+
+#include "frame_video.h"
+#include "series_scene.h"
+
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
+#include <ivis/core/image_io.h>
+#include <ivis/core/log.h>
+#include <ivis/optimize/coherence.h>
+#include <ivis/render/method_json.h>
+#include <ivis/render/renderer.h>
+
+#include <cstdio>
+
+namespace ivis::app {
+namespace {
+
+/// The colour bar's title of @a step: the scalar's name, and which step it is unless the name
+/// says it (a pattern's array): "pressure, t = 600" (a .pvd), "pressure, b.vtp" (a list of files).
+std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
+{
+    if (!step.array.empty() || name.empty()) return name;
+    if (!series.timed()) return name + ", " + step.label;
+    char time[32];
+    std::snprintf(time, sizeof time, "%g", step.time);
+    return name + ", t = " + time;
+}
+
+}  // namespace
+
+void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source)
+{
+    for (const CLI::Option* flag : seriesFlags)
+        if (flag->count() > 0)
+            throw InputError(flag->get_name() + ": applies to a time series (a .pvd, several files, or a --scalar "
+                                                "pattern); " + source + " is one mesh");
+}
+
+nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
+                            core::Interrupter* progress)
+{
+    const std::size_t count = series.steps().size();
+    SeriesScene current(request.volume, request.cacheFolder, series.source());
+    core::AtomicFileSet files;
+    core::Camera camera;
+    nlohmann::json frames = nlohmann::json::array();
+    int width = 0, height = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const core::SeriesStep& step = series.steps()[k];
+        const std::string volume = current.show(series.load(k), progress);
+        render::RenderOptions options = view.renderOptions(current.field());
+        options.method = request.method;
+        if (request.range) options.shading.range = *request.range;
+        options.scalarName = legendTitle(series, step, current.field().name);
+        width = options.width;
+        height = options.height;
+        // One camera for every frame: framed on the first step's picture.
+        if (k == 0)
+            camera = view.pictureCamera(current.scene(), request.camera, *options.method, options.width, options.height);
+        const render::RenderResult result = render::renderImage(current.scene(), camera, options, progress);
+
+        const std::string png = framePath(request.png, k, count);
+        files.write(png, [&](const std::string& temporary) {
+            core::writePng(result.image, temporary, options.shading.transparentBackground);
+        });
+        const std::string exr = request.exr.empty() ? "" : framePath(request.exr, k, count);
+        if (!exr.empty())
+            files.write(exr, [&](const std::string& temporary) { core::writeExr(result.image, result.layers, temporary); });
+        const render::RenderStats& s = result.stats;
+        if (s.nanPixels > 0)
+            core::logWarning(step.label + ": " + std::to_string(s.nanPixels) +
+                             " pixels show NaN scalar values (drawn in magenta)");
+        frames.push_back({{"step", k},
+                          {"time", step.time},
+                          {"label", step.label},
+                          {"file", step.path},
+                          {"scalar", current.field().name},
+                          {"legend", options.scalarName},
+                          {"output", png},
+                          {"exr", exr.empty() ? nlohmann::json() : nlohmann::json(exr)},
+                          {"volume", volume},
+                          {"volume_cache", current.volumePath()},
+                          {"range", {options.shading.range.lo, options.shading.range.hi}},
+                          {"seconds", s.seconds},
+                          {"pixels_direct", s.pixelsDirect},
+                          {"pixels_indirect", s.pixelsIndirect},
+                          {"pixels_background", s.pixelsBackground},
+                          {"nan_pixels", s.nanPixels},
+                          {"coherence", optimize::mappingCoherence(result.layers).value()}});
+        core::logInfo("frame " + std::to_string(k + 1) + "/" + std::to_string(count) + " (" + step.label +
+                      "): volume " + volume + ", " + std::to_string(s.seconds) + " s render");
+    }
+    const std::string cameraPath = request.cameraOut.empty() ? request.png + ".camera.json" : request.cameraOut;
+    files.write(cameraPath, [&](const std::string& temporary) { core::writeCameraJson(camera, temporary); });
+    files.commit();
+
+    nlohmann::json video;
+    if (request.video) {
+        const std::optional<std::string> ffmpeg = findFfmpeg();
+        const std::string path = videoPath(request.png);
+        if (!ffmpeg) {
+            core::logInfo("ffmpeg is not on PATH: no video (the " + std::to_string(count) + " frames are written)");
+        } else if (const std::string failure = writeVideo(*ffmpeg, request.png, count, request.fps, path);
+                   !failure.empty()) {
+            core::logWarning(path + ": no video (" + failure + "); the " + std::to_string(count) +
+                             " frames are written");
+        } else {
+            video = path;
+        }
+    }
+
+    const glm::dvec2 angles = camera.angles();
+    nlohmann::json stats = {{"series", series.source()},
+                            {"steps", count},
+                            {"range", request.range ? nlohmann::json{request.range->lo, request.range->hi} : nlohmann::json()},
+                            {"volumes_loaded", current.volumesLoaded()},
+                            {"width", width},
+                            {"height", height},
+                            {"theta", angles.x},
+                            {"phi", angles.y},
+                            {"fov_y_deg", camera.fovYDeg},
+                            {"framed", view.framed()},
+                            {"volume_resolution", request.volume.resolution},
+                            {"camera", cameraPath},
+                            {"video", video},
+                            {"frames", frames}};
+    const nlohmann::json method = render::methodToJson(*request.method);
+    for (const auto& [key, value] : method.items()) stats[key] = value;
+    core::logInfo("wrote " + std::to_string(count) + " frames " + framePath(request.png, 0, count) + " .. " +
+                  framePath(request.png, count - 1, count) + " (" + std::to_string(width) + "x" +
+                  std::to_string(height) + ", " + request.method->name() + ", " + view.describeFraming(camera) + ", " +
+                  std::to_string(current.volumesLoaded()) + " volume" + (current.volumesLoaded() == 1 ? "" : "s") +
+                  (video.is_null() ? "" : ", video " + video.get<std::string>()) + ")");
+    return stats;
+}
+
+}  // namespace ivis::app

@@ -1,0 +1,51 @@
+/// @file series_render.h
+/// @brief Renders a time series frame by frame: one camera and one method for every frame, one
+///        colour range over all steps (unless each frame keeps its own), the volume kept while the
+///        geometry stays the same; the numbered PNGs (and EXRs) and the camera appear together,
+///        then an MP4 when ffmpeg is on PATH.
+#pragma once
+
+#include "view_options.h"
+
+#include <ivis/core/colormap.h>
+#include <ivis/core/interrupter.h>
+#include <ivis/core/surface_series.h>
+#include <ivis/vdb/surface_volume.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+
+/// @brief What to render of a series and where the frames go.
+struct SeriesRenderRequest {
+    render::MethodPtr method;                ///< the method and its parameters, the same for every frame
+    core::Camera camera;                     ///< framed on the first step's picture when the view is framed
+    std::optional<core::ScalarRange> range;  ///< every frame's colour range; none: as the view gives it per frame
+    vdb::VolumeOptions volume;
+    std::string cacheFolder;  ///< volume caches (one per geometry, named by the mesh's content hash)
+    std::string png;          ///< frame k goes to framePath(png, k, steps)
+    std::string exr;          ///< EXR layers of each frame, numbered alike ("" = none)
+    std::string cameraOut;    ///< the camera JSON ("" = "<png>.camera.json")
+    bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
+    int fps = 5;              ///< the video's frames per second
+};
+
+/// @brief Rejects the first of @a seriesFlags that was given: they apply to a time series only.
+/// @throw InputError "--fps: applies to a time series (...); <source> is one mesh"
+void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source);
+
+/// @brief Renders every step of @a series as @a view and @a request say.
+/// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and
+///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range,
+///         counts and mapping coherence
+/// @throw InputError when a step cannot be loaded or an output written (no frame is then written);
+///        Cancelled when interrupted
+nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
+                            core::Interrupter* progress = nullptr);
+
+}  // namespace ivis::app

@@ -1,0 +1,40 @@
+#include "series_scene.h"
+
+#include "mesh_options.h"
+
+#include <ivis/core/content_hash.h>
+#include <ivis/vdb/volume_cache.h>
+
+namespace ivis::app {
+
+SeriesScene::SeriesScene(const vdb::VolumeOptions& options, std::string cacheFolder, std::string source)
+    : mOptions(options), mCacheFolder(std::move(cacheFolder)), mSource(std::move(source))
+{
+}
+
+std::string SeriesScene::show(core::SurfaceField field, core::Interrupter* interrupter)
+{
+    const std::uint64_t hash = core::meshHash(field.mesh);
+    if (mScene && hash == mMeshHash) {
+        // Same geometry: the mesh (which the BVH shares) stays; only what it shows changes.
+        mField->values = std::move(field.values);
+        mField->valuesOn = field.valuesOn;
+        mField->name = std::move(field.name);
+        mField->sourcePath = std::move(field.sourcePath);
+        mField->arrays = std::move(field.arrays);
+        mField->triangleCells = std::move(field.triangleCells);
+        return "kept";
+    }
+    mScene.reset();
+    mField = std::make_unique<core::SurfaceField>(std::move(field));
+    mVolumePath = defaultVolumePath(mCacheFolder, mSource, mField->mesh, mOptions.resolution);
+    vdb::CacheOutcome outcome{};
+    mVolume = std::make_unique<vdb::SurfaceVolume>(
+        vdb::loadOrBuildVolume(mField->mesh, mOptions, mVolumePath, interrupter, &outcome));
+    mScene = std::make_unique<render::RenderScene>(*mField, *mVolume);
+    mMeshHash = hash;
+    ++mVolumesLoaded;
+    return vdb::toString(outcome);
+}
+
+}  // namespace ivis::app

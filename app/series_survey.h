@@ -1,0 +1,25 @@
+/// @file series_survey.h
+/// @brief What loading every step of a time series finds before anything is shown: the colour
+///        range shared by all steps and each step's geometry.
+#pragma once
+
+#include <ivis/core/colormap.h>
+#include <ivis/core/surface_series.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace ivis::app {
+
+/// @brief The facts of a series that take every step to know.
+struct SeriesSurvey {
+    core::ScalarRange range{0.0f, 0.0f};    ///< finite range of the shown scalars over all steps ({0, 0}: none)
+    std::vector<std::uint64_t> meshHashes;  ///< core::meshHash of each step's normalised mesh
+};
+
+/// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
+///        is written or said) and surveys them.
+/// @throw InputError naming the step's file for a step that cannot be loaded
+SeriesSurvey surveySeries(core::SurfaceSeries& series);
+
+}  // namespace ivis::app

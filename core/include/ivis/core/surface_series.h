@@ -1,0 +1,61 @@
+/// @file surface_series.h
+/// @brief A time series of surfaces, one step after the other: the files of a ParaView collection
+///        (.pvd), a list of files, or the arrays of one file whose names match a pattern
+///        (`--scalar 'pressure_t*'`).
+#pragma once
+
+#include <ivis/core/surface_source.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+
+/// @brief One step of a series: the file it reads and the array it shows.
+struct SeriesStep {
+    std::string path;   ///< the step's file (or scene)
+    std::string array;  ///< the array a pattern matched; "" when the step shows the series' --scalar
+    double time = 0.0;  ///< the .pvd's timestep; the step's index for a list of files or a pattern
+    std::string label;  ///< the step's name: its file's name, or the array's for a pattern
+};
+
+/// @brief True when @a sources with @a options make a series: a .pvd, several sources, or an
+///        array pattern (core::isArrayPattern) in --scalar.
+bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions& options);
+
+/// @brief The steps of a series and each step's surface, loaded as loadSurface loads a file.
+/// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
+///       when none is chosen, the array the first step shows by default (which loading the first
+///       step says).
+class SurfaceSeries {
+public:
+    /// @brief Lists the steps: a .pvd's (core::readPvd), each source's in the order given, or the
+    ///        arrays of one file matching the pattern in natural order (core::arraysMatching).
+    /// @throw InputError for a bad .pvd, a .pvd among several sources, a pattern with several
+    ///        sources or a .pvd, a pattern on a generated scene, a pattern's file or (with no
+    ///        array chosen) the first step's file that cannot be read, a pattern that matches no array
+    SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoadOptions options);
+
+    /// @brief The steps in order.
+    const std::vector<SeriesStep>& steps() const { return mSteps; }
+    /// @brief True when the steps carry times of their own (a .pvd's timesteps), not their indices.
+    bool timed() const { return mTimed; }
+    /// @brief The source that names the series (its caches): the .pvd, the pattern's file, or the
+    ///        first file.
+    const std::string& source() const { return mSource; }
+
+    /// @brief Step @a index's normalised surface showing its array.
+    /// @throw InputError naming the step's file for a file that cannot be read or lacks the array
+    SurfaceField load(std::size_t index);
+
+private:
+    std::vector<SeriesStep> mSteps;
+    std::string mSource;
+    bool mTimed = false;
+    SurfaceLoadOptions mOptions;
+    SurfaceField mPatternFile;  ///< the pattern's file, read once (empty for a series of files)
+    std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
+};
+
+}  // namespace ivis::core

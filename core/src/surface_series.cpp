@@ -1,0 +1,76 @@
+#include <ivis/core/surface_series.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/core/pvd_reader.h>
+#include <ivis/core/show_array.h>
+
+#include <filesystem>
+
+namespace ivis::core {
+
+bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions& options)
+{
+    return sources.size() > 1 || (sources.size() == 1 && isTimeSeries(sources.front())) ||
+           isArrayPattern(options.read.scalarName);
+}
+
+SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoadOptions options)
+    : mOptions(std::move(options))
+{
+    IVIS_CHECK(!sources.empty());
+    for (const std::string& source : sources)
+        if (sources.size() > 1 && isTimeSeries(source))
+            throw InputError(source + ": a .pvd is a series by itself; give it alone, not among other files");
+    const std::string& scalar = mOptions.read.scalarName;
+    const bool pattern = isArrayPattern(scalar);
+    if (pattern && (sources.size() > 1 || isTimeSeries(sources.front())))
+        throw InputError("--scalar '" + scalar + "': a pattern picks the steps among the arrays of one file; every "
+                         "step of a series of files shows one array (--scalar NAME)");
+    mSource = sources.front();
+
+    if (pattern) {
+        if (sources.front().rfind(kScenePrefix, 0) == 0)
+            throw InputError(sources.front() + ": generated scenes carry their own scalar; a --scalar pattern picks "
+                                               "arrays of a mesh file");
+        MeshReadOptions arraysOnly = mOptions.read;
+        arraysOnly.scalarName.clear();
+        const SurfaceField file = readMesh(sources.front(), arraysOnly);
+        for (const std::string& name : arraysMatching(file, scalar))
+            mSteps.push_back({sources.front(), name, double(mSteps.size()), name});
+    } else if (isTimeSeries(sources.front())) {
+        mTimed = true;
+        for (const TimeStep& step : readPvd(sources.front()))
+            mSteps.push_back({step.path, "", step.time, std::filesystem::path(step.path).filename().string()});
+    } else {
+        for (const std::string& source : sources)
+            mSteps.push_back({source, "", double(mSteps.size()), std::filesystem::path(source).filename().string()});
+    }
+    const bool chosen = !scalar.empty() || !mOptions.read.scalarFile.empty() || mOptions.hotSpots > 0;
+    if (!pattern && !chosen && mSteps.front().path.rfind(kScenePrefix, 0) != 0) {
+        const SurfaceField first = readMesh(mSteps.front().path, mOptions.read);
+        if (!first.arrays.empty()) mDefaultArray = defaultArray(first).name;
+    }
+}
+
+SurfaceField SurfaceSeries::load(std::size_t index)
+{
+    IVIS_CHECK(index < mSteps.size());
+    const SeriesStep& step = mSteps[index];
+    if (!step.array.empty()) {
+        // A pattern's steps are arrays of one file: read it once, then show each step's array.
+        if (mPatternFile.mesh.triangles.empty()) {
+            SurfaceLoadOptions first = mOptions;
+            first.read.scalarName = step.array;
+            mPatternFile = loadSurface(step.path, first);
+        }
+        SurfaceField field = mPatternFile;
+        showArray(field, step.array, mOptions.read.cellToPoint);
+        return field;
+    }
+    // The first step shows its default array as loadSurface shows it (and says so); the others follow it.
+    SurfaceLoadOptions options = mOptions;
+    if (index > 0 && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
+    return loadSurface(step.path, options);
+}
+
+}  // namespace ivis::core

@@ -1,0 +1,66 @@
+// Atomic outputs: one file through a temporary, and a set of files that appears whole or not at all.
+#include <ivis/core/atomic_file.h>
+#include <ivis/core/errors.h>
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+namespace {
+
+using test::TempDir;
+
+std::vector<std::string> names(const TempDir& dir)
+{
+    std::vector<std::string> out;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+        out.push_back(entry.path().filename().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+auto writing(const std::string& text)
+{
+    return [text](const std::string& path) { test::writeFile(path, text); };
+}
+
+TEST(AtomicFileSet, FilesAppearOnlyOnCommit)
+{
+    TempDir dir;
+    {
+        AtomicFileSet files;
+        files.write(dir.file("a_0000.png"), writing("a"));
+        files.write(dir.file("a_0001.png"), writing("b"));
+        for (const std::string& name : names(dir)) EXPECT_NE(name.find(".tmp."), std::string::npos) << name;
+        EXPECT_EQ(names(dir).size(), 2u);
+        files.commit();
+    }
+    EXPECT_EQ(names(dir), (std::vector<std::string>{"a_0000.png", "a_0001.png"}));
+    EXPECT_EQ(test::readFile(dir.file("a_0001.png")), "b");
+}
+
+TEST(AtomicFileSet, AnUncommittedOrFailedSetLeavesNothing)
+{
+    TempDir dir;
+    {
+        AtomicFileSet files;
+        files.write(dir.file("a_0000.png"), writing("a"));
+        EXPECT_THROW(files.write(dir.file("a_0001.png"),
+                                 [](const std::string& path) {
+                                     test::writeFile(path, "half");
+                                     throw std::runtime_error("disk full");
+                                 }),
+                     InputError);
+    }
+    EXPECT_EQ(names(dir), std::vector<std::string>{});
+}
+
+}  // namespace
+}  // namespace ivis::core

@@ -1,0 +1,122 @@
+// Time series: the steps of a .pvd, of a list of files and of a --scalar pattern on one file, and
+// each step's surface as loadSurface loads it.
+#include <ivis/core/errors.h>
+#include <ivis/core/surface_series.h>
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace ivis::core {
+namespace {
+
+using test::sharedMesh;
+
+std::string artery() { return sharedMesh("vampy_artery_cfd_pressure.ply"); }
+std::string pvd() { return sharedMesh("vtk/artery_series/artery.pvd"); }
+
+SurfaceLoadOptions scalar(const std::string& name)
+{
+    SurfaceLoadOptions options;
+    options.read.scalarName = name;
+    return options;
+}
+
+/// The message of the InputError @a f throws, or a marker.
+template <typename F>
+std::string errorOf(F f)
+{
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "<no error>";
+}
+
+TEST(SurfaceSeries, WhatMakesASeries)
+{
+    EXPECT_TRUE(isSeries({pvd()}, {}));
+    EXPECT_TRUE(isSeries({"a.vtp", "b.vtp"}, {}));
+    EXPECT_TRUE(isSeries({artery()}, scalar("pressure_t*")));
+    EXPECT_FALSE(isSeries({artery()}, scalar("pressure_t200")));
+    EXPECT_FALSE(isSeries({"scene:sphere"}, {}));
+}
+
+TEST(SurfaceSeries, PvdStepsAreItsFilesInTimeOrderEachAsThePlyStep)
+{
+    SurfaceSeries series({pvd()}, {});
+    ASSERT_EQ(series.steps().size(), 5u);
+    EXPECT_EQ(series.source(), pvd());
+    EXPECT_TRUE(series.timed());
+    const std::vector<std::string> times = {"200", "400", "600", "800", "1000"};
+    for (std::size_t k = 0; k < 5; ++k) {
+        const SeriesStep& step = series.steps()[k];
+        EXPECT_EQ(step.time, std::stod(times[k]));
+        EXPECT_EQ(step.label, "artery_t" + std::string(4 - times[k].size(), '0') + times[k] + ".vtp");
+        // With no --scalar, every step shows the array the first one shows by default.
+        const SurfaceField field = series.load(k);
+        EXPECT_EQ(field.name, "pressure");
+        // The folder's README: each .vtp is the PLY with its pressure_tNNN values bit for bit.
+        const SurfaceField ply = loadSurface(artery(), scalar("pressure_t" + times[k]));
+        EXPECT_EQ(field.values, ply.values) << step.label;
+        EXPECT_EQ(field.mesh.positions, ply.mesh.positions) << step.label;
+    }
+}
+
+TEST(SurfaceSeries, PatternStepsAreTheMatchingArraysOfOneFile)
+{
+    SurfaceSeries series({artery()}, scalar("pressure_t*"));
+    ASSERT_EQ(series.steps().size(), 5u);
+    EXPECT_FALSE(series.timed());
+    const std::vector<std::string> names = {"pressure_t200", "pressure_t400", "pressure_t600", "pressure_t800",
+                                            "pressure_t1000"};
+    for (std::size_t k = 0; k < 5; ++k) {
+        const SeriesStep& step = series.steps()[k];
+        EXPECT_EQ(step.label, names[k]);
+        EXPECT_EQ(step.array, names[k]);
+        EXPECT_EQ(step.time, double(k));
+        const SurfaceField field = series.load(k);
+        EXPECT_EQ(field.name, names[k]);
+        EXPECT_EQ(field.values, loadSurface(artery(), scalar(names[k])).values);
+    }
+    EXPECT_NE(series.load(0).values, series.load(4).values);
+}
+
+TEST(SurfaceSeries, ListStepsAreTheFilesInTheOrderGiven)
+{
+    const std::string a = sharedMesh("vtk/artery_series/artery_t0800.vtp");
+    const std::string b = sharedMesh("vtk/artery_series/artery_t0200.vtp");
+    SurfaceSeries series({a, b}, scalar("pressure_cell"));
+    ASSERT_EQ(series.steps().size(), 2u);
+    EXPECT_EQ(series.steps()[0].label, "artery_t0800.vtp");
+    EXPECT_EQ(series.steps()[1].time, 1.0);
+    EXPECT_EQ(series.load(1).values, loadSurface(b, scalar("pressure_cell")).values);
+    EXPECT_EQ(series.load(1).valuesOn, Association::Cell);
+}
+
+TEST(SurfaceSeries, BadSeriesAreRejectedNamingTheProblem)
+{
+    EXPECT_EQ(errorOf([] { SurfaceSeries({artery()}, scalar("velocity*")); }).rfind(
+                  artery() + ": no array matches 'velocity*'; available: pressure_t200 (point)", 0),
+              0u);
+    EXPECT_NE(errorOf([] { SurfaceSeries({pvd()}, scalar("pressure*")); }).find("a pattern picks the steps among"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { SurfaceSeries({artery(), artery()}, scalar("p*")); }).find("a pattern picks the steps"),
+              std::string::npos);
+    EXPECT_EQ(errorOf([] { SurfaceSeries({artery(), pvd()}, {}); }),
+              pvd() + ": a .pvd is a series by itself; give it alone, not among other files");
+    // A step without the series' array fails when loaded, naming its file.
+    SurfaceSeries series({pvd()}, scalar("wss"));
+    EXPECT_EQ(errorOf([&] { series.load(3); }).rfind(series.steps()[3].path + ": no array 'wss'", 0), 0u);
+    // One-array commands are told that a .pvd or a pattern is a series.
+    EXPECT_NE(errorOf([] { loadSurface(pvd()); }).find("a time series of 5 steps; this command takes one step's file"),
+              std::string::npos);
+    EXPECT_NE(errorOf([] { loadSurface(artery(), scalar("p*")); }).find("is a pattern"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ivis::core
