@@ -10,6 +10,7 @@ IVIS_PACKAGES=(
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
   libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev libpugixml-dev zlib1g-dev
   libglfw3-dev libepoxy-dev libimgui-dev xvfb libgl1-mesa-dri xauth
+  ffmpeg  # for the tests only: the MP4 of a rendered series (the tool runs without it)
 )
 
 # scripts/fuzz.sh needs these too (clang and its libFuzzer and sanitizer runtimes).
