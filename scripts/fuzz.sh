@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the VTK readers with libFuzzer under AddressSanitizer and UBSan: builds the targets of
+# Fuzzes the VTK readers and the .pvd reader with libFuzzer under AddressSanitizer and UBSan: builds the targets of
 # tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
 # seeds and runs each target for SECONDS (default 300) on one core.
 #   scripts/fuzz.sh [SECONDS]        findings are written to build-fuzz/findings/<target>/
@@ -12,11 +12,11 @@ FUZZ_BUILD=${IVIS_FUZZ_BUILD:-$IVIS_ROOT/build-fuzz}
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuzzer-no-link -fno-omit-frame-pointer"
 CC=clang CXX=clang++ cmake -S "$IVIS_ROOT" -B "$FUZZ_BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DIVIS_BUILD_APP=OFF -DIVIS_BUILD_TESTS=OFF -DIVIS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$FLAGS" >/dev/null
-cmake --build "$FUZZ_BUILD" -j 1 --target vtk_xml_fuzzer vtk_legacy_fuzzer vtk_fuzz_seeds
+cmake --build "$FUZZ_BUILD" -j 1 --target vtk_xml_fuzzer vtk_legacy_fuzzer pvd_fuzzer vtk_fuzz_seeds
 "$FUZZ_BUILD/tests/fuzz/vtk_fuzz_seeds" "$FUZZ_BUILD/corpus"
 
 status=0
-for target in vtk_xml vtk_legacy; do
+for target in vtk_xml vtk_legacy pvd; do
   mkdir -p "$FUZZ_BUILD/findings/$target"
   echo "fuzz.sh: $target for $SECONDS_PER_TARGET s" >&2
   log="$FUZZ_BUILD/findings/$target.log"

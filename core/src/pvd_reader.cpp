@@ -12,10 +12,10 @@
 
 namespace ivis::core {
 
-std::vector<TimeStep> readPvd(const std::string& path)
+std::vector<TimeStep> readPvd(const std::string& path) { return detail::parsePvd(path, detail::readFileBytes(path)); }
+
+std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text)
 {
-    using detail::failInput;
-    std::string text = detail::readFileBytes(path);
     pugi::xml_document document;
     const pugi::xml_parse_result parsed = document.load_buffer_inplace(text.data(), text.size());
     if (!parsed) {

@@ -1,6 +1,7 @@
 // Writes the seed corpora of the VTK fuzz targets: `vtk_fuzz_seeds FOLDER` fills FOLDER/vtk_xml
-// with a small cube in every XML layout and two tetrahedra as UnstructuredGrid, and
-// FOLDER/vtk_legacy with legacy files (ASCII and binary, classic and offset cell lists, a grid).
+// with a small cube in every XML layout and two tetrahedra as UnstructuredGrid, FOLDER/vtk_legacy
+// with legacy files (ASCII and binary, classic and offset cell lists, a grid) and FOLDER/pvd with a
+// collection of two steps.
 #include "vtk_files.h"
 
 #include <filesystem>
@@ -47,9 +48,15 @@ int main(int argc, char** argv)
         std::cerr << "usage: vtk_fuzz_seeds FOLDER\n";
         return 2;
     }
-    const fs::path xml = fs::path(argv[1]) / "vtk_xml", legacy = fs::path(argv[1]) / "vtk_legacy";
+    const fs::path xml = fs::path(argv[1]) / "vtk_xml", legacy = fs::path(argv[1]) / "vtk_legacy",
+                   pvd = fs::path(argv[1]) / "pvd";
     fs::create_directories(xml);
     fs::create_directories(legacy);
+    fs::create_directories(pvd);
+    write(pvd / "series.pvd",
+          "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+          "<DataSet timestep=\"0.5\" part=\"0\" file=\"b.vtp\"/>\n<DataSet timestep=\"0\" file=\"a.vtp\"/>\n"
+          "</Collection>\n</VTKFile>\n");
 
     int n = 0;
     for (int format = 0; format < 4; ++format)

@@ -21,4 +21,9 @@ struct TimeStep {
 ///        exist, or no DataSet at all
 std::vector<TimeStep> readPvd(const std::string& path);
 
+namespace detail {
+/// @brief readPvd on @a text, the bytes of the file @a path (what the fuzz target feeds).
+std::vector<TimeStep> parsePvd(const std::string& path, std::string text);
+}  // namespace detail
+
 }  // namespace ivis::core
