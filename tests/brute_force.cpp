@@ -54,4 +54,10 @@ double BruteForceClosest::windingNumber(const glm::dvec3& p) const
     return total / (4.0 * M_PI);
 }
 
+glm::dvec3 BruteForceClosest::distanceGradient(const glm::dvec3& p) const
+{
+    const glm::dvec3 away = p - closest(p).point;
+    return away / glm::length(away) * (windingNumber(p) > 0.5 ? -1.0 : 1.0);
+}
+
 }  // namespace ivis::test

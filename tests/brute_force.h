@@ -21,6 +21,9 @@ public:
     core::TrianglePoint closest(const glm::dvec3& p, std::int32_t* triangle = nullptr) const;
     /// @brief Generalised winding number at p (about 1 inside a closed outward mesh, 0 outside).
     double windingNumber(const glm::dvec3& p) const;
+    /// @brief Gradient of the signed distance of a closed mesh at p: the unit vector from the
+    ///        closest point, negated inside.
+    glm::dvec3 distanceGradient(const glm::dvec3& p) const;
 
 private:
     const core::TriangleMesh& mMesh;

@@ -15,13 +15,6 @@
 namespace ivis::optimize {
 namespace {
 
-/// The exact distance gradient of the (closed) mesh at @a p from its brute-force closest point.
-glm::dvec3 exactGradient(const test::BruteForceClosest& brute, const glm::dvec3& p)
-{
-    const glm::dvec3 away = p - brute.closest(p).point;
-    return away / glm::length(away) * (brute.windingNumber(p) > 0.5 ? -1.0 : 1.0);
-}
-
 TEST(HessianSampler, IsTheJacobianOfTheBlendedExactGradients)
 {
     const auto& fixture = test::sphereWithFarField();
@@ -43,7 +36,7 @@ TEST(HessianSampler, IsTheJacobianOfTheBlendedExactGradients)
                 const glm::dvec3 corner(i & 1, (i >> 1) & 1, (i >> 2) & 1);
                 glm::dvec3 x;
                 for (int a = 0; a < 3; ++a) x[a] = lattice.worldFromIndex(cell[a] + corner[a]);
-                const glm::dvec3 g = exactGradient(brute, x);
+                const glm::dvec3 g = brute.distanceGradient(x);
                 for (int a = 0; a < 3; ++a) jacobian[a] += (corner[a] > 0.0 ? 0.25 : -0.25) / lattice.voxelSize() * g;
             }
             glm::vec3 gradient, slope;
