@@ -77,11 +77,20 @@ openvdb::Vec3s distanceGradient(const core::TriangleMesh& mesh, int triangle, co
     return openvdb::Vec3s(float(direction.x), float(direction.y), float(direction.z));
 }
 
+/// The exact closest point of @a p on the mesh, searched within @a bound first (OpenVDB's distance
+/// to an actual polygon bounds it) and without bound if nothing lies within it (never seen).
+core::TrianglePoint closestWithin(const core::TriangleBvh& bvh, const glm::dvec3& p, double bound, int& triangle)
+{
+    core::TrianglePoint closest = bvh.closestPoint(p, bound, triangle);
+    if (triangle < 0) closest = bvh.closestPoint(p, std::numeric_limits<double>::infinity(), triangle);
+    IVIS_CHECK(triangle >= 0);
+    return closest;
+}
+
 /// Exact distance, closest triangle, barycentrics and distance gradient for every band voxel. The
 /// sign is OpenVDB's, except within two voxels of a closed, manifold, consistently oriented
 /// surface, where the pseudo-normal test is exact (OpenVDB's flood fill mislabels crevices
-/// narrower than a voxel). OpenVDB's band values are distances to actual polygons, so |phi| bounds
-/// the search radius; a search that finds nothing within it (never seen) retries without bound.
+/// narrower than a voxel).
 void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, SurfaceVolume& volume)
 {
     using namespace openvdb;
@@ -101,9 +110,7 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
                 const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
                 const glm::dvec3 p(centre.x(), centre.y(), centre.z());
                 int triangle = -1;
-                core::TrianglePoint best = bvh.closestPoint(p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
-                if (triangle < 0) best = bvh.closestPoint(p, std::numeric_limits<double>::infinity(), triangle);
-                IVIS_CHECK(triangle >= 0);
+                const core::TrianglePoint best = closestWithin(bvh, p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
                 const double distance = std::sqrt(best.distanceSquared);
                 bool inside = !isUnsigned && *voxel < 0.0f;
                 if (exactSignNearSurface && distance < 2.0 * voxelSize)
@@ -137,9 +144,7 @@ void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& 
                 const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
                 const glm::dvec3 p(centre.x(), centre.y(), centre.z());
                 int triangle = -1;
-                core::TrianglePoint closest = bvh.closestPoint(p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
-                if (triangle < 0) closest = bvh.closestPoint(p, std::numeric_limits<double>::infinity(), triangle);
-                IVIS_CHECK(triangle >= 0);
+                const core::TrianglePoint closest = closestWithin(bvh, p, std::abs(*voxel) + 0.01 * voxelSize, triangle);
                 const double distance = std::sqrt(closest.distanceSquared);
                 const double value = *voxel < 0.0f ? -distance : distance;
                 voxel.setValue(float(value));
