@@ -23,16 +23,11 @@ public:
     ///        topology); inactive voxels keep their (signed) background value and a zero gradient.
     DenseGrid(const openvdb::FloatGrid& phi, const openvdb::Vec3SGrid& gradient);
 
-    /// @brief detail::blend's phi at world point p (background outside the box).
-    float value(const glm::vec3& p) const;
-    /// @brief detail::blend's phi and gradient at p.
+    /// @brief detail::blend's phi and gradient at world point p (background and a zero gradient
+    ///        outside the box).
     float valueAndGradient(const glm::vec3& p, glm::vec3& gradient) const;
     /// @brief World-space voxel size.
     float voxelSize() const { return mVoxelSize; }
-    /// @brief Value used outside the box.
-    float background() const { return mBackground; }
-    /// @brief Bytes held by the voxel array.
-    std::size_t memoryBytes() const { return mVoxels.size() * sizeof(glm::vec4); }
 
 private:
     /// Cell origin index and fractional position of p; false when the cell is outside the box.
@@ -104,12 +99,6 @@ inline float DenseGrid::valueAndGradient(const glm::vec3& p, glm::vec3& gradient
     const glm::vec4 sample = detail::blend(corners, t, mVoxelSize);
     gradient = glm::vec3(sample.y, sample.z, sample.w);
     return sample.x;
-}
-
-inline float DenseGrid::value(const glm::vec3& p) const
-{
-    glm::vec3 gradient;
-    return valueAndGradient(p, gradient);
 }
 
 }  // namespace ivis::render
