@@ -17,12 +17,7 @@ std::string SeriesScene::show(core::SurfaceField field, core::Interrupter* inter
     const std::uint64_t hash = core::meshHash(field.mesh);
     if (mScene && hash == mMeshHash) {
         // Same geometry: the mesh (which the BVH shares) stays; only what it shows changes.
-        mField->values = std::move(field.values);
-        mField->valuesOn = field.valuesOn;
-        mField->name = std::move(field.name);
-        mField->sourcePath = std::move(field.sourcePath);
-        mField->arrays = std::move(field.arrays);
-        mField->triangleCells = std::move(field.triangleCells);
+        core::showStepData(*mField, std::move(field));
         return "kept";
     }
     mScene.reset();

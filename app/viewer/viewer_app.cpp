@@ -132,12 +132,7 @@ void ViewerApp::showStep(std::size_t step)
     const core::SeriesStep& shown = mSeries->steps()[step];
     if (sameGeometry) {
         // The mesh stays (the loaded scene and the GPU volume refer to it); only what it shows changes.
-        mField->values = std::move(field.values);
-        mField->valuesOn = field.valuesOn;
-        mField->name = std::move(field.name);
-        mField->sourcePath = std::move(field.sourcePath);
-        mField->arrays = std::move(field.arrays);
-        mField->triangleCells = std::move(field.triangleCells);
+        core::showStepData(*mField, std::move(field));
     } else {
         mLoader.reset();  // cancels and joins: it reads the field being replaced
         mLoaded.reset();

@@ -5,8 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace ivis::core {
+
+void showStepData(SurfaceField& field, SurfaceField&& step)
+{
+    field.values = std::move(step.values);
+    field.valuesOn = step.valuesOn;
+    field.name = std::move(step.name);
+    field.sourcePath = std::move(step.sourcePath);
+    field.arrays = std::move(step.arrays);
+    field.triangleCells = std::move(step.triangleCells);
+}
 
 void normalize(SurfaceField& field)
 {

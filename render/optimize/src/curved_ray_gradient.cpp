@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cmath>
-#include <limits>
 
 namespace ivis::optimize {
 namespace {
@@ -29,22 +28,29 @@ glm::vec3 surfaceGradient(const core::TriangleMesh& mesh, int triangle, const fl
            twiceArea;
 }
 
-/// The closest surface point of @a p (the landing rule of render::landedAt).
-glm::vec3 closestSurfacePoint(const render::RenderScene& scene, const glm::vec3& p)
+/// The closest surface point of @a p (the landing rule of render::landedAt), which lies within
+/// @a bound of it.
+glm::vec3 closestSurfacePoint(const render::RenderScene& scene, const glm::vec3& p, double bound)
 {
     int triangle = -1;
-    return glm::vec3(scene.bvh().closestPoint(glm::dvec3(p), std::numeric_limits<double>::infinity(), triangle).point);
+    return glm::vec3(scene.bvh().closestPoint(glm::dvec3(p), bound, triangle).point);
 }
 
-/// The derivative of the closest surface point as the ray's end @a p moves by @a dp: a central
-/// difference over a hundredth of a voxel. (Projecting dp onto the tangent plane would ignore that
-/// a point off a curved surface moves its closest point by 1 / (1 + phi kappa) less.)
-glm::vec3 closestPointDerivative(const render::RenderScene& scene, const glm::vec3& p, const glm::vec3& dp)
+/// The derivative of the closest surface point as the ray's end @a p, @a distance off the surface,
+/// moves by @a dp: a central difference over a hundredth of a voxel. (Projecting dp onto the tangent
+/// plane would ignore that a point off a curved surface moves its closest point by
+/// 1 / (1 + phi kappa) less.)
+glm::vec3 closestPointDerivative(const render::RenderScene& scene, const glm::vec3& p, float distance,
+                                 const glm::vec3& dp)
 {
     const float length = glm::length(dp);
     if (!(length > 0.0f)) return glm::vec3(0.0f);
-    const float step = 0.01f * scene.distance().voxelSize() / length;
-    return (closestSurfacePoint(scene, p + step * dp) - closestSurfacePoint(scene, p - step * dp)) / (2.0f * step);
+    const float offset = 0.01f * scene.distance().voxelSize();
+    const float step = offset / length;
+    // The moved points are within offset of p, so their closest points within distance + offset.
+    const double bound = double(distance) + 2.0 * double(offset);
+    return (closestSurfacePoint(scene, p + step * dp, bound) - closestSurfacePoint(scene, p - step * dp, bound)) /
+           (2.0f * step);
 }
 
 }  // namespace
@@ -72,7 +78,8 @@ PixelLaunchDerivative pixelLaunchDerivative(const EnergyEvaluator& evaluator, co
     if (landed.region != render::Region::Indirect || mesh.isCap(std::size_t(landed.point.triangle))) return result;
     result.landed = true;
     result.point = landed.point;
-    result.dPoint = closestPointDerivative(scene, ray.end.position, ray.dPosition);
+    result.dPoint = closestPointDerivative(scene, ray.end.position,
+                                           glm::length(landed.point.position - ray.end.position), ray.dPosition);
     result.perParameter = sensitivity.perParameter;
     // A cell scalar is constant on the triangle: its corners agree and the gradient is zero.
     const std::array<float, 3> corners = core::cornerScalars(scene.field(), std::size_t(landed.point.triangle));

@@ -57,6 +57,11 @@ float scalarAt(const SurfaceField& field, std::size_t triangle, const glm::vec3&
 /// @note Call only for a data triangle of a field with a scalar.
 std::array<float, 3> cornerScalars(const SurfaceField& field, std::size_t triangle);
 
+/// @brief Makes @a field show what @a step shows (scalar, its association and name, source, arrays,
+///        cell map), keeping @a field's mesh: a time step of the same geometry, whose mesh the
+///        scenes built on @a field still refer to.
+void showStepData(SurfaceField& field, SurfaceField&& step);
+
 /// @brief Scales and centres the mesh uniformly so its bounding box fits [-1,1]^3 (longest side
 ///        spans exactly [-1,1]); records the transform in field.normalization.
 /// @throw ValueError if the mesh has zero extent.
