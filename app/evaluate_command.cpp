@@ -178,10 +178,10 @@ Command addEvaluateCommand(CLI::App& app)
                     picture.width = picture.height =
                         options->pictureResolution > 0 ? options->pictureResolution : options->displayResolution;
                     picture.method = best.method;
-                    picture.shading.range = range;
+                    picture.shading.scale.range = range;
                     picture.scalarName = field.name;
                     const std::string path = options->pictures + "/" + stem + "-" + methodName + ".png";
-                    core::writePng(render::renderImage(scene, camera, picture).image, path, false);
+                    core::writePng(render::renderImage(scene, camera, picture).figure, path, false);
                     entry["picture"] = path;
                 }
                 meshResults[methodName] = entry;

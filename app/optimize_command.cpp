@@ -84,19 +84,17 @@ Command addOptimizeCommand(CLI::App& app)
         // measured with the importance range [0, 1]; the frames show its steps on their shared range.
         std::optional<core::SurfaceSeries> series;
         core::SurfaceField field;
-        core::ScalarRange seriesRange;
+        core::ColorScale seriesScale;
         if (isSeries) {
             series.emplace(options->sources, options->mesh.load);
-            const core::ScalarRange dataRange = surveySeries(*series).range;
-            const std::vector<double>& range = options->view.range;
-            seriesRange = range.size() == 2 ? core::scalarRangeFromUser(range[0], range[1]) : dataRange;
-            field = optimize::meanImportanceField(*series, seriesRange);
+            seriesScale = options->view.colorScaleRequest().resolve(surveySeries(*series).sample);
+            field = optimize::meanImportanceField(*series, seriesScale.range);
         } else {
             options->mesh.source = options->sources.front();
             field = core::loadSurface(options->mesh.source, options->mesh.load);
         }
         render::RenderOptions renderOptions = options->view.renderOptions(field);
-        const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.range;
+        const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.scale.range;
         const std::string source = isSeries ? series->source() : options->mesh.source;
         const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
@@ -128,7 +126,7 @@ Command addOptimizeCommand(CLI::App& app)
             SeriesRenderRequest request;
             request.method = best.method;
             request.camera = best.camera;
-            request.range = seriesRange;
+            request.scale = seriesScale;
             request.volume = volumeOptions;
             request.cacheFolder = folder;
             request.png = options->output;
@@ -140,7 +138,7 @@ Command addOptimizeCommand(CLI::App& app)
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
-            core::writePng(picture.image, options->output, renderOptions.shading.transparentBackground);
+            core::writePng(picture.figure, options->output, renderOptions.shading.transparentBackground);
             if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
             core::writeCameraJson(camera, cameraPath);
             coherence = optimize::mappingCoherence(picture.layers).value();

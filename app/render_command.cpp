@@ -2,11 +2,13 @@
 // `inversevis render SERIES`: one such picture per step of a time series, and a video.
 #include "commands.h"
 #include "json_output.h"
+#include "legend_file.h"
 #include "mesh_options.h"
 #include "series_render.h"
 #include "series_survey.h"
 #include "view_options.h"
 
+#include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
@@ -30,6 +32,7 @@ Command addRenderCommand(CLI::App& app)
         std::string exr;
         std::string statsJson;
         std::string cameraOut;
+        std::string legendOnly;
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
@@ -53,6 +56,9 @@ Command addRenderCommand(CLI::App& app)
                         "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
     command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON (of a series: per frame too)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
+    command->add_option("--legend-only", options->legendOnly,
+                        "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as beside a --res picture "
+                        "(of a series: its one colour scale)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,
@@ -66,8 +72,10 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
-        for (const std::string& path : {options->output, options->exr, options->statsJson, options->cameraOut})
+        for (const std::string& path :
+             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly})
             if (!path.empty()) checkOutputFolder(path);
+        if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
@@ -80,8 +88,17 @@ Command addRenderCommand(CLI::App& app)
             request.method = options->view.renderOptions().method;
             request.camera = requested;
             // Loads every step: a bad one fails before anything is written.
-            const core::ScalarRange dataRange = surveySeries(series).range;
-            if (options->view.range.size() != 2 && !options->rangePerFrame) request.range = dataRange;
+            const SeriesSurvey survey = surveySeries(series);
+            request.stepRanges = survey.stepRanges;
+            if (!options->rangePerFrame || !options->legendOnly.empty())
+                request.scale = options->view.colorScaleRequest().resolve(survey.sample);
+            if (!options->legendOnly.empty()) {
+                render::RenderOptions legend = options->view.renderOptions();
+                legend.shading.scale = *request.scale;
+                legend.scalarName = series.load(0).name;
+                writeLegendFile(options->legendOnly, legend);
+                return;
+            }
             request.volume = volumeOptions;
             request.cacheFolder = folder;
             request.png = options->output;
@@ -97,6 +114,12 @@ Command addRenderCommand(CLI::App& app)
         options->mesh.source = options->sources.front();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);
+        if (!options->legendOnly.empty()) {
+            if (!field.hasScalar())
+                throw InputError(options->mesh.source + ": no scalar to draw a colour bar of (see --scalar)");
+            writeLegendFile(options->legendOnly, renderOptions);
+            return;
+        }
 
         const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions.resolution);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
@@ -105,7 +128,7 @@ Command addRenderCommand(CLI::App& app)
                                                                 renderOptions.width, renderOptions.height);
         const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
 
-        core::writePng(result.image, options->output, renderOptions.shading.transparentBackground);
+        core::writePng(result.figure, options->output, renderOptions.shading.transparentBackground);
         if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr);
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
         core::writeCameraJson(camera, cameraPath);

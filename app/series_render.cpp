@@ -27,6 +27,24 @@ std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesSte
     return name + ", t = " + time;
 }
 
+/// The widest colour-bar margin over the steps of @a series, so that every frame has the same size:
+/// each step's title (of the scalar @a name) with the look of @a options and the series' one scale,
+/// or, when each frame has its own range, each step's data range (@a stepRanges).
+int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOptions& options, const std::string& name,
+                       const std::vector<core::ScalarRange>& stepRanges)
+{
+    if (!options.legend) return 0;
+    int margin = 0;
+    for (std::size_t k = 0; k < series.steps().size(); ++k) {
+        const core::SeriesStep& step = series.steps()[k];
+        core::ColorBarContent content{options.shading.colormap, options.shading.scale,
+                                      legendTitle(series, step, step.array.empty() ? name : step.array), options.units};
+        if (k < stepRanges.size()) content.scale.range = stepRanges[k];
+        margin = std::max(margin, core::colorBarMargin(content, options.width, options.height, options.legendSide));
+    }
+    return margin;
+}
+
 }  // namespace
 
 void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source)
@@ -45,14 +63,18 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     core::AtomicFileSet files;
     core::Camera camera;
     nlohmann::json frames = nlohmann::json::array();
-    int width = 0, height = 0;
+    int width = 0, height = 0, legendMargin = 0;
     for (std::size_t k = 0; k < count; ++k) {
         const core::SeriesStep& step = series.steps()[k];
         const std::string volume = current.show(series.load(k), progress);
         render::RenderOptions options = view.renderOptions(current.field());
         options.method = request.method;
-        if (request.range) options.shading.range = *request.range;
+        if (request.scale) options.shading.scale = *request.scale;
         options.scalarName = legendTitle(series, step, current.field().name);
+        if (k == 0)
+            legendMargin = seriesLegendMargin(series, options, current.field().name,
+                                              request.scale ? std::vector<core::ScalarRange>{} : request.stepRanges);
+        options.legendMinimumMargin = legendMargin;
         width = options.width;
         height = options.height;
         // One camera for every frame: framed on the first step's picture.
@@ -62,7 +84,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
 
         const std::string png = framePath(request.png, k, count);
         files.write(png, [&](const std::string& temporary) {
-            core::writePng(result.image, temporary, options.shading.transparentBackground);
+            core::writePng(result.figure, temporary, options.shading.transparentBackground);
         });
         const std::string exr = request.exr.empty() ? "" : framePath(request.exr, k, count);
         if (!exr.empty())
@@ -81,7 +103,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"exr", exr.empty() ? nlohmann::json() : nlohmann::json(exr)},
                           {"volume", volume},
                           {"volume_cache", current.volumePath()},
-                          {"range", {options.shading.range.lo, options.shading.range.hi}},
+                          {"range", {options.shading.scale.range.lo, options.shading.scale.range.hi}},
                           {"seconds", s.seconds},
                           {"pixels_direct", s.pixelsDirect},
                           {"pixels_indirect", s.pixelsIndirect},
@@ -113,7 +135,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     const glm::dvec2 angles = camera.angles();
     nlohmann::json stats = {{"series", series.source()},
                             {"steps", count},
-                            {"range", request.range ? nlohmann::json{request.range->lo, request.range->hi} : nlohmann::json()},
+                            {"range", request.scale ? nlohmann::json{request.scale->range.lo, request.scale->range.hi} : nlohmann::json()},
                             {"volumes_loaded", current.volumesLoaded()},
                             {"width", width},
                             {"height", height},

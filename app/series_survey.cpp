@@ -28,17 +28,27 @@ SeriesSurvey surveySeries(core::SurfaceSeries& series)
 {
     const SilentLog silent;
     SeriesSurvey survey;
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (std::size_t k = 0; k < series.steps().size(); ++k) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo, lowestPositive = hi;
+    const std::size_t steps = series.steps().size();
+    for (std::size_t k = 0; k < steps; ++k) {
         const core::SurfaceField field = series.load(k);
         survey.meshHashes.push_back(core::meshHash(field.mesh));
-        for (const float v : field.values) {
+        const std::size_t stride = std::max<std::size_t>(1, field.values.size() * steps / kSurveySampleSize);
+        survey.stepRanges.push_back(core::scalarRangeFromData(field.values));
+        for (std::size_t i = 0; i < field.values.size(); ++i) {
+            const float v = field.values[i];
             if (!std::isfinite(v)) continue;
             lo = std::min(lo, v);
             hi = std::max(hi, v);
+            if (v > 0.0f) lowestPositive = std::min(lowestPositive, v);
+            if (i % stride == 0) survey.sample.push_back(v);
         }
     }
-    if (lo <= hi) survey.range = {lo, hi};
+    if (lo <= hi) {
+        survey.range = {lo, hi};
+        survey.sample.insert(survey.sample.end(), {lo, hi});
+    }
+    if (std::isfinite(lowestPositive)) survey.sample.push_back(lowestPositive);
     return survey;
 }
 

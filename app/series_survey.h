@@ -11,9 +11,16 @@
 
 namespace ivis::app {
 
+/// @brief Most values SeriesSurvey::sample holds (before the extremes are added).
+inline constexpr std::size_t kSurveySampleSize = 4000000;
+
 /// @brief The facts of a series that take every step to know.
 struct SeriesSurvey {
     core::ScalarRange range{0.0f, 0.0f};    ///< finite range of the shown scalars over all steps ({0, 0}: none)
+    std::vector<core::ScalarRange> stepRanges;  ///< each step's finite range ({0, 0}: none)
+    std::vector<float> sample;              ///< the shown scalars of all steps for the colour scale: all of
+                                            ///< them up to kSurveySampleSize, else an even subsample plus the
+                                            ///< extremes (the smallest positive value included)
     std::vector<std::uint64_t> meshHashes;  ///< core::meshHash of each step's normalised mesh
 };
 

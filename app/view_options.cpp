@@ -26,7 +26,15 @@ void ViewOptions::addTo(CLI::App& command)
     for (const std::string& name : core::colormapNames()) names += (names.empty() ? "" : ", ") + name;
     command.add_option("--colormap", colormap, "Colour map: " + names)->capture_default_str();
     command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2);
-    command.add_option("--units", units, "Units shown on the colour bar");
+    command.add_option("--range-percentile", rangePercentile,
+                       "Scalar range from the data's LO-th and HI-th percentiles (0..100), for heavy-tailed data")
+        ->expected(2);
+    command.add_flag("--symmetric", symmetric, "Range centred on 0 ([-m, m], m the larger end), for signed data");
+    command.add_flag("--log", logScale, "Logarithmic colour scale (the range's low end must be positive)");
+    command.add_flag("--invert", invert, "Colour map reversed");
+    command.add_option("--units", units, "Units shown on the colour bar (any Unicode, e.g. dyn/cm²)");
+    command.add_option("--legend", legendSide, "Side of the colour bar's margin: right, left or bottom")
+        ->capture_default_str();
     command.add_flag("--no-legend", noLegend, "No colour bar");
     command.add_flag("--no-outline", noOutline, "No outline around the directly visible object");
     command.add_flag("--no-shadows", noShadows, "No shadow rays");
@@ -66,6 +74,18 @@ std::string ViewOptions::describeFraming(const core::Camera& camera) const
     return std::string(text) + (framed() ? ", framed" : ", fixed");
 }
 
+core::ColorScaleRequest ViewOptions::colorScaleRequest() const
+{
+    core::ColorScaleRequest request;
+    if (range.size() == 2) request.range = core::scalarRangeFromUser(range[0], range[1]);
+    if (rangePercentile.size() == 2) request.percentiles = std::pair{rangePercentile[0], rangePercentile[1]};
+    request.symmetric = symmetric;
+    request.log = logScale;
+    request.invert = invert;
+    request.validate();
+    return request;
+}
+
 render::RenderOptions ViewOptions::renderOptions() const
 {
     render::RenderOptions options;
@@ -77,7 +97,11 @@ render::RenderOptions ViewOptions::renderOptions() const
     options.method = method.create();
     options.shading.colormap = colormap;
     core::colormap(colormap);  // validates the name
-    if (range.size() == 2) options.shading.range = core::scalarRangeFromUser(range[0], range[1]);
+    const core::ColorScaleRequest request = colorScaleRequest();
+    options.shading.scale.log = request.log;
+    options.shading.scale.invert = request.invert;
+    if (request.range) options.shading.scale.range = *request.range;
+    options.legendSide = core::legendSideFromName(legendSide);
     options.shading.shadows = !noShadows;
     options.shading.shadeIndirect = !unshadedIndirect;
     options.shading.transparentBackground = transparent;
@@ -90,7 +114,7 @@ render::RenderOptions ViewOptions::renderOptions() const
 render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
 {
     render::RenderOptions options = renderOptions();
-    if (range.size() != 2) options.shading.range = core::scalarRangeFromData(field.values);
+    options.shading.scale = colorScaleRequest().resolve(field.values);
     options.scalarName = field.name;
     return options;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/core/color_scale.h>
 #include <ivis/core/surface_field.h>
 #include "method_options.h"
 
@@ -28,7 +29,12 @@ struct ViewOptions {
     MethodOptions method;
     std::string colormap = "viridis";
     std::vector<double> range;
+    std::vector<double> rangePercentile;
+    bool symmetric = false;
+    bool logScale = false;
+    bool invert = false;
     std::string units;
+    std::string legendSide = "right";
     bool noLegend = false;
     bool noOutline = false;
     bool noShadows = false;
@@ -49,12 +55,15 @@ struct ViewOptions {
                                const render::Method& method, int width, int height) const;
     /// @brief "field of view 52.3 degrees, framed" (or "fixed"; orthographic: its half height).
     std::string describeFraming(const core::Camera& camera) const;
+    /// @brief The colour-scale flags (--range, --range-percentile, --symmetric, --log, --invert).
+    /// @throw ValueError when they contradict each other
+    core::ColorScaleRequest colorScaleRequest() const;
     /// @brief Render options from the flags alone, every value checked, so that a bad flag fails
     ///        before a mesh is read; the scalar range is --range's (the default when not given).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions() const;
-    /// @brief Render options for @a field (its scalar range, unless --range is given, and its name
-    ///        feed the colour bar).
+    /// @brief Render options for @a field (its values fix the colour scale, unless --range is
+    ///        given, and its name titles the colour bar).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
 };

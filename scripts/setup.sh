@@ -8,7 +8,7 @@ IVIS_BUILD=${IVIS_BUILD:-$IVIS_ROOT/build}
 IVIS_PACKAGES=(
   build-essential cmake ccache pkg-config
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
-  libglm-dev libpng-dev nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev libpugixml-dev zlib1g-dev
+  libglm-dev libpng-dev libfreetype-dev fonts-dejavu-core nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev libpugixml-dev zlib1g-dev
   libglfw3-dev libepoxy-dev libimgui-dev xvfb libgl1-mesa-dri xauth
   ffmpeg  # for the tests only: the MP4 of a rendered series (the tool runs without it)
 )

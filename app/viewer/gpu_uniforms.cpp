@@ -98,7 +98,9 @@ void setParameterUniforms(GlProgram& p, const render::Method& method)
 void setSharedUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera)
 {
     const render::ShadingOptions& shading = frame.shading;
-    program.set("uRange", glm::vec2(shading.range.lo, shading.range.hi));
+    program.set("uRange", glm::vec2(shading.scale.range.lo, shading.scale.range.hi));
+    program.set("uLogScale", shading.scale.log);
+    program.set("uInvertScale", shading.scale.invert);
     program.set("uNanColour", shading.nanColour);
     program.set("uNoDataColour", shading.noDataColour);
     program.set("uEye", toFloat(frame.camera.eye));

@@ -55,11 +55,12 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
     mMethod = render.method;
     mShading = render.shading;
-    mDataRange = mSeries ? mSurvey.range : core::scalarRangeFromData(mField->values);
-    if (mSeries && mOptions.view.range.size() != 2) mShading.range = mDataRange;  // one range for every step
+    const core::ColorScaleRequest scaleRequest = mOptions.view.colorScaleRequest();
+    mDataScale = scaleRequest.resolve(mSeries ? mSurvey.sample : mField->values);
+    if (mSeries) mShading.scale = mDataScale;  // one scale for every step
     mOptimiser.optimization = mOptions.optimization;
     mOptimiser.resolution = mOptions.optResolution;
-    mOptions.optimization.energyOptions(mOptions.optResolution, mShading.range);  // validates --energy
+    mOptions.optimization.energyOptions(mOptions.optResolution, mShading.scale.range);  // validates --energy
     mOrbit = OrbitCamera::fromCamera(mOptions.view.camera(), !mOptions.view.cameraFile.empty());
     mOrbit.framed = mOptions.view.framed();
     const std::vector<std::string> names = core::colormapNames();
@@ -312,7 +313,7 @@ void ViewerApp::startOptimiser(bool view)
 {
     if (!mLoaded || mJob.valid()) return;
     mCancelJob = false;
-    mOptimiser.importanceRange = mShading.range;
+    mOptimiser.importanceRange = mShading.scale.range;
     mOptimiser.framed = mOrbit.framed;
     const ViewOptimiser optimiser = view ? viewpointOptimiser(mOptimiser) : parameterOptimiser(mOptimiser);
     mJobName = view ? "optimise view" : "optimise " + mMethod->name();
@@ -416,7 +417,7 @@ void ViewerApp::drawPanel()
     bool changed = methodWidgets(mMethod, reach);
     ImGui::Separator();
     const std::string colormap = mShading.colormap;
-    changed |= lookWidgets(mShading, mColormapIndex, mDataRange, mField->hasScalar(), mRenderScale);
+    changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar(), mRenderScale);
     if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
     ImGui::Separator();
 

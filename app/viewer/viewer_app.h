@@ -83,7 +83,7 @@ private:
     render::MethodPtr mMethod;
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
-    core::ScalarRange mDataRange;
+    core::ColorScale mDataScale;  ///< the colour scale the flags give over the data ("data" resets to it)
     OrbitCamera mOrbit;
     OptimiserSettings mOptimiser;
 

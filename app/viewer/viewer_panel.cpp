@@ -79,7 +79,7 @@ bool methodWidgets(render::MethodPtr& method, float reach)
     return changed || edited;
 }
 
-bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ScalarRange& dataRange,
+bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
                  bool hasScalar, float& renderScale)
 {
     bool changed = false;
@@ -94,20 +94,30 @@ bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core
         ImGui::EndCombo();
     }
     if (hasScalar) {
-        const float speed = std::max(1e-6f, (dataRange.hi - dataRange.lo) / 300.0f);
-        float lo = shading.range.lo, hi = shading.range.hi;
+        core::ColorScale& scale = shading.scale;
+        const float speed = std::max(1e-6f, (dataScale.range.hi - dataScale.range.lo) / 300.0f);
+        float lo = scale.range.lo, hi = scale.range.hi;
         if (ImGui::DragFloatRange2("range", &lo, &hi, speed, 0.0f, 0.0f, "%.4g", "%.4g")) {
-            if (lo < hi) {
-                shading.range = {lo, hi};
+            if (lo < hi && (!scale.log || lo > 0.0f)) {
+                scale.range = {lo, hi};
                 changed = true;
             }
         }
         ImGui::SameLine();
         if (ImGui::SmallButton("data")) {
-            shading.range = dataRange;
+            scale = dataScale;
             changed = true;
         }
-        tooltip("reset the range to the data's minimum and maximum");
+        tooltip("reset the scale to the data's (as the command line's range options give it)");
+        bool log = scale.log;
+        if (ImGui::Checkbox("log", &log) && (!log || scale.range.hi > 0.0f)) {
+            scale.log = log;
+            if (log && scale.range.lo <= 0.0f) scale.range.lo = scale.range.hi / 1000.0f;  // a positive low end
+            changed = true;
+        }
+        tooltip("logarithmic colour scale (a range ending at or below 0 starts at hi / 1000)");
+        ImGui::SameLine();
+        changed |= ImGui::Checkbox("invert", &scale.invert);
     }
     changed |= ImGui::Checkbox("shadows", &shading.shadows);
     changed |= ImGui::SliderFloat("render scale", &renderScale, 0.25f, 1.0f, "%.2f");

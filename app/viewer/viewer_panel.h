@@ -22,10 +22,10 @@ void tooltip(const char* text);
 /// @param reach the volume's reach: the curved rays' hull offset stays below it
 bool methodWidgets(render::MethodPtr& method, float reach);
 
-/// @brief Colour map, scalar range (when @a hasScalar; "data" resets it to @a dataRange), shadows
-///        and render scale; true when anything changed.
+/// @brief Colour map, scalar range, log and invert (when @a hasScalar; "data" resets the scale to
+///        @a dataScale), shadows and render scale; true when anything changed.
 /// @param colormapIndex index of shading.colormap in core::colormapNames(), kept in step with it
-bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ScalarRange& dataRange,
+bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
                  bool hasScalar, float& renderScale);
 
 /// @brief Energy (scalar only when @a hasScalar), optimisation rays and annealing steps.

@@ -4,14 +4,22 @@ uniform bool uHasScalar;
 uniform bool uCellScalar;       // one value per triangle (triangleScalar), not per vertex
 uniform int uDataTriangles;     // triangles at or above this index are hole caps
 uniform vec2 uRange;            // scalar range lo, hi
+uniform bool uLogScale;         // positions by log10 (uRange.x > 0)
+uniform bool uInvertScale;      // colour map reversed
 uniform vec3 uNanColour;
 uniform vec3 uNoDataColour;
 
-// core::ScalarRange::normalized
+// core::ColorScale::position
 float normalizedScalar(float value)
 {
-    if (uRange.x == uRange.y) return 0.5;
-    return clamp((value - uRange.x) / (uRange.y - uRange.x), 0.0, 1.0);
+    float t = 0.5;
+    if (uRange.x != uRange.y) {
+        if (uLogScale)
+            t = value > 0.0 ? clamp(log(value / uRange.x) / log(uRange.y / uRange.x), 0.0, 1.0) : 0.0;
+        else
+            t = clamp((value - uRange.x) / (uRange.y - uRange.x), 0.0, 1.0);
+    }
+    return uInvertScale ? 1.0 - t : t;
 }
 
 // core::Colormap::at, tabulated at 256 points and interpolated linearly.

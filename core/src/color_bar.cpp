@@ -1,154 +1,251 @@
 #include <ivis/core/color_bar.h>
 
 #include <ivis/core/errors.h>
-#include <ivis/core/text_raster.h>
-
-#include <glm/common.hpp>
+#include <ivis/core/font.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdio>
-#include <string>
-#include <vector>
+#include <sstream>
 
 namespace ivis::core {
 namespace {
 
-const glm::vec3 kInk = linearFromSrgb(glm::vec3(0.17f));       // text, frame and ticks
-const glm::vec3 kBacking = linearFromSrgb(glm::vec3(0.97f));   // the legend's background
-const glm::vec3 kEdge = linearFromSrgb(glm::vec3(0.72f));      // the backing's outline
+const glm::vec3 kInk = linearFromSrgb(glm::vec3(0.13f));  // text, frame and ticks
+constexpr int kSvgStops = 64;                             // gradient stops of the SVG ramp
 
-std::string formatValue(double value, int digits)
+std::string titleText(const ColorBarContent& content)
 {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*g", digits, value == 0.0 ? 0.0 : value);  // no "-0"
+    const std::string bracketed = content.units.empty() ? "" : "[" + content.units + "]";
+    if (content.title.empty() || bracketed.empty()) return content.title + bracketed;
+    return content.title + " " + bracketed;
+}
+
+// Title lines: one line, or title and units on two when one line is wider than @a width.
+std::vector<std::string> titleLines(const ColorBarContent& content, int width, int fontPixels)
+{
+    const std::string joined = titleText(content);
+    if (joined.empty()) return {};
+    if (content.title.empty() || content.units.empty() ||
+        Font::standard().measure(joined, fontPixels).width <= width)
+        return {joined};
+    return {content.title, "[" + content.units + "]"};
+}
+
+// The ticks whose labels do not collide: range ends first, then the others in order, each kept
+// when its label's extent along the bar (@a extent) stays @a gap from every kept one.
+template <typename ExtentFn>
+std::vector<ColorBarTick> legibleTicks(const std::vector<ColorBarTick>& ticks, ExtentFn extent, int gap)
+{
+    std::vector<std::pair<int, int>> taken;
+    std::vector<char> keep(ticks.size(), 0);
+    for (const bool ends : {true, false})
+        for (std::size_t i = 0; i < ticks.size(); ++i) {
+            if (ticks[i].rangeEnd != ends) continue;
+            const std::pair<int, int> span = extent(ticks[i]);
+            const bool free = std::none_of(taken.begin(), taken.end(), [&](const std::pair<int, int>& t) {
+                return span.first < t.second + gap && t.first < span.second + gap;
+            });
+            if (!free && !ends) continue;
+            keep[i] = 1;
+            taken.push_back(span);
+        }
+    std::vector<ColorBarTick> kept;
+    for (std::size_t i = 0; i < ticks.size(); ++i)
+        if (keep[i]) kept.push_back(ticks[i]);
+    return kept;
+}
+
+std::string hexColour(const glm::vec3& linear)
+{
+    char text[8];
+    auto byte = [](float c) { return int(std::lround(std::clamp(srgbFromLinear(c), 0.0f, 1.0f) * 255.0f)); };
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(linear.r), byte(linear.g), byte(linear.b));
     return text;
 }
 
-PixelRect clipped(const PixelRect& r, const Image& image)
+std::string xmlEscaped(const std::string& text)
 {
-    return {std::max(r.x0, 0), std::max(r.y0, 0), std::min(r.x1, image.width()), std::min(r.y1, image.height())};
-}
-
-void fill(Image& image, const PixelRect& rect, const glm::vec3& color)
-{
-    const PixelRect r = clipped(rect, image);
-    for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) image.at(x, y) = glm::vec4(color, 1.0f);
-}
-
-// Puts the image over an opaque backing colour, then veils it with that colour at @a opacity.
-void drawBacking(Image& image, const PixelRect& rect, float opacity)
-{
-    const PixelRect r = clipped(rect, image);
-    for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-            glm::vec4& pixel = image.at(x, y);
-            const glm::vec3 over = glm::vec3(pixel) + kBacking * (1.0f - glm::clamp(pixel.a, 0.0f, 1.0f));
-            pixel = glm::vec4(glm::mix(over, kBacking, opacity), 1.0f);
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
         }
-}
-
-void validate(const ColorBarOptions& options)
-{
-    if (!(options.heightFraction >= 0.05f && options.heightFraction <= 0.8f))
-        throw ValueError("colour bar height fraction " + std::to_string(options.heightFraction) +
-                         " is outside [0.05, 0.8]");
-    if (options.textScale < 0) throw ValueError("colour bar text scale must be >= 0 (0 = automatic)");
-    if (!(options.backingOpacity >= 0.0f && options.backingOpacity <= 1.0f))
-        throw ValueError("colour bar backing opacity " + std::to_string(options.backingOpacity) +
-                         " is outside [0, 1]");
-}
-
-// Title lines: "title [units]", split in two when both parts exist and together they are more
-// than 1.5 times @a width (the width of the bar and its labels).
-std::vector<std::string> titleLines(const std::string& title, const std::string& units, int width, int scale)
-{
-    const std::string bracketed = units.empty() ? "" : "[" + units + "]";
-    if (!title.empty() && !bracketed.empty()) {
-        const std::string joined = title + " " + bracketed;
-        if (2 * textWidth(joined, scale) <= 3 * width) return {joined};
-        return {title, bracketed};
     }
-    if (title.empty() && bracketed.empty()) return {};
-    return {title + bracketed};
+    return out;
 }
 
 }  // namespace
 
-std::vector<std::string> colorBarLabels(const ScalarRange& range)
+LegendSide legendSideFromName(const std::string& name)
 {
-    if (range.lo == range.hi) return {formatValue(range.lo, 6)};
-    const double span = double(range.hi) - double(range.lo);
-    double middle = 0.5 * (double(range.lo) + double(range.hi));
-    if (std::abs(middle) < 1e-6 * std::abs(span)) middle = 0.0;
-    std::vector<std::string> labels;
-    for (int digits = 3; digits <= 9; ++digits) {
-        labels = {formatValue(range.lo, digits), formatValue(middle, digits), formatValue(range.hi, digits)};
-        if (labels[0] != labels[1] && labels[1] != labels[2]) break;
-    }
-    return labels;
+    if (name == "right") return LegendSide::Right;
+    if (name == "left") return LegendSide::Left;
+    if (name == "bottom") return LegendSide::Bottom;
+    throw InputError("unknown colour-bar side '" + name + "' (known: right, left, bottom)");
 }
 
-ColorBarLayout drawColorBar(Image& image, const Colormap& map, const ScalarRange& range, const std::string& title,
-                            const std::string& units, const ColorBarOptions& options)
+ColorBarDrawing layOutColorBar(const ColorBarContent& content, int pictureWidth, int pictureHeight, LegendSide side)
 {
-    validate(options);
-    const int side = std::min(image.width(), image.height());
-    const int scale = options.textScale > 0 ? options.textScale : std::max(1, side / 500);
-    const int pad = 4 * scale + 2;
-    const int margin = std::max(2, side / 40);
-    const int stroke = std::max(1, scale / 2);
-    const int capHalf = (kCapHeight * scale + 1) / 2;
-    const int tickLength = 2 * scale + 1;
-    const int labelGap = 2 * scale;
+    if (pictureWidth < 1 || pictureHeight < 1) throw ValueError("colour bar for an empty picture");
+    const Font& font = Font::standard();
+    ColorBarDrawing d;
+    d.vertical = side != LegendSide::Bottom;
+    const int along = d.vertical ? pictureHeight : pictureWidth;  // the picture's side the bar runs along
+    d.fontPixels = std::max(12, int(std::lround(along / 45.0)));
+    const int em = d.fontPixels;
+    const TextExtent line = font.measure("0", em);
+    const int lineHeight = line.ascent + line.descent;
+    const int pad = em;
+    const int thickness = std::max(10, em);
+    const int stroke = std::max(1, em / 12);
+    const int tickLength = std::max(3, em / 3);
+    const int gap = std::max(2, em / 4);
+    const int length = std::max(2 * lineHeight, int(std::lround(0.6 * along)));
+    const std::vector<ColorBarTick> all = colorBarTicks(content.scale);
 
-    // Horizontal: [frame + gradient][tick][gap][labels]; the title lines above, left-aligned.
-    const int frameHeight = std::max(8, static_cast<int>(std::lround(options.heightFraction * float(image.height()))));
-    const int frameWidth = std::max(3 * kCapHeight * scale / 2, frameHeight / 12);
-    const std::vector<std::string> labels = colorBarLabels(range);
-    int labelWidth = 0;
-    for (const std::string& label : labels) labelWidth = std::max(labelWidth, textWidth(label, scale));
-    const int barBlockWidth = frameWidth + tickLength + labelGap + labelWidth;
-    const std::vector<std::string> lines = titleLines(title, units, barBlockWidth, scale);
-    int contentWidth = barBlockWidth;
-    for (const std::string& line : lines) contentWidth = std::max(contentWidth, textWidth(line, scale));
-    const int lineHeight = textHeight(scale) + scale;
-    const int titleHeight = lines.empty() ? 0 : static_cast<int>(lines.size()) * lineHeight + scale;
-
-    const int backingHeight = 2 * pad + titleHeight + 2 * capHalf + frameHeight;
-    const int backingTop = std::max(0, image.height() - margin - backingHeight);  // lower right corner
-    const int backingRight = image.width() - margin;
-    const PixelRect backing{backingRight - (contentWidth + 2 * pad), backingTop, backingRight,
-                            backingTop + backingHeight};
-    drawBacking(image, backing, options.backingOpacity);
-    fill(image, {backing.x0, backing.y0, backing.x1, backing.y0 + stroke}, kEdge);
-    fill(image, {backing.x0, backing.y1 - stroke, backing.x1, backing.y1}, kEdge);
-    fill(image, {backing.x0, backing.y0, backing.x0 + stroke, backing.y1}, kEdge);
-    fill(image, {backing.x1 - stroke, backing.y0, backing.x1, backing.y1}, kEdge);
-
-    const int left = backing.x0 + pad;
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        drawText(image, left, backing.y0 + pad + static_cast<int>(i) * lineHeight, lines[i], kInk, scale);
-
-    const int frameTop = backing.y0 + pad + titleHeight + capHalf;
-    const PixelRect frame{left, frameTop, left + frameWidth, frameTop + frameHeight};
-    const PixelRect gradient{frame.x0 + stroke, frame.y0 + stroke, frame.x1 - stroke, frame.y1 - stroke};
-    fill(image, frame, kInk);
-    const int gradientHeight = gradient.y1 - gradient.y0;
-    for (int y = gradient.y0; y < gradient.y1; ++y) {
-        const float t = 1.0f - (float(y - gradient.y0) + 0.5f) / float(gradientHeight);
-        fill(image, {gradient.x0, y, gradient.x1, y + 1}, map.at(t));
+    // Pixel offset along the bar of colour-map position t (vertical: from the top).
+    auto offset = [&](float t) {
+        return int(std::lround((d.vertical ? 1.0f - t : t) * float(length - 1)));
+    };
+    if (d.vertical) {
+        d.ticks = legibleTicks(all, [&](const ColorBarTick& t) {
+            const int y = offset(t.position);
+            return std::pair{y - line.ascent / 2 - 1, y + line.ascent / 2 + line.descent};
+        }, gap);
+        int labelWidth = 0;
+        for (const ColorBarTick& t : d.ticks) labelWidth = std::max(labelWidth, font.measure(t.label, em).width);
+        const int blockWidth = thickness + tickLength + gap + labelWidth;
+        const std::vector<std::string> lines = titleLines(content, std::max(blockWidth, pictureWidth / 4), em);
+        int contentWidth = blockWidth;
+        for (const std::string& l : lines) contentWidth = std::max(contentWidth, font.measure(l, em).width);
+        const int titleHeight = int(lines.size()) * lineHeight + (lines.empty() ? 0 : gap);
+        d.width = 2 * pad + contentWidth;
+        d.height = std::max(pictureHeight, 2 * pad + titleHeight + length + lineHeight);
+        const int top = (d.height - (titleHeight + length)) / 2;  // title and bar centred as one group
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            d.labels.push_back({pad, top + int(i) * lineHeight + line.ascent, lines[i], false});
+        d.gradient = {pad, top + titleHeight, pad + thickness, top + titleHeight + length};
+        for (const ColorBarTick& t : d.ticks) {
+            const int y = d.gradient.y0 + offset(t.position);
+            d.ink.push_back({d.gradient.x1, y - stroke / 2, d.gradient.x1 + tickLength, y - stroke / 2 + stroke});
+            d.labels.push_back({d.gradient.x1 + tickLength + gap, y + line.ascent / 2, t.label, false});
+        }
+    } else {
+        d.ticks = legibleTicks(all, [&](const ColorBarTick& t) {
+            const int x = offset(t.position), w = font.measure(t.label, em).width;
+            return std::pair{x - w / 2, x + w - w / 2};
+        }, 2 * gap);
+        const std::vector<std::string> lines = titleLines(content, length, em);
+        const int titleHeight = int(lines.size()) * lineHeight + (lines.empty() ? 0 : gap);
+        d.width = pictureWidth;
+        d.height = 2 * pad + titleHeight + thickness + tickLength + gap + lineHeight;
+        const int left = (d.width - length) / 2;
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            d.labels.push_back({d.width / 2, pad + int(i) * lineHeight + line.ascent, lines[i], true});
+        d.gradient = {left, pad + titleHeight, left + length, pad + titleHeight + thickness};
+        for (const ColorBarTick& t : d.ticks) {
+            const int x = d.gradient.x0 + offset(t.position);
+            d.ink.push_back({x - stroke / 2, d.gradient.y1, x - stroke / 2 + stroke, d.gradient.y1 + tickLength});
+            d.labels.push_back({x, d.gradient.y1 + tickLength + gap + line.ascent, t.label, true});
+        }
     }
+    const PixelRect& g = d.gradient;  // the frame, drawn around the ramp
+    d.ink.push_back({g.x0 - stroke, g.y0 - stroke, g.x1 + stroke, g.y0});
+    d.ink.push_back({g.x0 - stroke, g.y1, g.x1 + stroke, g.y1 + stroke});
+    d.ink.push_back({g.x0 - stroke, g.y0, g.x0, g.y1});
+    d.ink.push_back({g.x1, g.y0, g.x1 + stroke, g.y1});
+    return d;
+}
 
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-        const float t = labels.size() == 1 ? 0.5f : float(i) / float(labels.size() - 1);
-        const int y = gradient.y0 + static_cast<int>(std::lround((1.0f - t) * float(gradientHeight - 1)));
-        fill(image, {frame.x1, y - stroke / 2, frame.x1 + tickLength, y - stroke / 2 + stroke}, kInk);
-        drawText(image, frame.x1 + tickLength + labelGap, y - kCapHeight * scale / 2, labels[i], kInk, scale);
+void paintColorBar(Image& image, int x, int y, const ColorBarDrawing& drawing, const ColorBarContent& content)
+{
+    const Colormap& map = colormap(content.colormap);
+    auto fill = [&](const PixelRect& r, auto colourAt) {
+        for (int py = std::max(0, y + r.y0); py < std::min(image.height(), y + r.y1); ++py)
+            for (int px = std::max(0, x + r.x0); px < std::min(image.width(), x + r.x1); ++px)
+                image.at(px, py) = glm::vec4(colourAt(px - x, py - y), 1.0f);
+    };
+    const PixelRect& g = drawing.gradient;
+    fill(g, [&](int px, int py) {
+        const float t = drawing.vertical ? 1.0f - (float(py - g.y0) + 0.5f) / float(g.y1 - g.y0)
+                                         : (float(px - g.x0) + 0.5f) / float(g.x1 - g.x0);
+        return map.at(t);
+    });
+    for (const PixelRect& r : drawing.ink) fill(r, [](int, int) { return kInk; });
+    const Font& font = Font::standard();
+    for (const ColorBarDrawing::Text& t : drawing.labels) {
+        const int start = t.centred ? t.x - font.measure(t.text, drawing.fontPixels).width / 2 : t.x;
+        font.draw(image, x + start, y + t.baseline, t.text, kInk, drawing.fontPixels);
     }
-    return {clipped(backing, image), clipped(gradient, image)};
+}
+
+int colorBarMargin(const ColorBarContent& content, int pictureWidth, int pictureHeight, LegendSide side)
+{
+    const ColorBarDrawing d = layOutColorBar(content, pictureWidth, pictureHeight, side);
+    return side == LegendSide::Bottom ? d.height : d.width;
+}
+
+Image withColorBar(const Image& picture, const ColorBarContent& content, LegendSide side, const glm::vec4& background,
+                   int minimumMargin)
+{
+    const ColorBarDrawing d = layOutColorBar(content, picture.width(), picture.height(), side);
+    const bool bottom = side == LegendSide::Bottom;
+    const int margin = std::max(minimumMargin, bottom ? d.height : d.width);
+    Image canvas(picture.width() + (bottom ? 0 : margin), bottom ? picture.height() + margin : std::max(picture.height(), d.height),
+                 background);
+    const int pictureX = side == LegendSide::Left ? margin : 0;
+    const int pictureY = bottom ? 0 : (canvas.height() - picture.height()) / 2;
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x = 0; x < picture.width(); ++x) canvas.at(pictureX + x, pictureY + y) = picture.at(x, y);
+    const int barX = side == LegendSide::Right ? picture.width() : side == LegendSide::Left ? margin - d.width : 0;
+    const int barY = bottom ? picture.height() : 0;
+    paintColorBar(canvas, barX, barY, d, content);
+    return canvas;
+}
+
+Image colorBarImage(const ColorBarContent& content, int pictureWidth, int pictureHeight, LegendSide side,
+                    const glm::vec4& background)
+{
+    const ColorBarDrawing d = layOutColorBar(content, pictureWidth, pictureHeight, side);
+    Image image(d.width, d.height, background);
+    paintColorBar(image, 0, 0, d, content);
+    return image;
+}
+
+std::string colorBarSvg(const ColorBarContent& content, int pictureWidth, int pictureHeight, LegendSide side)
+{
+    const ColorBarDrawing d = layOutColorBar(content, pictureWidth, pictureHeight, side);
+    const Colormap& map = colormap(content.colormap);
+    const PixelRect& g = d.gradient;
+    std::ostringstream svg;
+    svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << d.width << "\" height=\"" << d.height
+        << "\" viewBox=\"0 0 " << d.width << ' ' << d.height << "\">\n"
+        << "<defs><linearGradient id=\"ramp\" x1=\"0\" y1=\"" << (d.vertical ? 1 : 0) << "\" x2=\""
+        << (d.vertical ? 0 : 1) << "\" y2=\"0\">\n";
+    for (int i = 0; i <= kSvgStops; ++i) {
+        const float t = float(i) / kSvgStops;
+        svg << "<stop offset=\"" << t << "\" stop-color=\"" << hexColour(map.at(t)) << "\"/>\n";
+    }
+    svg << "</linearGradient></defs>\n"
+        << "<rect x=\"" << g.x0 << "\" y=\"" << g.y0 << "\" width=\"" << g.x1 - g.x0 << "\" height=\"" << g.y1 - g.y0
+        << "\" fill=\"url(#ramp)\"/>\n";
+    const std::string ink = hexColour(kInk);
+    for (const PixelRect& r : d.ink)
+        svg << "<rect x=\"" << r.x0 << "\" y=\"" << r.y0 << "\" width=\"" << r.x1 - r.x0 << "\" height=\""
+            << r.y1 - r.y0 << "\" fill=\"" << ink << "\"/>\n";
+    svg << "<g font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" << d.fontPixels << "\" fill=\"" << ink
+        << "\">\n";
+    for (const ColorBarDrawing::Text& t : d.labels)
+        svg << "<text x=\"" << t.x << "\" y=\"" << t.baseline << '"' << (t.centred ? " text-anchor=\"middle\"" : "")
+            << '>' << xmlEscaped(t.text) << "</text>\n";
+    svg << "</g>\n</svg>\n";
+    return svg.str();
 }
 
 }  // namespace ivis::core

@@ -127,9 +127,14 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
 
     if (options.outline)
         drawOutline(result.image, result.layers.channel("region"), std::max(1, options.height / 400));
-    if (options.legend && scene.field().hasScalar())
-        core::drawColorBar(result.image, core::colormap(options.shading.colormap), options.shading.range,
-                           options.scalarName, options.units);
+    if (options.legend && scene.field().hasScalar()) {
+        const ShadingOptions& shading = options.shading;
+        const glm::vec4 margin = shading.transparentBackground ? glm::vec4(0.0f) : glm::vec4(shading.background, 1.0f);
+        result.figure = core::withColorBar(result.image, {shading.colormap, shading.scale, options.scalarName, options.units},
+                                           options.legendSide, margin, options.legendMinimumMargin);
+    } else {
+        result.figure = result.image;
+    }
     result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

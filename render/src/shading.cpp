@@ -47,7 +47,7 @@ glm::vec3 Shader::albedo(const SurfacePoint& point, bool& isNan) const
         isNan = true;
         return mOptions.nanColour;
     }
-    return mColormap.at(mOptions.range.normalized(value));
+    return mColormap.at(mOptions.scale.position(value));
 }
 
 glm::vec4 Shader::shade(const PixelMapping& mapping, DistanceField::Sampler& sampler, bool& isNan) const

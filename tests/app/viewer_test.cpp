@@ -125,7 +125,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     render::RenderOptions options;
     options.width = options.height = kSize;
     options.method = render::makeMethod(method);
-    options.shading.range = core::scalarRangeFromData(field.values);
+    options.shading.scale.range = core::scalarRangeFromData(field.values);
     options.legend = false;
     options.outline = false;
     // The viewer frames the view as the CLI does: the same field of view on the CPU and the GPU.

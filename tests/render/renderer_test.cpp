@@ -40,7 +40,7 @@ RenderOptions testOptions(const core::SurfaceField& field, const std::string& me
     options.width = options.height = size;
     options.samplesPerPixel = spp;
     options.method = makeMethod(method);
-    options.shading.range = core::scalarRangeFromData(field.values);
+    options.shading.scale.range = core::scalarRangeFromData(field.values);
     options.scalarName = field.name;
     return options;
 }
@@ -235,7 +235,7 @@ void checkRegression(const std::string& method)
     const char* regenerate = std::getenv("IVIS_REGENERATE_REGRESSION");
     if (regenerate && std::string(regenerate) == "1") {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-        core::writePng(result.image, path, false);
+        core::writePng(result.figure, path, false);
         std::printf("wrote %s\n", path.c_str());
         return;
     }
@@ -245,7 +245,7 @@ void checkRegression(const std::string& method)
                   "--gtest_filter='Regression*' (from the source tree root)";
     // Encode the new picture exactly as the stored one was (8-bit sRGB PNG), then compare bytes.
     test::TempDir dir;
-    core::writePng(result.image, dir.file("new.png"), false);
+    core::writePng(result.figure, dir.file("new.png"), false);
     const core::Image now = core::readPng(dir.file("new.png"));
     const core::Image reference = core::readPng(path);
     ASSERT_EQ(reference.width(), now.width()) << path;

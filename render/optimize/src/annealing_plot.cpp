@@ -2,7 +2,7 @@
 
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
-#include <ivis/core/text_raster.h>
+#include <ivis/core/font.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,9 +58,10 @@ core::Image plotVisitedViews(const AnnealingResult& result, int size)
     double bx, by;
     place(result.bestView(), bx, by);
     drawDisc(image, bx, by, size / 35.0, glm::vec3(0.9f, 0.05f, 0.05f), size / 150.0 + 1.0);
-    const int scale = std::max(1, size / 256);
-    core::drawText(image, int(centres[0] - radius), 4 * scale, "front (+z)", glm::vec3(0.15f), scale);
-    core::drawText(image, int(centres[1] - radius), 4 * scale, "back (-z)", glm::vec3(0.15f), scale);
+    const int fontPixels = std::max(12, size / 25);
+    const core::Font& font = core::Font::standard();
+    font.draw(image, int(centres[0] - radius), fontPixels * 3 / 2, "front (+z)", glm::vec3(0.15f), fontPixels);
+    font.draw(image, int(centres[1] - radius), fontPixels * 3 / 2, "back (−z)", glm::vec3(0.15f), fontPixels);
     return image;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/core/color_bar.h>
 #include <ivis/core/image.h>
 #include <ivis/core/interrupter.h>
 #include <ivis/render/method_registry.h>
@@ -24,7 +25,9 @@ struct RenderOptions {
     MethodPtr method = defaultMethod();  ///< the method and its parameters
     ShadingOptions shading;
     bool outline = true;      ///< dark outline around the directly visible object
-    bool legend = true;       ///< colour bar with the scalar's name and range
+    bool legend = true;       ///< colour bar with the scalar's name and range, in a margin
+    core::LegendSide legendSide = core::LegendSide::Right;  ///< the margin's side
+    int legendMinimumMargin = 0;  ///< the margin's least extent across the bar (equal frames of a series)
     std::string scalarName;   ///< legend title
     std::string units;        ///< legend units
 };
@@ -45,8 +48,9 @@ struct RenderStats {
 
 /// @brief A rendered picture, its layers and its statistics.
 struct RenderResult {
-    core::Image image;
-    core::ImageLayers layers{0, 0};
+    core::Image image;               ///< the picture, width x height of the options
+    core::Image figure;              ///< the picture with the colour bar in its margin (or the picture alone)
+    core::ImageLayers layers{0, 0};  ///< per pixel of the picture
     RenderStats stats;
 };
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/core/color_scale.h>
 #include <ivis/core/colormap.h>
 #include <ivis/render/render_scene.h>
 #include <ivis/render/screen_map.h>
@@ -19,7 +20,7 @@ namespace ivis::render {
 /// @brief Look of the rendered pixels (colours are linear RGB).
 struct ShadingOptions {
     std::string colormap = "viridis";
-    core::ScalarRange range{0.0f, 1.0f};  ///< scalar values mapped to the ends of the colour map
+    core::ColorScale scale;               ///< scalar values to colour-map positions
     float ambient = 0.3f;                 ///< light reaching every direct pixel
     float indirectBrightness = 0.75f;     ///< indirect pixels: colour x this, so they read as behind
     bool shadeIndirect = true;            ///< light indirect pixels from their arriving ray (else flat colour)
