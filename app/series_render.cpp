@@ -1,4 +1,5 @@
 #include "series_render.h"
+#include "series_survey.h"
 
 #include "frame_video.h"
 #include "series_scene.h"
@@ -16,16 +17,6 @@
 namespace ivis::app {
 namespace {
 
-/// The colour bar's title of @a step: the scalar's name, and which step it is unless the name
-/// says it (a pattern's array): "pressure, t = 600" (a .pvd), "pressure, b.vtp" (a list of files).
-std::string legendTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
-{
-    if (!step.array.empty() || name.empty()) return name;
-    if (!series.timed()) return name + ", " + step.label;
-    char time[32];
-    std::snprintf(time, sizeof time, "%g", step.time);
-    return name + ", t = " + time;
-}
 
 /// The widest colour-bar margin over the steps of @a series, so that every frame has the same size:
 /// each step's title (of the scalar @a name) with the look of @a options and the series' one scale,
@@ -38,7 +29,7 @@ int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOp
     for (std::size_t k = 0; k < series.steps().size(); ++k) {
         const core::SeriesStep& step = series.steps()[k];
         core::ColorBarContent content{options.shading.colormap, options.shading.scale,
-                                      legendTitle(series, step, step.array.empty() ? name : step.array), options.units};
+                                      seriesStepTitle(series, step, step.array.empty() ? name : step.array), options.units};
         if (k < stepRanges.size()) content.scale.range = stepRanges[k];
         margin = std::max(margin, core::colorBarMargin(content, options.width, options.height, options.legendSide));
     }
@@ -70,7 +61,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         render::RenderOptions options = view.renderOptions(current.field());
         options.method = request.method;
         if (request.scale) options.shading.scale = *request.scale;
-        options.scalarName = legendTitle(series, step, current.field().name);
+        options.scalarName = seriesStepTitle(series, step, current.field().name);
         if (k == 0)
             legendMargin = seriesLegendMargin(series, options, current.field().name,
                                               request.scale ? std::vector<core::ScalarRange>{} : request.stepRanges);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace ivis::app {
@@ -23,6 +24,15 @@ private:
 };
 
 }  // namespace
+
+std::string seriesStepTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
+{
+    if (!step.array.empty() || name.empty()) return name;
+    if (!series.timed()) return name + ", " + step.label;
+    char time[32];
+    std::snprintf(time, sizeof time, "%g", step.time);
+    return name + ", t = " + time;
+}
 
 SeriesSurvey surveySeries(core::SurfaceSeries& series)
 {

@@ -7,6 +7,7 @@
 #include <ivis/core/surface_series.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace ivis::app {
@@ -23,6 +24,11 @@ struct SeriesSurvey {
                                             ///< extremes (the smallest positive value included)
     std::vector<std::uint64_t> meshHashes;  ///< core::meshHash of each step's normalised mesh
 };
+
+/// @brief The colour bar's title of @a step of @a series showing the scalar @a name: the name, and
+///        which step it is unless the name says it (a pattern's array): "pressure, t = 600" (a
+///        .pvd), "pressure, b.vtp" (a list of files).
+std::string seriesStepTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name);
 
 /// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
 ///        is written or said) and surveys them.

@@ -15,6 +15,7 @@ struct GpuFrame {
     int height = 0;
     render::MethodPtr method = render::defaultMethod();
     render::ShadingOptions shading;  ///< colormap name is applied by setColormap()
+    bool outline = true;             ///< dark outline around the direct part (render::RenderOptions::outline)
 };
 
 }  // namespace ivis::app

@@ -17,6 +17,7 @@ constexpr GLuint kColormapUnit = 3;  // layout(binding = 3) in colour_map.glsl
 
 GpuRenderer::GpuRenderer()
     : mMeshProgram("mesh", shaders::meshVertex().c_str(), shaders::meshFragment().c_str()),
+      mOutlineProgram("outline", shaders::fullScreenVertex().c_str(), shaders::outlineFragment().c_str()),
       mMeshVao(newName(glGenVertexArrays)),
       mEmptyVao(newName(glGenVertexArrays)),
       mPositions(newName(glGenBuffers)),
@@ -110,6 +111,21 @@ void GpuRenderer::setColormap(const std::string& name)
     checkGl("uploading the colour map");
 }
 
+void GpuRenderer::drawOutline(int height)
+{
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    mTarget.bindImages(0, 1);
+    mOutlineProgram.set("uOutlineRadius", std::max(1, height / 400));  // as the CPU renderer's
+    glDisable(GL_DEPTH_TEST);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(mOutlineProgram.id());
+    glBindVertexArray(mEmptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+}
+
 void GpuRenderer::render(const GpuFrame& frame)
 {
     IVIS_CHECK(mField != nullptr);
@@ -160,6 +176,7 @@ void GpuRenderer::render(const GpuFrame& frame)
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
     }
+    if (frame.outline) drawOutline(frame.height);
     glBindVertexArray(0);
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

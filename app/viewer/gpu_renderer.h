@@ -59,7 +59,11 @@ public:
     int height() const { return mTarget.height(); }
 
 private:
+    /// Darkens the direct pixels at the direct part's edge in the offscreen colour (frame @a height).
+    void drawOutline(int height);
+
     GlProgram mMeshProgram;
+    GlProgram mOutlineProgram;
     IndirectPrograms mIndirectPrograms;  ///< one per method, by name
     UniformSet mSceneUniforms;           ///< mesh and volume uniforms, written to each program drawn
     GlVertexArray mMeshVao;

@@ -39,6 +39,12 @@ void OffscreenTarget::resize(int width, int height)
     mHeight = height;
 }
 
+void OffscreenTarget::bindImages(int regionUnit, int colourUnit) const
+{
+    glBindImageTexture(GLuint(regionUnit), mRegion.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8UI);
+    glBindImageTexture(GLuint(colourUnit), mColour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
+}
+
 void OffscreenTarget::beginFrame(const glm::vec3& background) const
 {
     glBindFramebuffer(GL_FRAMEBUFFER, mFramebuffer.id());

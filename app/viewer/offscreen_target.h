@@ -26,6 +26,9 @@ public:
     /// @brief Binds the target for drawing both attachments with depth test, and clears it to
     ///        @a background (linear RGB, stored sRGB-encoded), region 0 and depth 1.
     void beginFrame(const glm::vec3& background) const;
+    /// @brief Binds the region (read-only, r8ui) and the colour (read-write, rgba8) to image units
+    ///        @a regionUnit and @a colourUnit, for a pass that edits the colour in place.
+    void bindImages(int regionUnit, int colourUnit) const;
     /// @brief Copies the colour into the bound draw framebuffer's rectangle (x, y, w, h).
     void blitTo(int x, int y, int width, int height) const;
     /// @brief The colour as a linear image (decoded from the 8-bit sRGB values), row 0 at the top.

@@ -44,6 +44,8 @@ std::string meshFragment()
 
 std::string fullScreenVertex() { return compose({"full_screen_vertex.glsl"}); }
 
+std::string outlineFragment() { return compose({"outline_fragment.glsl"}); }
+
 bool hasIndirectFragment(const std::string& method) { return findFile("method_" + method + ".glsl") != nullptr; }
 
 std::string indirectFragment(const std::string& method)

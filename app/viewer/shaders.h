@@ -15,6 +15,8 @@ std::string meshVertex();
 std::string meshFragment();
 /// @brief Vertex shader of the full-screen pass: one triangle at depth 1 (drawn where no mesh is).
 std::string fullScreenVertex();
+/// @brief Fragment shader of the outline pass (full screen, image load/store, no outputs).
+std::string outlineFragment();
 /// @brief True when a snippet method_<method>.glsl was embedded: the method has an indirect pass.
 bool hasIndirectFragment(const std::string& method);
 /// @brief Fragment shader of the full-screen pass for the method named @a method: the shared

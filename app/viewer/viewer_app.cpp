@@ -55,6 +55,9 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
     mMethod = render.method;
     mShading = render.shading;
+    mLegendSide = render.legendSide;
+    mShowLegend = render.legend;
+    mOutline = render.outline;
     const core::ColorScaleRequest scaleRequest = mOptions.view.colorScaleRequest();
     mDataScale = scaleRequest.resolve(mSeries ? mSurvey.sample : mField->values);
     if (mSeries) mShading.scale = mDataScale;  // one scale for every step
@@ -88,6 +91,7 @@ void ViewerApp::openWindow()
     glfwSwapInterval(mOptions.headless() ? 0 : 1);
     mGlRenderer = glRendererName();
     mRenderer = std::make_unique<GpuRenderer>();
+    mColorBar = std::make_unique<ColorBarOverlay>();
     mNormals = render::vertexNormals(mField->mesh);
     mRenderer->setMesh(*mField, mNormals);
     mRenderer->setColormap(mShading.colormap);
@@ -104,7 +108,8 @@ void ViewerApp::closeWindow()
 {
     if (mImGuiReady) stopImGui();
     mImGuiReady = false;
-    mRenderer.reset();  // GL objects go before their context
+    mColorBar.reset();  // GL objects go before their context
+    mRenderer.reset();
     if (mWindow) glfwDestroyWindow(mWindow);
     mWindow = nullptr;
     if (mGlfwReady) glfwTerminate();
@@ -187,6 +192,12 @@ void ViewerApp::waitForScene()
     }
 }
 
+core::ColorBarContent ViewerApp::legendContent() const
+{
+    const std::string title = mSeries ? seriesStepTitle(*mSeries, mSeries->steps()[mStep], mField->name) : mField->name;
+    return {mShading.colormap, mShading.scale, title, mOptions.view.units};
+}
+
 GpuFrame ViewerApp::frame(int width, int height) const
 {
     GpuFrame f;
@@ -195,6 +206,7 @@ GpuFrame ViewerApp::frame(int width, int height) const
     f.height = height;
     f.method = mMethod;
     f.shading = mShading;
+    f.outline = mOutline;
     return f;
 }
 
@@ -235,7 +247,11 @@ void ViewerApp::takeNumberedScreenshot()
 
 void ViewerApp::writeScreenshot(const std::string& path, const std::string& regionPath)
 {
-    core::writePng(mRenderer->readColour(), path, false);
+    const core::Image picture = mRenderer->readColour();
+    const bool legend = mShowLegend && mField->hasScalar();
+    core::writePng(legend ? core::withColorBar(picture, legendContent(), mLegendSide, glm::vec4(mShading.background, 1.0f))
+                          : picture,
+                   path, false);
     if (!regionPath.empty()) {
         core::writePng(regionImage(mRenderer->readRegion(), mRenderer->width(), mRenderer->height()), regionPath, false);
     }
@@ -418,6 +434,12 @@ void ViewerApp::drawPanel()
     ImGui::Separator();
     const std::string colormap = mShading.colormap;
     changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar(), mRenderScale);
+    changed |= ImGui::Checkbox("outline", &mOutline);
+    tooltip("dark outline around the directly visible object, so direct and indirect parts are told apart");
+    if (mField->hasScalar()) {
+        ImGui::SameLine();
+        ImGui::Checkbox("colour bar", &mShowLegend);
+    }
     if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
     ImGui::Separator();
 
@@ -499,13 +521,18 @@ int ViewerApp::runInteractive()
         ImGui::NewFrame();
         drawPanel();
         handleInput();
-        ImGui::Render();
-
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
+        PictureViewport picture{0, 0, fbWidth, fbHeight};
         if (fbWidth > 0 && fbHeight > 0) {
-            const int width = std::max(16, int(std::lround(fbWidth * mRenderScale)));
-            const int height = std::max(16, int(std::lround(fbHeight * mRenderScale)));
+            picture = mColorBar->place(legendContent(), mLegendSide, mShowLegend && mField->hasScalar(), fbWidth, fbHeight);
+            mColorBar->draw(*ImGui::GetBackgroundDrawList(), ImGui::GetIO().DisplayFramebufferScale);
+        }
+        ImGui::Render();
+
+        if (fbWidth > 0 && fbHeight > 0) {
+            const int width = std::max(16, int(std::lround(picture.width * mRenderScale)));
+            const int height = std::max(16, int(std::lround(picture.height * mRenderScale)));
             if (mDirty || width != lastWidth || height != lastHeight) {
                 renderFrame(width, height);
                 lastWidth = width;
@@ -516,7 +543,7 @@ int ViewerApp::runInteractive()
             glViewport(0, 0, fbWidth, fbHeight);
             glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT);
-            mRenderer->blitTo(0, 0, fbWidth, fbHeight);
+            mRenderer->blitTo(picture.x, picture.y, picture.width, picture.height);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         }
         if (!mOptions.uiScreenshot.empty() && !mLoader && !mJob.valid() && !mAnimation.started() &&

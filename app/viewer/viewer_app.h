@@ -4,6 +4,7 @@
 ///        screenshot and benchmark modes.
 #pragma once
 
+#include "color_bar_overlay.h"
 #include "gpu_renderer.h"
 #include "orbit_camera.h"
 #include "scene_loader.h"
@@ -55,6 +56,8 @@ private:
     /// Uploads the loaded scene once the loader is done; true when it did so this call.
     bool pollLoader();
     void waitForScene();
+    /// What the colour bar shows now: the look, the scalar's name (a series: with its step), --units.
+    core::ColorBarContent legendContent() const;
     GpuFrame frame(int width, int height) const;
     /// Fits the orbit's field of view to the picture of a width x height frame (the object alone
     /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
@@ -83,6 +86,10 @@ private:
     render::MethodPtr mMethod;
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
+    core::LegendSide mLegendSide = core::LegendSide::Right;
+    bool mShowLegend = true;   ///< the colour bar in its margin (--no-legend; the panel's checkbox)
+    bool mOutline = true;      ///< the direct part's outline (--no-outline; the panel's checkbox)
+    std::unique_ptr<ColorBarOverlay> mColorBar;  ///< created with the window
     core::ColorScale mDataScale;  ///< the colour scale the flags give over the data ("data" resets to it)
     OrbitCamera mOrbit;
     OptimiserSettings mOptimiser;

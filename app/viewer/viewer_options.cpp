@@ -18,7 +18,7 @@ void ViewerOptions::addTo(CLI::App& app)
     app.add_option("--opt-res", optResolution, "Optimisation resolution (rays per side) of the optimise buttons")
         ->capture_default_str();
     // Flags of `inversevis render` that have no meaning in a window.
-    for (const char* name : {"--res", "--spp", "--no-legend", "--no-outline", "--transparent"})
+    for (const char* name : {"--res", "--spp", "--transparent"})
         app.remove_option(app.get_option(name));
     app.add_option("--width", width, "Window width in pixels (headless: the image width)")->capture_default_str();
     app.add_option("--height", height, "Window height in pixels (headless: the image height)")->capture_default_str();

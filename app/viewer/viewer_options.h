@@ -1,8 +1,8 @@
 /// @file viewer_options.h
 /// @brief Command-line options of `inversevis-view`: the mesh and view options shared with the
 ///        CLI, plus the window size, the headless screenshot / benchmark modes and the cache folder.
-/// @note The viewer has no --res (the window or --width/--height is the image) and no legend,
-///       outline, supersampling or transparency flags; the rest of ViewOptions applies unchanged.
+/// @note The viewer has no --res (the window or --width/--height is the image) and no
+///       supersampling or transparency flags; the rest of ViewOptions applies unchanged.
 #pragma once
 
 #include "../mesh_options.h"

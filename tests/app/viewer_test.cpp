@@ -127,7 +127,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     options.method = render::makeMethod(method);
     options.shading.scale.range = core::scalarRangeFromData(field.values);
     options.legend = false;
-    options.outline = false;
+    options.outline = true;  // the viewer's outline pass draws the same
     // The viewer frames the view as the CLI does: the same field of view on the CPU and the GPU.
     const core::Camera camera = render::frameView(scene, core::Camera::fromAngles(90.0, 0.0), *options.method, 1.0);
     const render::RenderResult cpu = render::renderImage(scene, camera, options);
@@ -136,7 +136,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     const std::string shot = dir.file("gpu.png"), region = dir.file("gpu-region.png");
     const RunResult run = runViewer("'" + source + "' --theta 90 --phi 0 --method " + method + " --width 512 --height 512" +
                                         " --volume-res " + std::to_string(volumeResolution) +
-                                        " --frames 3 --screenshot '" + shot + "' --region-png '" + region +
+                                        " --frames 3 --no-legend --screenshot '" + shot + "' --region-png '" + region +
                                         "' --cache-dir '" + dir.path() + "' " + viewerArguments,
                                     true, dir);
     if (viewerOutput) *viewerOutput = run.output;
@@ -274,7 +274,8 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
     const CliResult cpu = runCli("render '" + pvd + "' --res 256x256 --volume-res 100 --no-legend --no-outline --no-video -o '" +
                                  dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
     ASSERT_EQ(cpu.status, 0) << cpu.err;
-    const RunResult run = runViewer("'" + pvd + "' --width 256 --height 256 --volume-res 100 --frames 2 --screenshot '" +
+    const RunResult run = runViewer("'" + pvd + "' --width 256 --height 256 --volume-res 100 --frames 2 --no-legend "
+                                    "--no-outline --screenshot '" +
                                         dir.file("gpu.png") + "' --region-png '" + dir.file("gpu-region.png") +
                                         "' --cache-dir '" + dir.path() + "'",
                                     true, dir);
@@ -327,7 +328,7 @@ TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
                   sharedMesh("vtk/artery_series/artery_t0200.vtp") + "\"/>\n<DataSet timestep=\"1\" file=\"tet.vtp\"/>\n" +
                   "<DataSet timestep=\"2\" file=\"" + sharedMesh("vtk/artery_series/artery_t0400.vtp") +
                   "\"/>\n</Collection></VTKFile>\n");
-    const RunResult run = runViewer("'" + dir.file("mixed.pvd") + "' --width 128 --height 128 --volume-res 64 --frames 1 " +
+    const RunResult run = runViewer("'" + dir.file("mixed.pvd") + "' --width 128 --height 128 --volume-res 64 --frames 1 --no-legend " +
                                         "--screenshot '" + dir.file("gpu.png") + "' --region-png '" +
                                         dir.file("region.png") + "' --cache-dir '" + dir.path() + "'",
                                     true, dir);

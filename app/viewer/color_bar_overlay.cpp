@@ -1,0 +1,62 @@
+#include "color_bar_overlay.h"
+
+#include <ivis/core/image.h>
+
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <vector>
+
+namespace ivis::app {
+
+ColorBarOverlay::ColorBarOverlay() : mTexture(newName(glGenTextures)) {}
+
+PictureViewport ColorBarOverlay::place(const core::ColorBarContent& content, core::LegendSide side, bool shown,
+                                       int fbWidth, int fbHeight)
+{
+    mShown = shown;
+    if (!shown) return {0, 0, fbWidth, fbHeight};
+    const bool bottom = side == core::LegendSide::Bottom;
+    const int margin = core::colorBarMargin(content, fbWidth, fbHeight, side);
+    const int pictureWidth = bottom ? fbWidth : std::max(16, fbWidth - margin);
+    const int pictureHeight = bottom ? std::max(16, fbHeight - margin) : fbHeight;
+
+    std::ostringstream key;
+    key << content.colormap << '|' << content.scale.range.lo << '|' << content.scale.range.hi << '|' << content.scale.log
+        << content.scale.invert << '|' << content.title << '|' << content.units << '|' << int(side) << '|' << pictureWidth
+        << 'x' << pictureHeight;
+    if (key.str() != mKey) {
+        const core::Image bar = core::colorBarImage(content, pictureWidth, pictureHeight, side, glm::vec4(1.0f));
+        std::vector<std::uint8_t> bytes(std::size_t(bar.width()) * bar.height() * 4);
+        for (int y = 0; y < bar.height(); ++y)
+            for (int x = 0; x < bar.width(); ++x)
+                for (int c = 0; c < 4; ++c) {
+                    const float linear = bar.at(x, y)[c];
+                    const float encoded = c == 3 ? linear : core::srgbFromLinear(linear);
+                    bytes[(std::size_t(y) * bar.width() + x) * 4 + c] = std::uint8_t(std::lround(encoded * 255.0f));
+                }
+        glBindTexture(GL_TEXTURE_2D, mTexture.id());
+        textureParameters(GL_TEXTURE_2D, GL_NEAREST);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bar.width(), bar.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
+        mKey = key.str();
+        mWidth = bar.width();
+        mHeight = bar.height();
+    }
+    mX = side == core::LegendSide::Right ? fbWidth - mWidth : 0;
+    mY = bottom ? fbHeight - mHeight : (fbHeight - mHeight) / 2;
+    if (side == core::LegendSide::Left) return {mWidth, 0, fbWidth - mWidth, fbHeight};
+    if (bottom) return {0, mHeight, fbWidth, fbHeight - mHeight};
+    return {0, 0, fbWidth - mWidth, fbHeight};
+}
+
+void ColorBarOverlay::draw(ImDrawList& drawList, const ImVec2& framebufferScale) const
+{
+    if (!mShown) return;
+    const ImVec2 topLeft(float(mX) / framebufferScale.x, float(mY) / framebufferScale.y);
+    const ImVec2 bottomRight(float(mX + mWidth) / framebufferScale.x, float(mY + mHeight) / framebufferScale.y);
+    drawList.AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(mTexture.id())), topLeft, bottomRight);
+}
+
+}  // namespace ivis::app
