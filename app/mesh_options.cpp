@@ -45,6 +45,13 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
         ->capture_default_str();
 }
 
+void MeshOptions::useViewScalar(const std::string& scalarName, int hotSpots)
+{
+    if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.hotSpots > 0) return;
+    load.read.scalarName = scalarName;
+    load.hotSpots = hotSpots;
+}
+
 vdb::VolumeOptions MeshOptions::volumeOptions() const
 {
     vdb::VolumeOptions options = volume;

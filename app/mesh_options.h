@@ -25,6 +25,9 @@ struct MeshOptions {
     /// @param sourcesNote what the meshes are, for the help
     void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr,
                const std::string& sourcesNote = "one or more");
+    /// @brief Shows the scalar a view file chose (--scalar NAME or --hotspots N) unless this
+    ///        command line chose one itself.
+    void useViewScalar(const std::string& scalarName, int hotSpots);
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
 };

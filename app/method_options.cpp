@@ -12,7 +12,7 @@ void MethodOptions::addTo(CLI::App& command)
 {
     std::string help = "Visualisation method:";
     for (const render::MethodInfo* info : render::methodRegistry()) help += "\n  " + info->name + ": " + info->help;
-    command.add_option("--method", method, help)->capture_default_str();
+    mMethodOption = command.add_option("--method", method, help)->capture_default_str();
     for (const render::MethodInfo* info : render::methodRegistry())
         for (const render::ParameterSpec& spec : info->parameters) {
             CLI::Option*& option = mOptions[spec.key];
@@ -27,6 +27,14 @@ void MethodOptions::addTo(CLI::App& command)
                                             " to " + CLI::detail::to_string(spec.hi) + "); for " + info->name);
             option->expected(int(spec.defaults.size()));
         }
+}
+
+bool MethodOptions::given() const
+{
+    if (mMethodOption && mMethodOption->count() > 0) return true;
+    for (const auto& entry : mOptions)
+        if (entry.second->count() > 0) return true;
+    return false;
 }
 
 render::MethodPtr MethodOptions::create() const

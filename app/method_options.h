@@ -27,9 +27,12 @@ struct MethodOptions {
     /// @throw InputError for an unknown method or an option its method does not take; ValueError
     ///        for a value out of bounds
     render::MethodPtr create() const;
+    /// @brief True when --method or a parameter was given on the command line.
+    bool given() const;
 
 private:
     std::map<std::string, CLI::Option*> mOptions;
+    CLI::Option* mMethodOption = nullptr;
 };
 
 /// @brief Checks that the distances of @a method that must stay below the volume's reach (the

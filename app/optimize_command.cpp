@@ -35,6 +35,7 @@ Command addOptimizeCommand(CLI::App& app)
         std::string plot;
         std::string exr;
         std::string cameraOut;
+        std::string viewOut;
         std::string cacheDir;
         std::vector<std::string> sources;
         int fps = 5;
@@ -61,6 +62,9 @@ Command addOptimizeCommand(CLI::App& app)
     command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
     command->add_option("--exr", options->exr, "Multi-layer OpenEXR file of the best view (as render --exr)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON of the best view (default: <output>.camera.json)");
+    command->add_option("--view-out", options->viewOut,
+                        "View file of the best view: camera, method and optimised parameters, scalar, colour "
+                        "(default: <output>.view.json; `render --view` reproduces the picture, the viewer loads it)");
     command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
     options->seriesFlags = {
         command->add_option("--fps", options->fps, "Series: frames per second of the video")
@@ -69,8 +73,10 @@ Command addOptimizeCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
-        for (const std::string& path : {options->output, options->json, options->plot, options->exr, options->cameraOut})
+        for (const std::string& path :
+             {options->output, options->json, options->plot, options->exr, options->cameraOut, options->viewOut})
             if (!path.empty()) checkOutputFolder(path);
+        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
         if (start.orthographic)
@@ -120,6 +126,7 @@ Command addOptimizeCommand(CLI::App& app)
             options->view.pictureCamera(scene, best.camera, *best.method, renderOptions.width, renderOptions.height);
         renderOptions.method = best.method;
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
+        const std::string viewPath = options->viewOut.empty() ? options->output + ".view.json" : options->viewOut;
         nlohmann::json seriesStats;
         double coherence = 0.0;
         if (isSeries) {
@@ -136,11 +143,15 @@ Command addOptimizeCommand(CLI::App& app)
             request.fps = options->fps;
             seriesStats = renderSeries(*series, options->view, request, &progress);
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
+            render::RenderOptions look = renderOptions;
+            look.shading.scale = seriesScale;
+            writeViewFile(viewOfPicture(core::readCameraJson(cameraPath), look, options->mesh.load), viewPath);
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
             core::writePng(picture.figure, options->output, renderOptions.shading.transparentBackground);
             if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
             core::writeCameraJson(camera, cameraPath);
+            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load), viewPath);
             coherence = optimize::mappingCoherence(picture.layers).value();
         }
         const optimize::EnergyOptions displayOptions =
@@ -174,6 +185,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"fov_y_deg", camera.fovYDeg},
             {"framed", options->view.framed()},
             {"camera", cameraPath},
+            {"view", viewPath},
             {"params", render::methodToJson(*best.method)},
             {"energy_value", best.value.energy},
             {"front_energy_value", best.value.front},

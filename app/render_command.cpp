@@ -33,6 +33,7 @@ Command addRenderCommand(CLI::App& app)
         std::string statsJson;
         std::string cameraOut;
         std::string legendOnly;
+        std::string viewOut;
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
@@ -56,6 +57,9 @@ Command addRenderCommand(CLI::App& app)
                         "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
     command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON (of a series: per frame too)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
+    command->add_option("--view-out", options->viewOut,
+                        "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
+                        "and the viewer read it)");
     command->add_option("--legend-only", options->legendOnly,
                         "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as beside a --res picture "
                         "(of a series: its one colour scale)");
@@ -73,8 +77,9 @@ Command addRenderCommand(CLI::App& app)
 
     return {command, [options] {
         for (const std::string& path :
-             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly})
+             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut})
             if (!path.empty()) checkOutputFolder(path);
+        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
         if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
@@ -107,6 +112,13 @@ Command addRenderCommand(CLI::App& app)
             request.video = !options->noVideo;
             request.fps = options->fps;
             const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
+            if (!options->viewOut.empty()) {
+                render::RenderOptions look = options->view.renderOptions();
+                look.shading.scale = request.scale.value_or(look.shading.scale);
+                writeViewFile(viewOfPicture(core::readCameraJson(stats.at("camera").get<std::string>()), look,
+                                            options->mesh.load),
+                              options->viewOut);
+            }
             if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
             return;
         }
@@ -132,6 +144,8 @@ Command addRenderCommand(CLI::App& app)
         if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr);
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
         core::writeCameraJson(camera, cameraPath);
+        if (!options->viewOut.empty())
+            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load), options->viewOut);
 
         const render::RenderStats& s = result.stats;
         if (s.nanPixels > 0)

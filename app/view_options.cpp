@@ -10,15 +10,24 @@ namespace ivis::app {
 
 void ViewOptions::addTo(CLI::App& command)
 {
+    mCommand = &command;
     command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")->capture_default_str();
     command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")->capture_default_str();
     command.add_option("--fov", fovYDeg,
                        "Vertical field of view (degrees); default: fitted to each picture, the object and the "
                        "method's whole indirect region with a margin");
     command.add_flag("--ortho", orthographic, "Orthographic projection");
-    command.add_option("--camera", cameraFile,
+    auto* cameraOption = command.add_option("--camera", cameraFile,
                        "Camera JSON (eye, target, up, fov_y_deg), instead of the angles; its field of view is kept")
         ->check(CLI::ExistingFile);
+    command.add_option("--view", viewFile,
+                       "View file (optimize's and render's --view-out, the viewer's 'save view'): its camera, method "
+                       "and parameters, scalar, colour map, scale, units and legend; flags given as well override it")
+        ->check(CLI::ExistingFile)
+        ->excludes(cameraOption)
+        ->excludes("--theta")
+        ->excludes("--phi")
+        ->excludes("--fov");
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
     method.addTo(command);
@@ -43,8 +52,22 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_flag("--transparent", transparent, "Transparent background (PNG alpha)");
 }
 
+bool ViewOptions::given(const char* name) const
+{
+    const CLI::Option* option = mCommand ? mCommand->get_option_no_throw(name) : nullptr;  // the viewer lacks some
+    return option && option->count() > 0;
+}
+
+const ViewFile* ViewOptions::view() const
+{
+    if (viewFile.empty()) return nullptr;
+    if (!mView) mView = std::make_shared<const ViewFile>(readViewFile(viewFile));
+    return mView.get();
+}
+
 core::Camera ViewOptions::camera() const
 {
+    if (const ViewFile* v = view()) return v->camera;
     if (!cameraFile.empty()) return core::readCameraJson(cameraFile);
     core::Camera camera =
         core::Camera::fromAngles(theta, phi, core::kCameraDistance, fovYDeg.value_or(core::kDefaultFovYDeg));
@@ -82,6 +105,14 @@ core::ColorScaleRequest ViewOptions::colorScaleRequest() const
     request.symmetric = symmetric;
     request.log = logScale;
     request.invert = invert;
+    const ViewFile* v = view();
+    const bool scaleGiven = given("--range") || given("--range-percentile") || given("--symmetric") || given("--log") ||
+                            given("--invert");
+    if (v && !scaleGiven) {  // the view's scale exactly
+        request.range = v->scale.range;
+        request.log = v->scale.log;
+        request.invert = v->scale.invert;
+    }
     request.validate();
     return request;
 }
@@ -108,6 +139,20 @@ render::RenderOptions ViewOptions::renderOptions() const
     options.outline = !noOutline;
     options.legend = !noLegend;
     options.units = units;
+    if (const ViewFile* v = view()) {  // what the command line does not say, the view file does
+        if (!method.given()) options.method = v->method;
+        if (!given("--res")) {
+            options.width = v->width;
+            options.height = v->height;
+        }
+        if (!given("--colormap")) options.shading.colormap = v->colormap;
+        if (!given("--units")) options.units = v->units;
+        if (!given("--legend")) options.legendSide = v->legendSide;
+        if (!given("--no-legend")) options.legend = v->legend;
+        if (!given("--no-outline")) options.outline = v->outline;
+        if (!given("--no-shadows")) options.shading.shadows = v->shadows;
+        if (!given("--unshaded-indirect")) options.shading.shadeIndirect = v->shadeIndirect;
+    }
     return options;
 }
 

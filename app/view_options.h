@@ -6,11 +6,13 @@
 #include <ivis/core/color_scale.h>
 #include <ivis/core/surface_field.h>
 #include "method_options.h"
+#include "view_file.h"
 
 #include <ivis/render/renderer.h>
 
 #include <CLI/CLI.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +26,7 @@ struct ViewOptions {
     std::optional<double> fovYDeg;  ///< --fov; none: each picture's field of view is framed
     bool orthographic = false;
     std::string cameraFile;
+    std::string viewFile;  ///< --view: camera, method, scalar and look from a view file (flags override)
     std::string resolution = "1000x1000";
     int samplesPerPixel = 1;
     MethodOptions method;
@@ -41,13 +44,17 @@ struct ViewOptions {
     bool unshadedIndirect = false;
     bool transparent = false;
 
-    /// @brief Registers every option on @a command.
+
+    /// @brief Registers every option on @a command (which must outlive this object's use).
     void addTo(CLI::App& command);
+    /// @brief The view file of --view (read once), or null.
+    /// @throw InputError naming the file when it is bad
+    const ViewFile* view() const;
     /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho (75 degrees
     ///        until framed without --fov).
     core::Camera camera() const;
     /// @brief True when each picture's field of view is fitted to it (neither --fov nor --camera).
-    bool framed() const { return !fovYDeg && cameraFile.empty(); }
+    bool framed() const { return !fovYDeg && cameraFile.empty() && viewFile.empty(); }
     /// @brief @a camera for a @a width x @a height picture of @a method: its field of view fitted
     ///        to the picture (render::frameView) when framed(), else unchanged. Warns when the
     ///        picture needs more than the widest framed field of view.
@@ -66,6 +73,13 @@ struct ViewOptions {
     ///        given, and its name titles the colour bar).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
+
+private:
+    /// True when option @a name was given on the command line.
+    bool given(const char* name) const;
+
+    CLI::App* mCommand = nullptr;
+    mutable std::shared_ptr<const ViewFile> mView;  ///< --view's file, once read
 };
 
 }  // namespace ivis::app

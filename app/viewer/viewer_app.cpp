@@ -245,6 +245,26 @@ void ViewerApp::takeNumberedScreenshot()
     }
 }
 
+void ViewerApp::saveView()
+{
+    const std::string path =
+        "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mSavedViews) + ".view.json";
+    render::RenderOptions look = mOptions.view.renderOptions();
+    look.width = mPictureWidth > 0 ? mPictureWidth : mOptions.width;
+    look.height = mPictureHeight > 0 ? mPictureHeight : mOptions.height;
+    look.method = mMethod;
+    look.shading = mShading;
+    look.legend = mShowLegend;
+    look.legendSide = mLegendSide;
+    look.outline = mOutline;
+    try {
+        writeViewFile(viewOfPicture(mOrbit.camera(), look, mOptions.mesh.load), path);
+        mStatus = "wrote " + path;
+    } catch (const std::exception& e) {
+        mStatus = e.what();
+    }
+}
+
 void ViewerApp::writeScreenshot(const std::string& path, const std::string& regionPath)
 {
     const core::Image picture = mRenderer->readColour();
@@ -465,6 +485,10 @@ void ViewerApp::drawPanel()
     }
     ImGui::SameLine();
     if (ImGui::Button("screenshot (P)")) takeNumberedScreenshot();
+    ImGui::SameLine();
+    if (ImGui::Button("save view")) saveView();
+    tooltip("write the view file of this picture (camera, method and parameters, scalar, colour): "
+            "`inversevis render --view FILE` and `inversevis-view --view FILE` show it again");
     if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
     ImGui::Separator();
     ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
@@ -531,6 +555,8 @@ int ViewerApp::runInteractive()
         ImGui::Render();
 
         if (fbWidth > 0 && fbHeight > 0) {
+            mPictureWidth = picture.width;
+            mPictureHeight = picture.height;
             const int width = std::max(16, int(std::lround(picture.width * mRenderScale)));
             const int height = std::max(16, int(std::lround(picture.height * mRenderScale)));
             if (mDirty || width != lastWidth || height != lastHeight) {

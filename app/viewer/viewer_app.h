@@ -66,6 +66,8 @@ private:
     void writeScreenshot(const std::string& path, const std::string& regionPath);
     /// Writes inversevis-view-<mesh>-<n>.png and reports it (or the error) in the panel.
     void takeNumberedScreenshot();
+    /// Writes the view file of the picture shown (inversevis-view-<stem>-<n>.view.json).
+    void saveView();
     /// Writes the window's back buffer (scene and panel) to @a path.
     void writeWindow(const std::string& path);
     int runHeadlessScreenshot();
@@ -114,6 +116,9 @@ private:
     float mRenderScale = 1.0f;
     double mLastFrameMs = 0.0;
     int mScreenshots = 0;
+    int mSavedViews = 0;
+    int mPictureWidth = 0;   ///< the picture's part of the window, last frame (framebuffer pixels)
+    int mPictureHeight = 0;
     int mColormapIndex = 0;
 };
 

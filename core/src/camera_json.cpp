@@ -1,4 +1,4 @@
-#include <ivis/core/camera.h>
+#include <ivis/core/camera_json.h>
 
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
@@ -20,38 +20,47 @@ glm::dvec3 readVector(const nlohmann::json& json, const char* key, const glm::dv
 
 }  // namespace
 
+nlohmann::json cameraToJson(const Camera& camera)
+{
+    const glm::dvec2 angles = camera.angles();
+    return {{"eye", {camera.eye.x, camera.eye.y, camera.eye.z}},
+            {"target", {camera.target.x, camera.target.y, camera.target.z}},
+            {"up", {camera.up.x, camera.up.y, camera.up.z}},
+            {"fov_y_deg", camera.fovYDeg},
+            {"orthographic", camera.orthographic},
+            {"ortho_half_height", camera.orthoHalfHeight},
+            {"theta_deg", angles.x},
+            {"phi_deg", angles.y}};
+}
+
+Camera cameraFromJson(const nlohmann::json& json)
+{
+    if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
+    Camera camera;
+    camera.eye = readVector(json, "eye", camera.eye);
+    camera.target = readVector(json, "target", camera.target);
+    camera.up = readVector(json, "up", camera.up);
+    camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
+    camera.orthographic = json.value("orthographic", camera.orthographic);
+    camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
+    camera.validate();
+    return camera;
+}
+
 Camera readCameraJson(const std::string& path)
 {
     std::ifstream in(path);
     if (!in) throw InputError(path + ": cannot open camera file");
-    Camera camera;
     try {
-        const nlohmann::json json = nlohmann::json::parse(in);
-        if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
-        camera.eye = readVector(json, "eye", camera.eye);
-        camera.target = readVector(json, "target", camera.target);
-        camera.up = readVector(json, "up", camera.up);
-        camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
-        camera.orthographic = json.value("orthographic", camera.orthographic);
-        camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
-        camera.validate();
+        return cameraFromJson(nlohmann::json::parse(in));
     } catch (const std::exception& e) {
         throw InputError(path + ": bad camera file (" + e.what() + ")");
     }
-    return camera;
 }
 
 void writeCameraJson(const Camera& camera, const std::string& path)
 {
-    const glm::dvec2 angles = camera.angles();
-    const nlohmann::json json = {{"eye", {camera.eye.x, camera.eye.y, camera.eye.z}},
-                                 {"target", {camera.target.x, camera.target.y, camera.target.z}},
-                                 {"up", {camera.up.x, camera.up.y, camera.up.z}},
-                                 {"fov_y_deg", camera.fovYDeg},
-                                 {"orthographic", camera.orthographic},
-                                 {"ortho_half_height", camera.orthoHalfHeight},
-                                 {"theta_deg", angles.x},
-                                 {"phi_deg", angles.y}};
+    const nlohmann::json json = cameraToJson(camera);
     writeAtomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
         out << json.dump(2) << "\n";

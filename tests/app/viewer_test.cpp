@@ -407,3 +407,42 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
 }
 
 }  // namespace ivis::test
+
+namespace ivis::test {
+namespace {
+
+// A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
+// same picture in the viewer as in `render --view`.
+TEST(Viewer, ViewFileShowsTheCpuPicture)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string cache = " --volume-res 100 --cache-dir '" + dir.path() + "'";
+    const CliResult made = runCli("render scene:vessel-tree --hotspots 2 --theta 60 --phi 40 --res 256x256 --colormap plasma "
+                                  "--log --invert" + cache + " -o '" + dir.file("first.png") + "' --view-out '" +
+                                  dir.file("v.json") + "'");
+    ASSERT_EQ(made.status, 0) << made.err;
+    const CliResult cpu = runCli("render scene:vessel-tree --view '" + dir.file("v.json") + "' --no-legend" + cache +
+                                 " -o '" + dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const RunResult run = runViewer("scene:vessel-tree --view '" + dir.file("v.json") + "' --width 256 --height 256 --frames 2 "
+                                    "--no-legend --screenshot '" + dir.file("gpu.png") + "' --region-png '" +
+                                        dir.file("gpu-region.png") + "'" + cache,
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const Agreement a = agreement(core::readPng(dir.file("cpu.png")), core::readExrChannel(dir.file("cpu.exr"), "region"),
+                                  core::readPng(dir.file("gpu.png")), core::readPng(dir.file("gpu-region.png")));
+    std::cout << "[ viewer   ] view file: regions agree on " << 100.0 * a.regionAgreement << "% of pixels; mean colour "
+              << "difference " << a.indirectMeanDiff << " (indirect), " << a.directMeanDiff << " (direct) 8-bit levels\n";
+    EXPECT_GT(a.regionAgreement, 0.995);
+    EXPECT_GT(a.cpuIndirect, 1000u);
+    EXPECT_LT(a.indirectMeanDiff, 2.0);
+    EXPECT_LT(a.directMeanDiff, 1.0);
+#endif
+}
+
+}  // namespace
+}  // namespace ivis::test

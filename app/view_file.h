@@ -1,0 +1,57 @@
+/// @file view_file.h
+/// @brief A view file: everything but the mesh that fixes a picture (camera, method and its
+///        parameters, scalar, colour map and scale, units, legend and look) in one JSON file, which
+///        `optimize` and `render` write (--view-out), and `render --view`, `optimize --view` and
+///        the viewer read; the viewer saves its own.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/core/color_bar.h>
+#include <ivis/core/color_scale.h>
+#include <ivis/core/surface_source.h>
+#include <ivis/render/renderer.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace ivis::app {
+
+/// @brief The contents of a view file.
+struct ViewFile {
+    core::Camera camera;  ///< with the field of view the picture had (a view file is never re-framed)
+    int width = 0;        ///< the picture's size in pixels
+    int height = 0;
+    render::MethodPtr method = render::defaultMethod();
+    std::string scalar;   ///< --scalar as given ("" = the mesh's default array)
+    int hotSpots = 0;     ///< --hotspots as given (0 = none)
+    std::string colormap = core::kDefaultColormap;
+    core::ColorScale scale;
+    std::string units;
+    bool legend = true;
+    core::LegendSide legendSide = core::LegendSide::Right;
+    bool outline = true;
+    bool shadows = true;
+    bool shadeIndirect = true;
+};
+
+/// @brief Version written as "inversevis_view"; readers reject newer ones.
+inline constexpr int kViewFileVersion = 1;
+
+/// @brief The view of a picture rendered from @a camera with @a options, its scalar chosen by @a load.
+ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& options, const core::SurfaceLoadOptions& load);
+
+/// @brief The view as JSON: {"inversevis_view": 1, "camera": {...}, "size": [w, h], "method": {...},
+///        "scalar", "hotspots",
+///        "colormap", "scale": {"range": [lo, hi], "log", "invert"}, "units", "legend": side or
+///        null, "outline", "shadows", "shade_indirect"}.
+nlohmann::json viewToJson(const ViewFile& view);
+
+/// @brief Reads a view file written by viewToJson (every key required but "units" and "scalar").
+/// @throw InputError naming @a path for unreadable JSON, a missing key, a bad value or a newer version
+ViewFile readViewFile(const std::string& path);
+
+/// @brief Writes @a view to @a path atomically.
+void writeViewFile(const ViewFile& view, const std::string& path);
+
+}  // namespace ivis::app
