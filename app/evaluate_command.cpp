@@ -74,7 +74,7 @@ Command addEvaluateCommand(CLI::App& app)
         int pictureResolution = 0;
         std::optional<double> fovYDeg;  ///< none: each view framed for its method
         OptimizationOptions optimization;
-        std::string json, markdown, pictures, cacheDir = ".";
+        std::string json, markdown, pictures, cacheDir;
         bool resume = false;
     };
     auto options = std::make_shared<Options>();
@@ -95,7 +95,7 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--pictures", options->pictures, "Folder for each method's picture at its best view");
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
         ->check(CLI::Range(16, 8192));
-    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches")->capture_default_str();
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
 
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
@@ -123,7 +123,7 @@ Command addEvaluateCommand(CLI::App& app)
             }
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(options->cacheDir, mesh, field.mesh, volumeOptions.resolution),
+                field.mesh, volumeOptions, defaultVolumePath(cacheFolder(options->cacheDir), mesh, field.mesh, volumeOptions.resolution),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);

@@ -21,7 +21,8 @@ int main(int argc, char** argv)
                                                        ivis::app::addSdfCommand(app),
                                                        ivis::app::addRenderCommand(app),
                                                        ivis::app::addOptimizeCommand(app),
-                                                       ivis::app::addEvaluateCommand(app)};
+                                                       ivis::app::addEvaluateCommand(app),
+                                                       ivis::app::addCacheCommand(app)};
     ivis::core::installInterruptHandler();
     try {
         app.parse(argc, argv);

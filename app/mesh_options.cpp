@@ -3,6 +3,7 @@
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 namespace ivis::app {
@@ -62,11 +63,19 @@ vdb::VolumeOptions MeshOptions::volumeOptions() const
     return options;
 }
 
-std::string volumeCacheFolder(const std::string& output, const std::string& cacheDir)
+std::string cacheFolder(const std::string& cacheDir)
 {
-    if (!cacheDir.empty()) return cacheDir;
-    const std::filesystem::path path(output);
-    return path.has_parent_path() ? path.parent_path().string() : ".";
+    namespace fs = std::filesystem;
+    fs::path folder = ".";
+    if (!cacheDir.empty()) folder = cacheDir;
+    else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) folder = fs::path(xdg) / "inversevis";
+    else if (const char* home = std::getenv("HOME"); home && *home) folder = fs::path(home) / ".cache" / "inversevis";
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error || !fs::is_directory(folder))
+        throw InputError("cache folder " + folder.string() + " cannot be created (" +
+                         (error ? error.message() : std::string("not a folder")) + ")");
+    return folder.string();
 }
 
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,

@@ -32,8 +32,15 @@ struct MeshOptions {
     vdb::VolumeOptions volumeOptions() const;
 };
 
-/// @brief Folder for volume caches: @a cacheDir when given, else the folder of @a output, else ".".
-std::string volumeCacheFolder(const std::string& output, const std::string& cacheDir);
+/// @brief Help of every --cache-dir option.
+inline constexpr const char* kCacheDirHelp =
+    "Folder for volume caches, shared by every command and the viewer (default: $XDG_CACHE_HOME/inversevis, "
+    "else ~/.cache/inversevis)";
+
+/// @brief The folder of volume caches, created when missing: @a cacheDir when given, else
+///        $XDG_CACHE_HOME/inversevis, else $HOME/.cache/inversevis, else ".".
+/// @throw InputError naming the folder when it cannot be created
+std::string cacheFolder(const std::string& cacheDir);
 
 /// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source at
 ///        @a resolution: "<stem>.<mesh hash>.res<N>.vdb", so that every geometry of a time series

@@ -65,7 +65,7 @@ Command addOptimizeCommand(CLI::App& app)
     command->add_option("--view-out", options->viewOut,
                         "View file of the best view: camera, method and optimised parameters, scalar, colour "
                         "(default: <output>.view.json; `render --view` reproduces the picture, the viewer loads it)");
-    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
         command->add_option("--fps", options->fps, "Series: frames per second of the video")
             ->check(CLI::Range(1, 240))
@@ -102,7 +102,7 @@ Command addOptimizeCommand(CLI::App& app)
         render::RenderOptions renderOptions = options->view.renderOptions(field);
         const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.scale.range;
         const std::string source = isSeries ? series->source() : options->mesh.source;
-        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
+        const std::string folder = cacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
             field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions.resolution),

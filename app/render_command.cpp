@@ -63,7 +63,7 @@ Command addRenderCommand(CLI::App& app)
     command->add_option("--legend-only", options->legendOnly,
                         "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as beside a --res picture "
                         "(of a series: its one colour scale)");
-    command->add_option("--cache-dir", options->cacheDir, "Folder for volume caches (default: beside the output)");
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,
                           "Series: each frame's colour range is its own step's data range (default: one range over "
@@ -85,7 +85,7 @@ Command addRenderCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
-        const std::string folder = volumeCacheFolder(options->output, options->cacheDir);
+        const std::string folder = cacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         if (core::isSeries(options->sources, options->mesh.load)) {
             core::SurfaceSeries series(options->sources, options->mesh.load);

@@ -19,12 +19,16 @@ Command addSdfCommand(CLI::App& app)
     struct Options {
         MeshOptions mesh;
         std::string output;
+        std::string cacheDir;
         bool json = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
     options->mesh.addTo(*command);
-    command->add_option("-o,--output", options->output, "Volume file (default: <mesh>.<mesh hash>.res<N>.vdb here)");
+    command->add_option("-o,--output", options->output,
+                        "Volume file (default: <mesh>.<mesh hash>.res<N>.vdb in the cache folder, where render, "
+                        "optimize, evaluate and the viewer find it)");
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {
@@ -33,7 +37,8 @@ Command addSdfCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
-                                     ? defaultVolumePath(".", options->mesh.source, field.mesh, volumeOptions.resolution)
+                                     ? defaultVolumePath(cacheFolder(options->cacheDir), options->mesh.source, field.mesh,
+                                                         volumeOptions.resolution)
                                      : options->output;
         vdb::CacheOutcome outcome{};
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);

@@ -1,22 +1,40 @@
 #!/usr/bin/env bash
-# Fuzzes the VTK readers and the .pvd reader with libFuzzer under AddressSanitizer and UBSan: builds the targets of
+# Fuzzes the file readers with libFuzzer under AddressSanitizer and UBSan: builds the targets of
 # tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
 # seeds and runs each target for SECONDS (default 300) on one core.
-#   scripts/fuzz.sh [SECONDS]        findings are written to build-fuzz/findings/<target>/
+#   scripts/fuzz.sh [READER] [SECONDS]   READER: obj off ply stl scalar_file volume_cache vtk_xml
+#                                        vtk_legacy pvd, or all (default); findings are written to
+#                                        build-fuzz/findings/<reader>/
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
 
-SECONDS_PER_TARGET=${1:-300}
+READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd)
+CHOSEN=${1:-all}
+if [[ "$CHOSEN" =~ ^[0-9]+$ ]]; then  # scripts/fuzz.sh SECONDS: every reader
+  set -- all "$CHOSEN"
+  CHOSEN=all
+fi
+SECONDS_PER_TARGET=${2:-300}
+if [ "$CHOSEN" = all ]; then
+  TARGETS=("${READERS[@]}")
+elif [[ " ${READERS[*]} " == *" $CHOSEN "* ]]; then
+  TARGETS=("$CHOSEN")
+else
+  echo "fuzz.sh: unknown reader '$CHOSEN' (known: ${READERS[*]}, all)" >&2
+  exit 2
+fi
+
 FUZZ_BUILD=${IVIS_FUZZ_BUILD:-$IVIS_ROOT/build-fuzz}
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize=fuzzer-no-link -fno-omit-frame-pointer"
 CC=clang CXX=clang++ cmake -S "$IVIS_ROOT" -B "$FUZZ_BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DIVIS_BUILD_APP=OFF -DIVIS_BUILD_TESTS=OFF -DIVIS_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS="$FLAGS" >/dev/null
-cmake --build "$FUZZ_BUILD" -j 1 --target vtk_xml_fuzzer vtk_legacy_fuzzer pvd_fuzzer vtk_fuzz_seeds
+cmake --build "$FUZZ_BUILD" -j 1 --target vtk_fuzz_seeds reader_fuzz_seeds "${TARGETS[@]/%/_fuzzer}"
 "$FUZZ_BUILD/tests/fuzz/vtk_fuzz_seeds" "$FUZZ_BUILD/corpus"
+"$FUZZ_BUILD/tests/fuzz/reader_fuzz_seeds" "$FUZZ_BUILD/corpus"
 
 status=0
-for target in vtk_xml vtk_legacy pvd; do
+for target in "${TARGETS[@]}"; do
   mkdir -p "$FUZZ_BUILD/findings/$target"
   echo "fuzz.sh: $target for $SECONDS_PER_TARGET s" >&2
   log="$FUZZ_BUILD/findings/$target.log"

@@ -53,7 +53,10 @@ CliResult runCli(const std::string& arguments)
 {
     TempDir dir;
     const std::string out = dir.file("out"), err = dir.file("err");
-    const std::string command = std::string("'") + IVIS_CLI_PATH + "' " + arguments + " >'" + out + "' 2>'" + err + "'";
+    // The program's default cache folder is the test run's own, never the user's.
+    static const TempDir cacheHome;
+    const std::string command = "XDG_CACHE_HOME='" + cacheHome.path() + "' '" + IVIS_CLI_PATH + "' " + arguments + " >'" +
+                                out + "' 2>'" + err + "'";
     const int raw = std::system(command.c_str());
     CliResult result;
     result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -35,7 +35,7 @@ void ViewerOptions::addTo(CLI::App& app)
         ->check(CLI::IsMember({"parameters", "view"}));
     app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
-    app.add_option("--cache-dir", cacheDir, "Folder for volume caches (default: ~/.cache/inversevis)");
+    app.add_option("--cache-dir", cacheDir, kCacheDirHelp);
     app.add_option("--texture-budget", textureBudgetMiB, "GPU memory for the volume textures, MiB")
         ->capture_default_str();
 }
@@ -56,19 +56,6 @@ void ViewerOptions::validate() const
     checkMethodFitsVolume(*view.renderOptions().method, mesh.volumeOptions());
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
         throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");
-}
-
-std::string ViewerOptions::resolvedCacheDir() const
-{
-    namespace fs = std::filesystem;
-    if (!cacheDir.empty()) return cacheDir;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return (fs::path(xdg) / "inversevis").string();
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return (fs::path(home) / ".cache" / "inversevis").string();
-    const std::string source = mesh.source;
-    if (source.rfind(core::kScenePrefix, 0) == 0) return ".";
-    const fs::path parent = fs::path(source).parent_path();
-    return parent.empty() ? "." : parent.string();
 }
 
 }  // namespace ivis::app

@@ -33,7 +33,7 @@ struct ViewerOptions {
     std::string optimise;       ///< "parameters" or "view": press that optimiser's button once loaded
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
-    std::string cacheDir;       ///< volume cache folder ("" = $XDG_CACHE_HOME or ~/.cache/inversevis)
+    std::string cacheDir;       ///< --cache-dir ("" = app::cacheFolder's default)
     int textureBudgetMiB = 512; ///< GPU memory allowed for the volume textures
 
     /// @brief Registers every option on @a app.
@@ -45,9 +45,6 @@ struct ViewerOptions {
     void validate() const;
     /// @brief True when the program renders without a user (screenshot or benchmark).
     bool headless() const { return !screenshot.empty() || benchmark; }
-    /// @brief The cache folder actually used: --cache-dir, else $XDG_CACHE_HOME/inversevis, else
-    ///        ~/.cache/inversevis, else the mesh's folder ("beside" it) when HOME is unset.
-    std::string resolvedCacheDir() const;
 };
 
 }  // namespace ivis::app

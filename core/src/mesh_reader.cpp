@@ -144,7 +144,11 @@ MeshInfo describeMesh(const std::string& path)
 
 std::vector<float> readScalarFile(const std::string& path, std::size_t expectedCount)
 {
-    const std::string data = detail::readFileBytes(path);
+    return detail::parseScalarFile(path, detail::readFileBytes(path), expectedCount);
+}
+
+std::vector<float> detail::parseScalarFile(const std::string& path, const std::string& data, std::size_t expectedCount)
+{
     std::vector<float> values;
     detail::TextCursor in(data);
     for (std::string_view token = in.token(); !token.empty(); token = in.token()) {

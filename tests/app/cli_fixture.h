@@ -57,10 +57,12 @@ protected:
     {
         return "sdf " + quoted(mesh) + " --volume-res 48 -o " + quoted(output("s.vdb")) + " " + extra;
     }
-    /// `render MESH --res 32x32 --volume-res 48 -o OUT/x.png EXTRA` (the volume cache goes to OUT too).
+    /// `render MESH --res 32x32 --volume-res 48 --cache-dir OUT -o OUT/x.png EXTRA` (the volume cache
+    /// goes to OUT too).
     std::string render(const std::string& mesh, const std::string& extra = "") const
     {
-        return "render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o " + quoted(output("x.png")) + " " + extra;
+        return "render " + quoted(mesh) + " --volume-res 48 --res 32x32 --cache-dir " + quoted(output("")) + " -o " +
+               quoted(output("x.png")) + " " + extra;
     }
 
     /// Runs @a arguments, expects the bad-input contract and an untouched output folder.

@@ -87,7 +87,8 @@ protected:
     std::string renderSeries(const std::string& sources, const std::string& extra = "",
                              const std::string& res = "48x48") const
     {
-        return "render " + sources + " --volume-res 48 --res " + res + " -o " + quoted(output("f.png")) + " --stats-json " +
+        return "render " + sources + " --volume-res 48 --res " + res + " --cache-dir " + quoted(output("")) + " -o " +
+               quoted(output("f.png")) + " --stats-json " +
                quoted(output("s.json")) + " " + extra;
     }
     nlohmann::json stats() const { return nlohmann::json::parse(test::readFile(output("s.json"))); }

@@ -44,7 +44,9 @@ RunResult runViewer(const std::string& arguments, bool display, const TempDir& d
 {
     const std::string log = dir.file("viewer.log");
     const std::string prefix = display ? "xvfb-run -a -s '-screen 0 1280x1024x24' " : "";
-    const std::string command = prefix + "'" + IVIS_VIEW_PATH + "' " + arguments + " >'" + log + "' 2>&1";
+    static const TempDir cacheHome;  // the default cache folder is the test run's own, never the user's
+    const std::string command =
+        prefix + "env XDG_CACHE_HOME='" + cacheHome.path() + "' '" + IVIS_VIEW_PATH + "' " + arguments + " >'" + log + "' 2>&1";
     const int raw = std::system(command.c_str());
     RunResult result;
     result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -271,7 +273,8 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
-    const CliResult cpu = runCli("render '" + pvd + "' --res 256x256 --volume-res 100 --no-legend --no-outline --no-video -o '" +
+    const CliResult cpu = runCli("render '" + pvd + "' --res 256x256 --volume-res 100 --no-legend --no-outline --no-video "
+                                 "--cache-dir '" + dir.path() + "' -o '" +
                                  dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
     ASSERT_EQ(cpu.status, 0) << cpu.err;
     const RunResult run = runViewer("'" + pvd + "' --width 256 --height 256 --volume-res 100 --frames 2 --no-legend "

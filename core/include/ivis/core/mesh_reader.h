@@ -84,4 +84,9 @@ MeshInfo describeMesh(const std::string& path);
 ///        or the count mismatch
 std::vector<float> readScalarFile(const std::string& path, std::size_t expectedCount);
 
+namespace detail {
+/// @brief readScalarFile on the bytes @a data of the file @a path (the fuzz target's entry point).
+std::vector<float> parseScalarFile(const std::string& path, const std::string& data, std::size_t expectedCount);
+}  // namespace detail
+
 }  // namespace ivis::core

@@ -1,0 +1,88 @@
+// `inversevis cache list|clear`: the volume caches in the cache folder shared by every command and
+// the viewer.
+#include "commands.h"
+#include "mesh_options.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/log.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CacheEntry {
+    fs::path path;
+    std::uintmax_t bytes = 0;
+};
+
+/// The volume caches of @a folder (*.vdb) and the temporaries an interrupted write left
+/// (*.vdb.tmp.*), by name.
+std::vector<CacheEntry> cacheEntries(const std::string& folder)
+{
+    std::vector<CacheEntry> entries;
+    std::error_code error;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+        const std::string name = entry.path().filename().string();
+        const bool volume = name.size() > 4 && name.compare(name.size() - 4, 4, ".vdb") == 0;
+        if (!entry.is_regular_file() || !(volume || name.find(".vdb.tmp.") != std::string::npos)) continue;
+        entries.push_back({entry.path(), entry.file_size()});
+    }
+    if (error) throw InputError(folder + ": cannot list the cache folder (" + error.message() + ")");
+    std::sort(entries.begin(), entries.end(), [](const CacheEntry& a, const CacheEntry& b) { return a.path < b.path; });
+    return entries;
+}
+
+std::string humanBytes(std::uintmax_t bytes)
+{
+    char text[32];
+    if (bytes < 1024 * 1024) std::snprintf(text, sizeof text, "%.1f KiB", double(bytes) / 1024.0);
+    else if (bytes < std::uintmax_t(1) << 30) std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1 << 20));
+    else std::snprintf(text, sizeof text, "%.2f GiB", double(bytes) / double(std::uintmax_t(1) << 30));
+    return text;
+}
+
+}  // namespace
+
+Command addCacheCommand(CLI::App& app)
+{
+    auto cacheDir = std::make_shared<std::string>();
+    CLI::App* command = app.add_subcommand("cache", "List or clear the volume caches shared by every command and the viewer");
+    command->add_option("--cache-dir", *cacheDir, kCacheDirHelp);
+    CLI::App* list = command->add_subcommand("list", "Each cached volume with its size, and the total");
+    CLI::App* clear = command->add_subcommand("clear", "Remove every cached volume (and leftover temporaries)");
+    command->require_subcommand(1);
+    list->fallthrough();  // --cache-dir may follow list / clear
+    clear->fallthrough();
+
+    return {command, [cacheDir, list, clear] {
+        const std::string folder = cacheFolder(*cacheDir);
+        const std::vector<CacheEntry> entries = cacheEntries(folder);
+        std::uintmax_t total = 0;
+        for (const CacheEntry& e : entries) total += e.bytes;
+        if (list->parsed()) {
+            for (const CacheEntry& e : entries)
+                std::printf("%10s  %s\n", humanBytes(e.bytes).c_str(), e.path.filename().string().c_str());
+            std::printf("%10s  in %zu file%s in %s\n", humanBytes(total).c_str(), entries.size(),
+                        entries.size() == 1 ? "" : "s", folder.c_str());
+        } else if (clear->parsed()) {
+            for (const CacheEntry& e : entries) {
+                std::error_code error;
+                if (!fs::remove(e.path, error) && error)
+                    throw InputError(e.path.string() + ": cannot remove (" + error.message() + ")");
+            }
+            core::logInfo("removed " + std::to_string(entries.size()) + " cached volume" +
+                          (entries.size() == 1 ? "" : "s") + " (" + humanBytes(total) + ") from " + folder);
+        }
+    }};
+}
+
+}  // namespace ivis::app

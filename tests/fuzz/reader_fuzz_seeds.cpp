@@ -1,0 +1,104 @@
+// Writes the seed corpora of the mesh, scalar-file and volume-cache fuzz targets:
+// `reader_fuzz_seeds FOLDER` fills FOLDER/obj, off, ply, stl (a tetrahedron in each format's ASCII
+// and, where it has one, binary layout; a PLY with vertex and face properties), FOLDER/scalar_file
+// (four values, nan included) and FOLDER/volume_cache (the volume of a small icosphere).
+#include <ivis/core/procedural_scenes.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+void write(const fs::path& path, const std::string& bytes)
+{
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+template <typename T>
+void append(std::string& bytes, T value)
+{
+    char raw[sizeof(T)];
+    std::memcpy(raw, &value, sizeof(T));
+    bytes.append(raw, sizeof(T));
+}
+
+constexpr float kTetra[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+constexpr int kFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+std::string binaryStl()
+{
+    std::string bytes(80, ' ');
+    append<std::uint32_t>(bytes, 4);
+    for (const auto& f : kFaces) {
+        for (int k = 0; k < 3; ++k) append<float>(bytes, 0.0f);  // normal
+        for (const int v : f)
+            for (const float c : kTetra[v]) append<float>(bytes, c);
+        append<std::uint16_t>(bytes, 0);
+    }
+    return bytes;
+}
+
+std::string plyHeader(const char* format)
+{
+    return std::string("ply\nformat ") + format +
+           " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nproperty float pressure\n"
+           "element face 4\nproperty list uchar int vertex_indices\nproperty float wss\nend_header\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::cerr << "usage: reader_fuzz_seeds FOLDER\n";
+        return 2;
+    }
+    const fs::path root(argv[1]);
+    std::string obj = "# tetrahedron\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvt 0 0\n";
+    std::string off = "OFF\n4 4 6\n";
+    std::string asciiStl = "solid t\n";
+    std::string asciiPly = plyHeader("ascii"), binaryPly = plyHeader("binary_little_endian");
+    for (int v = 0; v < 4; ++v) {
+        const std::string xyz = std::to_string(kTetra[v][0]) + " " + std::to_string(kTetra[v][1]) + " " +
+                                std::to_string(kTetra[v][2]);
+        off += xyz + "\n";
+        asciiPly += xyz + " " + std::to_string(v * 0.5) + "\n";
+        for (const float c : kTetra[v]) append<float>(binaryPly, c);
+        append<float>(binaryPly, float(v) * 0.5f);
+    }
+    for (const auto& f : kFaces) {
+        obj += "f " + std::to_string(f[0] + 1) + "//1 " + std::to_string(f[1] + 1) + " " + std::to_string(f[2] + 1) + "\n";
+        off += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+        asciiPly += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + " 1.5\n";
+        append<std::uint8_t>(binaryPly, 3);
+        for (const int v : f) append<std::int32_t>(binaryPly, v);
+        append<float>(binaryPly, 1.5f);
+        asciiStl += "facet normal 0 0 0\nouter loop\n";
+        for (const int v : f)
+            asciiStl += "vertex " + std::to_string(kTetra[v][0]) + " " + std::to_string(kTetra[v][1]) + " " +
+                        std::to_string(kTetra[v][2]) + "\n";
+        asciiStl += "endloop\nendfacet\n";
+    }
+    asciiStl += "endsolid t\n";
+    write(root / "obj" / "tetra.obj", obj);
+    write(root / "obj" / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf -1 -2 -3\n");
+    write(root / "off" / "tetra.off", off);
+    write(root / "ply" / "ascii.ply", asciiPly);
+    write(root / "ply" / "binary.ply", binaryPly);
+    write(root / "stl" / "ascii.stl", asciiStl);
+    write(root / "stl" / "binary.stl", binaryStl());
+    write(root / "scalar_file" / "values.txt", "0.5 1e3\n-2\tnan\n");
+    ivis::vdb::VolumeOptions options;
+    options.resolution = 16;
+    ivis::vdb::writeVolume(ivis::vdb::buildSurfaceVolume(ivis::core::makeSphere(1).mesh, options),
+                           (root / "volume_cache" / "sphere.vdb").string());
+    return 0;
+}
