@@ -121,6 +121,9 @@ Command addEvaluateCommand(CLI::App& app)
                 core::logInfo(core::sourceStem(mesh) + ": kept from " + options->json + " (--resume)");
                 continue;
             }
+            const std::string meshLabel = core::sourceStem(mesh) + " " + std::to_string(&mesh - options->meshes.data() + 1) +
+                                          "/" + std::to_string(options->meshes.size());
+            progress.setContext(meshLabel);
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
                 field.mesh, volumeOptions, defaultVolumePath(cacheFolder(options->cacheDir), mesh, field.mesh, volumeOptions.resolution),
@@ -135,6 +138,7 @@ Command addEvaluateCommand(CLI::App& app)
             const optimize::EnergyEvaluator display(scene, displayOptions);
             nlohmann::json meshResults = nlohmann::json::object();
             for (const std::string& methodName : options->methods) {
+                progress.setContext(meshLabel + ", " + methodName);
                 const render::MethodPtr start = render::makeMethod(methodName);
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
                 optimize::VisitedView best;

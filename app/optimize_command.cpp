@@ -104,6 +104,7 @@ Command addOptimizeCommand(CLI::App& app)
         const std::string source = isSeries ? series->source() : options->mesh.source;
         const std::string folder = cacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        progress.setContext(core::sourceStem(source));
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
             field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions.resolution),
             &progress);

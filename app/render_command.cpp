@@ -87,6 +87,7 @@ Command addRenderCommand(CLI::App& app)
         checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const std::string folder = cacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        progress.setContext(core::sourceStem(options->sources.front()));
         if (core::isSeries(options->sources, options->mesh.load)) {
             core::SurfaceSeries series(options->sources, options->mesh.load);
             SeriesRenderRequest request;

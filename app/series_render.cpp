@@ -47,7 +47,7 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
 }
 
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
-                            core::Interrupter* progress)
+                            core::ProgressBar* progress)
 {
     const std::size_t count = series.steps().size();
     SeriesScene current(request.volume, request.cacheFolder, series.source());
@@ -57,6 +57,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     int width = 0, height = 0, legendMargin = 0;
     for (std::size_t k = 0; k < count; ++k) {
         const core::SeriesStep& step = series.steps()[k];
+        if (progress) progress->setContext("frame " + std::to_string(k + 1) + "/" + std::to_string(count));
         const std::string volume = current.show(series.load(k), progress);
         render::RenderOptions options = view.renderOptions(current.field());
         options.method = request.method;

@@ -8,7 +8,7 @@
 #include "view_options.h"
 
 #include <ivis/core/colormap.h>
-#include <ivis/core/interrupter.h>
+#include <ivis/core/progress_bar.h>
 #include <ivis/core/surface_series.h>
 #include <ivis/vdb/surface_volume.h>
 
@@ -46,7 +46,8 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
 ///         counts and mapping coherence
 /// @throw InputError when a step cannot be loaded or an output written (no frame is then written);
 ///        Cancelled when interrupted
+/// @param progress optional progress line, labelled with the frame ("frame 3/40")
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
-                            core::Interrupter* progress = nullptr);
+                            core::ProgressBar* progress = nullptr);
 
 }  // namespace ivis::app

@@ -17,6 +17,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace ivis::vdb {
@@ -59,6 +60,42 @@ private:
     core::Interrupter* mInner;
 };
 
+/// Reports a parallel pass over the leaves of a grid to an optional core::Interrupter, by leaves
+/// done, and throws Cancelled once it asks to stop.
+class LeafPassProgress {
+public:
+    LeafPassProgress(core::Interrupter* interrupter, const std::string& name, std::size_t leafCount)
+        : mInterrupter(interrupter), mLeafCount(std::max<std::size_t>(1, leafCount))
+    {
+        if (mInterrupter) mInterrupter->start(name.c_str());
+    }
+    ~LeafPassProgress()
+    {
+        if (mInterrupter) mInterrupter->end();
+    }
+    LeafPassProgress(const LeafPassProgress&) = delete;
+    LeafPassProgress& operator=(const LeafPassProgress&) = delete;
+
+    /// Counts @a leaves more done; true once the pass is to stop.
+    bool advance(std::size_t leaves)
+    {
+        const std::size_t done = mDone += leaves;
+        if (mInterrupter && mInterrupter->wasInterrupted(int(100 * done / mLeafCount))) mStop = true;
+        return mStop;
+    }
+    /// Throws Cancelled when the pass was stopped.
+    void finish() const
+    {
+        if (mStop) throw Cancelled("volume build cancelled");
+    }
+
+private:
+    core::Interrupter* mInterrupter;
+    std::size_t mLeafCount;
+    std::atomic<std::size_t> mDone{0};
+    std::atomic<bool> mStop{false};
+};
+
 /// Unit gradient of the distance at @a p whose closest surface point is @a closest on @a triangle,
 /// for the signed value @a phi: (p - closest) / phi; on the surface itself the triangle's normal.
 openvdb::Vec3s distanceGradient(const core::TriangleMesh& mesh, int triangle, const glm::dvec3& p,
@@ -91,7 +128,8 @@ core::TrianglePoint closestWithin(const core::TriangleBvh& bvh, const glm::dvec3
 /// sign is OpenVDB's, except within two voxels of a closed, manifold, consistently oriented
 /// surface, where the pseudo-normal test is exact (OpenVDB's flood fill mislabels crevices
 /// narrower than a voxel).
-void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, SurfaceVolume& volume)
+void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, SurfaceVolume& volume,
+                         core::Interrupter* interrupter)
 {
     using namespace openvdb;
     const core::PseudoNormals pseudoNormals(mesh);
@@ -100,8 +138,12 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
     const BoxLattice lattice = volume.lattice();
     const double voxelSize = lattice.voxelSize();
     tree::LeafManager<FloatTree> leaves(volume.phi->tree());
+    LeafPassProgress progress(interrupter, "closest points N=" + std::to_string(volume.options.resolution),
+                              leaves.leafCount());
     tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
-        for (auto leaf = range.begin(); leaf; ++leaf) {
+        std::size_t done = 0;
+        for (auto leaf = range.begin(); leaf; ++leaf, ++done) {
+            if (done % 64 == 63 && progress.advance(64)) return;
             Int32Tree::LeafNodeType* triangleLeaf = volume.triangle->tree().probeLeaf(leaf->origin());
             Vec3STree::LeafNodeType* baryLeaf = volume.barycentric->tree().probeLeaf(leaf->origin());
             Vec3STree::LeafNodeType* gradientLeaf = volume.gradient->tree().probeLeaf(leaf->origin());
@@ -124,6 +166,7 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
             }
         }
     });
+    progress.finish();
 }
 
 /// Exact distance and gradient of every far-field voxel, by the bounded BVH query of the band (no
@@ -131,13 +174,16 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
 /// names at the voxel and its 26 neighbours cost a third as much but miss the closest triangle at
 /// some far voxels, whose gradients are then degrees off: docs/volume.md.)
 void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, const BoxLattice& lattice,
-                       openvdb::FloatGrid& phi, openvdb::Vec3SGrid& gradient)
+                       openvdb::FloatGrid& phi, openvdb::Vec3SGrid& gradient, core::Interrupter* interrupter)
 {
     using namespace openvdb;
     const double voxelSize = lattice.voxelSize();
     tree::LeafManager<FloatTree> leaves(phi.tree());
+    LeafPassProgress progress(interrupter, "far field N=" + std::to_string(lattice.resolution), leaves.leafCount());
     tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
-        for (auto leaf = range.begin(); leaf; ++leaf) {
+        std::size_t done = 0;
+        for (auto leaf = range.begin(); leaf; ++leaf, ++done) {
+            if (done % 64 == 63 && progress.advance(64)) return;
             Vec3STree::LeafNodeType* gradientLeaf = gradient.tree().probeLeaf(leaf->origin());
             IVIS_CHECK(gradientLeaf);
             for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
@@ -152,6 +198,7 @@ void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& 
             }
         }
     });
+    progress.finish();
 }
 
 /// A grid of @a type over the topology of @a phi, named @a name, with @a background.
@@ -176,8 +223,10 @@ openvdb::FloatGrid::Ptr meshToNarrowBand(const core::TriangleMesh& mesh, int res
     const IndexSpaceMesh adapter(mesh, *transform);
     InterrupterAdapter interrupt(interrupter);
     const int flags = unsignedDistance ? openvdb::tools::UNSIGNED_DISTANCE_FIELD : 0;
+    interrupt.start(("volume N=" + std::to_string(resolution)).c_str());
     auto grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(
         interrupt, adapter, *transform, exteriorVoxels, interiorVoxels, flags, indexGrid);
+    interrupt.end();
     if (interrupt.wasInterrupted()) throw Cancelled("volume build cancelled");
     return grid;
 }
@@ -216,7 +265,7 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     volume.barycentric = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "barycentric");
     volume.gradient = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "gradient");
     const core::TriangleBvh bvh(mesh);
-    refineClosestPoints(mesh, bvh, volume);
+    refineClosestPoints(mesh, bvh, volume, interrupter);
 
     if (!fineReachesHull) {
         const double farVoxel = volume.farLattice().voxelSize();
@@ -226,7 +275,7 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
                                 volume.unsignedDistance, interrupter, nullptr);
         volume.farPhi->setName("far_phi");
         volume.farGradient = topologyCopy<openvdb::Vec3SGrid>(*volume.farPhi, openvdb::Vec3s(0.0f), "far_gradient");
-        farFieldDistances(mesh, bvh, volume.farLattice(), *volume.farPhi, *volume.farGradient);
+        farFieldDistances(mesh, bvh, volume.farLattice(), *volume.farPhi, *volume.farGradient, interrupter);
     }
     return volume;
 }

@@ -1,6 +1,7 @@
 /// @file progress_bar.h
 /// @brief An Interrupter that draws a one-line progress bar on stderr once an operation has run
-///        for a second, only when stderr is a terminal and the log level allows Info, and that
+///        for a second ("armadillo 2/10, inversevis: viewpoint annealing [####    ] 42%, 3 s, about
+///        4 s left"), only when stderr is a terminal and the log level allows Info, and that
 ///        cancels the operation once Ctrl-C was pressed (interrupt_signal.h).
 /// @warning wasInterrupted is safe to call from several threads.
 #pragma once
@@ -10,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <cstddef>
 #include <string>
 
 namespace ivis::core {
@@ -19,13 +21,18 @@ class ProgressBar : public Interrupter {
 public:
     /// @brief Draws nothing when @a enabled is false (e.g. --quiet).
     explicit ProgressBar(bool enabled = true);
+    /// @brief What the next operations belong to, shown before their names (e.g. "armadillo
+    ///        2/10, inversevis"); "" for nothing.
+    void setContext(std::string context);
     void start(const char* name = nullptr) override;
     void end() override;
     bool wasInterrupted(int percent = -1) override;
 
 private:
     bool mEnabled;
+    std::string mContext;
     std::string mName;
+    std::size_t mDrawnWidth = 0;  ///< characters of the line drawn last
     std::chrono::steady_clock::time_point mStart;
     std::atomic<int> mShownPercent{-1};
     std::atomic<bool> mDrawn{false};
