@@ -50,6 +50,7 @@ void printJson(const core::MeshInfo& info)
                                 {"components", info.components},
                                 {"bbox_min", {info.bounds.lo.x, info.bounds.lo.y, info.bounds.lo.z}},
                                 {"bbox_max", {info.bounds.hi.x, info.bounds.hi.y, info.bounds.hi.z}},
+                                {"mesh_units", core::meshUnitsJson(core::normalizingTransform(info.bounds))},
                                 {"arrays", arrays},
                                 {"notes", info.report.notes}};
     std::cout << out.dump(2) << "\n";
@@ -65,7 +66,11 @@ void printText(const core::MeshInfo& info)
     std::cout << "\n  boundary edges  " << info.boundaryEdges << (info.boundaryEdges > 0 ? " (open)" : " (closed)")
               << "\n  components      " << info.components << "\n  bounding box    [" << info.bounds.lo.x << ", "
               << info.bounds.lo.y << ", " << info.bounds.lo.z << "] .. [" << info.bounds.hi.x << ", "
-              << info.bounds.hi.y << ", " << info.bounds.hi.z << "]\n  arrays          ";
+              << info.bounds.hi.y << ", " << info.bounds.hi.z << "]\n";
+    const core::Similarity units = core::normalizingTransform(info.bounds);
+    std::cout << "  normalised as   (p - [" << units.center.x << ", " << units.center.y << ", " << units.center.z
+              << "]) * " << units.scale << "  (pictures, cameras and EXR positions; mesh = p / "
+              << units.scale << " + center)\n  arrays          ";
     if (info.arrays.empty()) std::cout << "none";
     std::cout << "\n";
     for (const core::ArrayInfo& a : info.arrays) {

@@ -146,13 +146,13 @@ Command addOptimizeCommand(CLI::App& app)
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
             render::RenderOptions look = renderOptions;
             look.shading.scale = seriesScale;
-            writeViewFile(viewOfPicture(core::readCameraJson(cameraPath), look, options->mesh.load), viewPath);
+            writeViewFile(viewOfPicture(core::readCameraJson(cameraPath), look, options->mesh.load, field.normalization), viewPath);
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
             core::writePng(picture.figure, options->output, renderOptions.shading.transparentBackground);
-            if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr);
-            core::writeCameraJson(camera, cameraPath);
-            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load), viewPath);
+            if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr, field.normalization);
+            core::writeCameraJson(camera, cameraPath, field.normalization);
+            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), viewPath);
             coherence = optimize::mappingCoherence(picture.layers).value();
         }
         const optimize::EnergyOptions displayOptions =

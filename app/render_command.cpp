@@ -117,7 +117,7 @@ Command addRenderCommand(CLI::App& app)
                 render::RenderOptions look = options->view.renderOptions();
                 look.shading.scale = request.scale.value_or(look.shading.scale);
                 writeViewFile(viewOfPicture(core::readCameraJson(stats.at("camera").get<std::string>()), look,
-                                            options->mesh.load),
+                                            options->mesh.load, series.load(0).normalization),
                               options->viewOut);
             }
             if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
@@ -142,11 +142,11 @@ Command addRenderCommand(CLI::App& app)
         const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
 
         core::writePng(result.figure, options->output, renderOptions.shading.transparentBackground);
-        if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr);
+        if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr, field.normalization);
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
-        core::writeCameraJson(camera, cameraPath);
+        core::writeCameraJson(camera, cameraPath, field.normalization);
         if (!options->viewOut.empty())
-            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load), options->viewOut);
+            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), options->viewOut);
 
         const render::RenderStats& s = result.stats;
         if (s.nanPixels > 0)

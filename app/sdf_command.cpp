@@ -52,6 +52,7 @@ Command addSdfCommand(CLI::App& app)
             {"resolution", volume.options.resolution},
             {"voxel_size", volume.voxelSize()},
             {"voxel_size_mesh_units", field.normalization.meshLength(volume.voxelSize())},
+            {"mesh_units", core::meshUnitsJson(field.normalization)},
             {"band_voxels", volume.options.bandVoxels},
             {"far_field_resolution", volume.farPhi ? volume.options.farFieldResolution : volume.options.resolution},
             {"reach", volume.reach()},

@@ -80,7 +80,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         });
         const std::string exr = request.exr.empty() ? "" : framePath(request.exr, k, count);
         if (!exr.empty())
-            files.write(exr, [&](const std::string& temporary) { core::writeExr(result.image, result.layers, temporary); });
+            files.write(exr, [&](const std::string& temporary) { core::writeExr(result.image, result.layers, temporary, current.field().normalization);
+            });
         const render::RenderStats& s = result.stats;
         if (s.nanPixels > 0)
             core::logWarning(step.label + ": " + std::to_string(s.nanPixels) +
@@ -106,7 +107,9 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                       "): volume " + volume + ", " + std::to_string(s.seconds) + " s render");
     }
     const std::string cameraPath = request.cameraOut.empty() ? request.png + ".camera.json" : request.cameraOut;
-    files.write(cameraPath, [&](const std::string& temporary) { core::writeCameraJson(camera, temporary); });
+    files.write(cameraPath, [&](const std::string& temporary) {
+        core::writeCameraJson(camera, temporary, current.field().normalization);
+    });
     files.commit();
 
     nlohmann::json video;

@@ -61,9 +61,11 @@ ViewFile viewFromJson(const nlohmann::json& json)
 
 }  // namespace
 
-ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& options, const core::SurfaceLoadOptions& load)
+ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& options, const core::SurfaceLoadOptions& load,
+                       const core::Similarity& meshUnits)
 {
     ViewFile view;
+    view.meshUnits = meshUnits;
     view.camera = camera;
     view.width = options.width;
     view.height = options.height;
@@ -95,7 +97,8 @@ nlohmann::json viewToJson(const ViewFile& view)
             {"legend", view.legend ? nlohmann::json(sideName(view.legendSide)) : nlohmann::json()},
             {"outline", view.outline},
             {"shadows", view.shadows},
-            {"shade_indirect", view.shadeIndirect}};
+            {"shade_indirect", view.shadeIndirect},
+            {"mesh_units", core::meshUnitsJson(view.meshUnits)}};
 }
 
 ViewFile readViewFile(const std::string& path)

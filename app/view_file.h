@@ -33,13 +33,16 @@ struct ViewFile {
     bool outline = true;
     bool shadows = true;
     bool shadeIndirect = true;
+    core::Similarity meshUnits;  ///< the mesh's normalising transform (written for reference; never read)
 };
 
 /// @brief Version written as "inversevis_view"; readers reject newer ones.
 inline constexpr int kViewFileVersion = 1;
 
-/// @brief The view of a picture rendered from @a camera with @a options, its scalar chosen by @a load.
-ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& options, const core::SurfaceLoadOptions& load);
+/// @brief The view of a picture rendered from @a camera with @a options, its scalar chosen by
+///        @a load, of a mesh normalised by @a meshUnits.
+ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& options, const core::SurfaceLoadOptions& load,
+                       const core::Similarity& meshUnits);
 
 /// @brief The view as JSON: {"inversevis_view": 1, "camera": {...}, "size": [w, h], "method": {...},
 ///        "scalar", "hotspots",

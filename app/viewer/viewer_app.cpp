@@ -258,7 +258,7 @@ void ViewerApp::saveView()
     look.legendSide = mLegendSide;
     look.outline = mOutline;
     try {
-        writeViewFile(viewOfPicture(mOrbit.camera(), look, mOptions.mesh.load), path);
+        writeViewFile(viewOfPicture(mOrbit.camera(), look, mOptions.mesh.load, mField->normalization), path);
         mStatus = "wrote " + path;
     } catch (const std::exception& e) {
         mStatus = e.what();

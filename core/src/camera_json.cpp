@@ -58,9 +58,10 @@ Camera readCameraJson(const std::string& path)
     }
 }
 
-void writeCameraJson(const Camera& camera, const std::string& path)
+void writeCameraJson(const Camera& camera, const std::string& path, const Similarity& meshUnits)
 {
-    const nlohmann::json json = cameraToJson(camera);
+    nlohmann::json json = cameraToJson(camera);
+    json["mesh_units"] = meshUnitsJson(meshUnits);
     writeAtomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
         out << json.dump(2) << "\n";

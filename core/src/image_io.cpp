@@ -6,9 +6,11 @@
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfVecAttribute.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <png.h>
 
@@ -75,10 +77,16 @@ void writePngFile(const Image& image, const std::string& file, bool withAlpha)
     if (!written) throw std::runtime_error(message);
 }
 
-void writeExrFile(const Image& image, const ImageLayers& layers, const std::string& file)
+constexpr const char* kMeshCenterAttribute = "ivis:meshCenter";
+constexpr const char* kMeshScaleAttribute = "ivis:meshScale";
+
+void writeExrFile(const Image& image, const ImageLayers& layers, const std::string& file, const Similarity& meshUnits)
 {
     Imf::Header header(image.width(), image.height());
     header.compression() = Imf::ZIP_COMPRESSION;
+    const glm::dvec3& c = meshUnits.center;
+    header.insert(kMeshCenterAttribute, Imf::V3dAttribute(Imath::V3d(c.x, c.y, c.z)));
+    header.insert(kMeshScaleAttribute, Imf::DoubleAttribute(meshUnits.scale));
     const Imath::Box2i window = header.dataWindow();
     const std::size_t width = static_cast<std::size_t>(image.width());
     std::vector<Imath::half> rgba;  // OpenEXR writes only the pixel type of the file's channel
@@ -146,14 +154,14 @@ Image readPng(const std::string& path)
     return image;
 }
 
-void writeExr(const Image& image, const ImageLayers& layers, const std::string& path)
+void writeExr(const Image& image, const ImageLayers& layers, const std::string& path, const Similarity& meshUnits)
 {
     checkNotEmpty(image, path);
     if (layers.width() != image.width() || layers.height() != image.height())
         throw ValueError(path + ": image layers are " + std::to_string(layers.width()) + "x" +
                          std::to_string(layers.height()) + ", the image " + std::to_string(image.width()) + "x" +
                          std::to_string(image.height()));
-    writeAtomically(path, [&](const std::string& file) { writeExrFile(image, layers, file); });
+    writeAtomically(path, [&](const std::string& file) { writeExrFile(image, layers, file, meshUnits); });
 }
 
 std::vector<float> readExrChannel(const std::string& path, const std::string& name)
@@ -176,6 +184,24 @@ std::vector<float> readExrChannel(const std::string& path, const std::string& na
         return values;
     } catch (const InputError&) {
         throw;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": cannot read (" + oneLine(e.what()) + ")");
+    }
+}
+
+Similarity readExrMeshUnits(const std::string& path)
+{
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw InputError(path + ": cannot read (" + std::strerror(errno) + ")");
+    try {
+        Imf::StdIFStream exrStream(stream, path.c_str());
+        const Imf::InputFile input(exrStream);
+        Similarity units;
+        if (const auto* center = input.header().findTypedAttribute<Imf::V3dAttribute>(kMeshCenterAttribute))
+            units.center = {center->value().x, center->value().y, center->value().z};
+        if (const auto* scale = input.header().findTypedAttribute<Imf::DoubleAttribute>(kMeshScaleAttribute))
+            units.scale = scale->value();
+        return units;
     } catch (const std::exception& e) {
         throw InputError(path + ": cannot read (" + oneLine(e.what()) + ")");
     }

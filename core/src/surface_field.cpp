@@ -19,15 +19,22 @@ void showStepData(SurfaceField& field, SurfaceField&& step)
     field.triangleCells = std::move(step.triangleCells);
 }
 
-void normalize(SurfaceField& field)
+Similarity normalizingTransform(const Bounds3& box)
 {
-    const Bounds3 box = bounds(field.mesh);
     const glm::dvec3 size = box.hi - box.lo;
     const double extent = std::max({size.x, size.y, size.z});
-    if (!(extent > 0.0) || !std::isfinite(extent)) {
-        throw ValueError("normalize: mesh '" + field.sourcePath + "' has zero or non-finite extent");
+    if (!(extent > 0.0) || !std::isfinite(extent)) throw ValueError("zero or non-finite extent");
+    return {0.5 * (box.lo + box.hi), 2.0 / extent};
+}
+
+void normalize(SurfaceField& field)
+{
+    Similarity step;
+    try {
+        step = normalizingTransform(bounds(field.mesh));
+    } catch (const ValueError& e) {
+        throw ValueError("normalize: mesh '" + field.sourcePath + "' has " + e.what());
     }
-    const Similarity step{0.5 * (box.lo + box.hi), 2.0 / extent};
     for (glm::vec3& p : field.mesh.positions) {
         p = glm::vec3(step.normalizedFromMesh(glm::dvec3(p)));
     }
@@ -66,6 +73,12 @@ std::pair<float, float> finiteRange(const std::vector<float>& values)
     }
     if (lo > hi) return {0.0f, 0.0f};
     return {lo, hi};
+}
+
+nlohmann::json meshUnitsJson(const Similarity& similarity)
+{
+    const glm::dvec3& c = similarity.center;
+    return {{"center", {c.x, c.y, c.z}}, {"scale", similarity.scale}, {"mesh_from_normalised", "p / scale + center"}};
 }
 
 }  // namespace ivis::core

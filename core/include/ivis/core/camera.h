@@ -4,6 +4,8 @@
 ///       theta = 90, phi = 0 puts the eye at (0, 0, radius) looking down -z.
 #pragma once
 
+#include <ivis/core/similarity.h>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -84,8 +86,9 @@ private:
 /// @throw InputError naming the file for unreadable JSON or bad values
 Camera readCameraJson(const std::string& path);
 
-/// @brief Writes a camera as JSON (with its angles for reference), atomically.
+/// @brief Writes a camera as JSON (with its angles for reference, and the mesh's normalising
+///        transform @a meshUnits as "mesh_units": the camera is in normalised units), atomically.
 /// @throw InputError naming the file when it cannot be written
-void writeCameraJson(const Camera& camera, const std::string& path);
+void writeCameraJson(const Camera& camera, const std::string& path, const Similarity& meshUnits = {});
 
 }  // namespace ivis::core

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <ivis/core/image.h>
+#include <ivis/core/similarity.h>
 
 #include <string>
 #include <vector>
@@ -26,10 +27,16 @@ Image readPng(const std::string& path);
 
 /// @brief Writes a single-part scanline OpenEXR, ZIP-compressed: R, G, B, A as HALF (linear,
 ///        premultiplied) plus every channel of @a layers as FLOAT under its own name ("P.X" is
-///        channel X of layer P).
+///        channel X of layer P), and the mesh's normalising transform @a meshUnits as header
+///        attributes "ivis:meshCenter" (v3d) and "ivis:meshScale" (double): a position layer's
+///        point P is P / meshScale + meshCenter in the mesh's own units.
 /// @throw ValueError for an empty image or layers of another size; InputError
 ///        "<path>: cannot write (<reason>)" on any I/O failure
-void writeExr(const Image& image, const ImageLayers& layers, const std::string& path);
+void writeExr(const Image& image, const ImageLayers& layers, const std::string& path, const Similarity& meshUnits = {});
+
+/// @brief The normalising transform an EXR written by writeExr carries (identity when it has none).
+/// @throw InputError "<path>: cannot read (<reason>)"
+Similarity readExrMeshUnits(const std::string& path);
 
 /// @brief Reads channel @a name of an EXR file as floats, row-major from the top row.
 /// @throw InputError "<path>: cannot read (<reason>)", or when the channel is missing (the

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ivis/core/data_array.h>
+#include <ivis/core/similarity.h>
 #include <ivis/core/triangle_mesh.h>
 
 #include <glm/vec3.hpp>
@@ -16,19 +17,6 @@
 #include <vector>
 
 namespace ivis::core {
-
-/// @brief Uniform scale + translation: normalised = (file - center) * scale.
-struct Similarity {
-    glm::dvec3 center{0.0};
-    double scale = 1.0;
-
-    /// @brief Maps a point from the mesh's own units to normalised units.
-    glm::dvec3 normalizedFromMesh(const glm::dvec3& p) const { return (p - center) * scale; }
-    /// @brief Maps a point from normalised units back to the mesh's own units.
-    glm::dvec3 meshFromNormalized(const glm::dvec3& p) const { return p / scale + center; }
-    /// @brief Converts a length in normalised units to the mesh's own units.
-    double meshLength(double normalizedLength) const { return normalizedLength / scale; }
-};
 
 /// @brief Mesh + the arrays of its file + the scalar it shows.
 /// @note The shown scalar is per vertex (values.size() == mesh.positions.size()) or, for a cell
@@ -66,6 +54,11 @@ void showStepData(SurfaceField& field, SurfaceField&& step);
 ///        spans exactly [-1,1]); records the transform in field.normalization.
 /// @throw ValueError if the mesh has zero extent.
 void normalize(SurfaceField& field);
+
+/// @brief The transform normalize() applies to a mesh bounded by @a box: its centre to 0, its
+///        longest side to length 2.
+/// @throw ValueError "zero or non-finite extent"
+Similarity normalizingTransform(const Bounds3& box);
 
 /// @brief Finite (min, max) of the values, ignoring NaN; {0,0} when there is none.
 std::pair<float, float> finiteRange(const std::vector<float>& values);
