@@ -29,6 +29,8 @@ Command addOptimizeCommand(CLI::App& app);
 
 /// @brief `inversevis evaluate MESH...`: the paper's visibility and timing tables.
 Command addEvaluateCommand(CLI::App& app);
+/// @brief `inversevis merge PART.json...`: the tables of evaluate jobs run apart (--only).
+Command addMergeCommand(CLI::App& app);
 /// @brief `inversevis cache list|clear`: the volume caches of the shared cache folder.
 Command addCacheCommand(CLI::App& app);
 

@@ -45,6 +45,34 @@ double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+/// The mesh-and-method pairs of --only ("STEM:METHOD"), checked against the meshes and methods of
+/// the command line; empty when --only was not given (every pair).
+std::vector<std::pair<std::string, std::string>> onlyPairs(const std::vector<std::string>& only,
+                                                           const std::vector<std::string>& meshes,
+                                                           const std::vector<std::string>& methods)
+{
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (const std::string& text : only) {
+        const std::size_t colon = text.rfind(':');
+        if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+            throw InputError("--only '" + text + "': expected MESH:METHOD (the mesh's file stem, e.g. armadillo:mirror)");
+        const std::string stem = text.substr(0, colon), method = text.substr(colon + 1);
+        if (std::none_of(meshes.begin(), meshes.end(), [&](const std::string& m) { return core::sourceStem(m) == stem; }))
+            throw InputError("--only '" + text + "': no mesh '" + stem + "' among the meshes given");
+        if (std::find(methods.begin(), methods.end(), method) == methods.end())
+            throw InputError("--only '" + text + "': method '" + method + "' is not among --methods");
+        pairs.emplace_back(stem, method);
+    }
+    return pairs;
+}
+
+/// True when --only's @a pairs (none: every pair) select @a method of the mesh @a stem.
+bool selected(const std::vector<std::pair<std::string, std::string>>& pairs, const std::string& stem,
+              const std::string& method)
+{
+    return pairs.empty() || std::find(pairs.begin(), pairs.end(), std::pair{stem, method}) != pairs.end();
+}
+
 /// True when @a results holds, for @a stem, the measures of every method and its seconds at every
 /// resolution.
 bool finished(const nlohmann::json& results, const std::string& stem, const std::vector<std::string>& methods,
@@ -75,6 +103,7 @@ Command addEvaluateCommand(CLI::App& app)
         std::optional<double> fovYDeg;  ///< none: each view framed for its method
         OptimizationOptions optimization;
         std::string json, markdown, pictures, cacheDir;
+        std::vector<std::string> only;
         bool resume = false;
     };
     auto options = std::make_shared<Options>();
@@ -96,6 +125,9 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
         ->check(CLI::Range(16, 8192));
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
+    command->add_option("--only", options->only,
+                        "Evaluate only MESH:METHOD (the mesh's file stem; repeatable): one job of an evaluation spread "
+                        "over a cluster; `inversevis merge` joins the parts' --json files into the tables");
 
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
@@ -103,6 +135,7 @@ Command addEvaluateCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         for (const std::string& m : options->methods) checkMethodFitsVolume(*render::makeMethod(m), volumeOptions);
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
+        const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
         for (const std::string& path : {options->json, options->markdown})
             if (!path.empty()) checkOutputFolder(path);
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
@@ -117,7 +150,11 @@ Command addEvaluateCommand(CLI::App& app)
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
 
         for (const std::string& mesh : options->meshes) {
-            if (finished(results, core::sourceStem(mesh), options->methods, options->optResolutions)) {
+            std::vector<std::string> methods;  // of this mesh, as --only selects them
+            for (const std::string& m : options->methods)
+                if (selected(pairs, core::sourceStem(mesh), m)) methods.push_back(m);
+            if (methods.empty()) continue;
+            if (finished(results, core::sourceStem(mesh), methods, options->optResolutions)) {
                 core::logInfo(core::sourceStem(mesh) + ": kept from " + options->json + " (--resume)");
                 continue;
             }
@@ -137,7 +174,7 @@ Command addEvaluateCommand(CLI::App& app)
             displayOptions.reveal = field.hasScalar();
             const optimize::EnergyEvaluator display(scene, displayOptions);
             nlohmann::json meshResults = nlohmann::json::object();
-            for (const std::string& methodName : options->methods) {
+            for (const std::string& methodName : methods) {
                 progress.setContext(meshLabel + ", " + methodName);
                 const render::MethodPtr start = render::makeMethod(methodName);
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
@@ -176,6 +213,7 @@ Command addEvaluateCommand(CLI::App& app)
                 entry["phi"] = best.phiDeg;
                 entry["fov_y_deg"] = camera.fovYDeg;
                 entry["params"] = render::methodToJson(*best.method);
+                entry["display_res"] = options->displayResolution;
                 if (!start->info().scannedParameter.empty()) entry["alpha_scan"] = options->optimization.alphaScan;
                 if (!options->pictures.empty()) {
                     render::RenderOptions picture;
@@ -194,7 +232,9 @@ Command addEvaluateCommand(CLI::App& app)
                               100.0 * value.front, coherent.value());
                 core::logInfo(stem + " " + methodName + line);
             }
-            results[stem] = meshResults;  // only whole meshes: an interrupted one is evaluated again
+            // Only whole meshes (an interrupted one is evaluated again); other methods' results kept.
+            if (!results.contains(stem)) results[stem] = nlohmann::json::object();
+            results[stem].update(meshResults);
             if (!options->json.empty()) writeJsonFile(results, options->json);
             if (!options->markdown.empty()) writeTextFile(evaluationMarkdown(results, layout), options->markdown);
         }

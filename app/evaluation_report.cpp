@@ -46,7 +46,10 @@ std::string methodTable(const nlohmann::json& results, const ReportLayout& layou
     for (const std::string& stem : layout.stems) {
         if (!results.contains(stem)) continue;
         text << "| " << stem << " |";
-        for (const auto& m : layout.methods) text << " " << cell(results.at(stem).at(m)) << " |";
+        for (const auto& m : layout.methods) {
+            const nlohmann::json& row = results.at(stem);
+            text << " " << (row.contains(m) ? cell(row.at(m)) : std::string("-")) << " |";  // -: not evaluated
+        }
         text << "\n";
     }
     return text.str();
@@ -66,9 +69,14 @@ std::string secondsTable(const nlohmann::json& results, const ReportLayout& layo
         if (!results.contains(stem)) continue;
         text << "| " << stem << " |";
         for (const auto& m : layout.methods)
-            for (int r : layout.optResolutions)
-                text << " " << std::lround(results.at(stem).at(m).at("seconds").at(std::to_string(r)).get<double>() * 10.0) / 10.0
-                     << " |";
+            for (int r : layout.optResolutions) {
+                const nlohmann::json& row = results.at(stem);
+                const std::string key = std::to_string(r);
+                if (row.contains(m) && row.at(m).at("seconds").contains(key))
+                    text << " " << std::lround(row.at(m).at("seconds").at(key).get<double>() * 10.0) / 10.0 << " |";
+                else
+                    text << " - |";
+            }
         text << "\n";
     }
     return text.str();
@@ -81,7 +89,8 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
     bool anyReveal = false;
     for (const std::string& stem : layout.stems)
         if (results.contains(stem))
-            for (const auto& m : layout.methods) anyReveal |= results.at(stem).at(m).contains("reveal");
+            for (const auto& m : layout.methods)
+                anyReveal |= results.at(stem).contains(m) && results.at(stem).at(m).contains("reveal");
     std::string markdown =
         "## Surface visibility in percent at each method's best view (front-only in brackets)\n\n" +
         methodTable(results, layout, [](const nlohmann::json& e) {

@@ -21,7 +21,7 @@ struct ReportLayout {
 /// @brief Table 1 (surface visibility with its front-only part), the paper-literal visibility,
 ///        the mapping coherence, the hot-spot reveal (when some mesh has it) and Table 2 (seconds),
 ///        with a row per mesh of @a layout that @a results holds (results[stem][method] as
-///        evaluate writes it).
+///        evaluate writes it); a method the row lacks (a partial job's) shows "-".
 std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout);
 
 }  // namespace ivis::app

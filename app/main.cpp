@@ -22,6 +22,7 @@ int main(int argc, char** argv)
                                                        ivis::app::addRenderCommand(app),
                                                        ivis::app::addOptimizeCommand(app),
                                                        ivis::app::addEvaluateCommand(app),
+                                                       ivis::app::addMergeCommand(app),
                                                        ivis::app::addCacheCommand(app)};
     ivis::core::installInterruptHandler();
     try {

@@ -37,6 +37,7 @@ Command addRenderCommand(CLI::App& app)
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
+        std::string frames;
         int fps = 5;
         bool noVideo = false;
         std::vector<CLI::Option*> seriesFlags;
@@ -69,6 +70,10 @@ Command addRenderCommand(CLI::App& app)
                           "Series: each frame's colour range is its own step's data range (default: one range over "
                           "all steps)")
             ->excludes("--range"),
+        command->add_option("--frames", options->frames,
+                            "Series: render only steps FIRST:LAST (from 0, inclusive), numbered as in the whole series: "
+                            "one job of a render spread over a cluster (needs a fixed view: --view, --camera or --fov; "
+                            "no video)"),
         command->add_option("--fps", options->fps, "Series: frames per second of the video")
             ->check(CLI::Range(1, 240))
             ->capture_default_str(),
@@ -81,6 +86,13 @@ Command addRenderCommand(CLI::App& app)
             if (!path.empty()) checkOutputFolder(path);
         if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
         if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
+        SeriesRenderRequest frameRange;  // --frames, checked before anything is read
+        if (!options->frames.empty()) {
+            parseFrameRange(options->frames, frameRange);
+            if (options->view.framed())
+                throw InputError("--frames: every job must use one camera; give --view, --camera or --fov (a framed "
+                                 "view follows the job's first step)");
+        }
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
@@ -110,7 +122,9 @@ Command addRenderCommand(CLI::App& app)
             request.png = options->output;
             request.exr = options->exr;
             request.cameraOut = options->cameraOut;
-            request.video = !options->noVideo;
+            request.video = !options->noVideo && options->frames.empty();  // a job's part: no video
+            request.firstStep = frameRange.firstStep;
+            request.lastStep = frameRange.lastStep;
             request.fps = options->fps;
             const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
             if (!options->viewOut.empty()) {

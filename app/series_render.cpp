@@ -38,6 +38,16 @@ int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOp
 
 }  // namespace
 
+void parseFrameRange(const std::string& text, SeriesRenderRequest& request)
+{
+    unsigned long first = 0, last = 0;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%lu:%lu%c", &first, &last, &extra) != 2 || first > last)
+        throw InputError("--frames '" + text + "': expected FIRST:LAST, step indices from 0 with FIRST <= LAST (e.g. 0:99)");
+    request.firstStep = first;
+    request.lastStep = last;
+}
+
 void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source)
 {
     for (const CLI::Option* flag : seriesFlags)
@@ -55,7 +65,11 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     core::Camera camera;
     nlohmann::json frames = nlohmann::json::array();
     int width = 0, height = 0, legendMargin = 0;
-    for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t first = request.firstStep, last = std::min(request.lastStep, count - 1);
+    if (first >= count)
+        throw InputError("--frames " + std::to_string(first) + ":" + std::to_string(request.lastStep) + ": the series has " +
+                         std::to_string(count) + " steps (0 to " + std::to_string(count - 1) + ")");
+    for (std::size_t k = first; k <= last; ++k) {
         const core::SeriesStep& step = series.steps()[k];
         if (progress) progress->setContext("frame " + std::to_string(k + 1) + "/" + std::to_string(count));
         const std::string volume = current.show(series.load(k), progress);
@@ -63,14 +77,15 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         options.method = request.method;
         if (request.scale) options.shading.scale = *request.scale;
         options.scalarName = seriesStepTitle(series, step, current.field().name);
-        if (k == 0)
+        if (k == first)
             legendMargin = seriesLegendMargin(series, options, current.field().name,
                                               request.scale ? std::vector<core::ScalarRange>{} : request.stepRanges);
         options.legendMinimumMargin = legendMargin;
         width = options.width;
         height = options.height;
-        // One camera for every frame: framed on the first step's picture.
-        if (k == 0)
+        // One camera for every frame: framed on the first step's picture (a job's part: fixed, as
+        // parseFrameRange's caller demands).
+        if (k == first)
             camera = view.pictureCamera(current.scene(), request.camera, *options.method, options.width, options.height);
         const render::RenderResult result = render::renderImage(current.scene(), camera, options, progress);
 
@@ -80,7 +95,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         });
         const std::string exr = request.exr.empty() ? "" : framePath(request.exr, k, count);
         if (!exr.empty())
-            files.write(exr, [&](const std::string& temporary) { core::writeExr(result.image, result.layers, temporary, current.field().normalization);
+            files.write(exr, [&](const std::string& temporary) {
+                core::writeExr(result.image, result.layers, temporary, current.field().normalization);
             });
         const render::RenderStats& s = result.stats;
         if (s.nanPixels > 0)
@@ -144,8 +160,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                             {"frames", frames}};
     const nlohmann::json method = render::methodToJson(*request.method);
     for (const auto& [key, value] : method.items()) stats[key] = value;
-    core::logInfo("wrote " + std::to_string(count) + " frames " + framePath(request.png, 0, count) + " .. " +
-                  framePath(request.png, count - 1, count) + " (" + std::to_string(width) + "x" +
+    core::logInfo("wrote " + std::to_string(last - first + 1) + " frames " + framePath(request.png, first, count) + " .. " +
+                  framePath(request.png, last, count) + " (" + std::to_string(width) + "x" +
                   std::to_string(height) + ", " + request.method->name() + ", " + view.describeFraming(camera) + ", " +
                   std::to_string(current.volumesLoaded()) + " volume" + (current.volumesLoaded() == 1 ? "" : "s") +
                   (video.is_null() ? "" : ", video " + video.get<std::string>()) + ")");

@@ -34,7 +34,13 @@ struct SeriesRenderRequest {
     std::string cameraOut;    ///< the camera JSON ("" = "<png>.camera.json")
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
     int fps = 5;              ///< the video's frames per second
+    std::size_t firstStep = 0;                     ///< the steps rendered: firstStep..lastStep (a job's part)
+    std::size_t lastStep = ~std::size_t(0);        ///< inclusive; past the end = to the last step
 };
+
+/// @brief Parses --frames "FIRST:LAST" (step indices from 0, inclusive) into @a request.
+/// @throw InputError for another form or FIRST > LAST
+void parseFrameRange(const std::string& text, SeriesRenderRequest& request);
 
 /// @brief Rejects the first of @a seriesFlags that was given: they apply to a time series only.
 /// @throw InputError "--fps: applies to a time series (...); <source> is one mesh"

@@ -402,3 +402,30 @@ TEST_F(CliSeries, RealFfmpegWritesAnMp4OfTheSeriesFramesOnly)
 
 }  // namespace
 }  // namespace ivis::app
+
+namespace ivis::app {
+namespace {
+
+// A long series rendered as jobs (--frames FIRST:LAST, one fixed camera) gives the frames, names
+// and pixels of one render of every step.
+TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
+{
+    const std::string common = "render " + quoted(pvd()) + " --volume-res 48 --res 48x48 --fov 60 --theta 70 --phi 30 "
+                               "--no-video --cache-dir " + quoted(output(""));
+    ASSERT_EQ(test::runCli(common + " -o " + quoted(output("whole.png"))).status, 0);
+    for (const char* range : {"0:1", "2:4"}) {
+        const test::CliResult job = test::runCli(common + " --frames " + range + " -o " + quoted(output("job.png")));
+        ASSERT_EQ(job.status, 0) << job.err;
+    }
+    for (int k = 0; k < 5; ++k) {
+        const std::string suffix = "_000" + std::to_string(k) + ".png";
+        EXPECT_EQ(core::readPng(output("job" + suffix)).pixels(), core::readPng(output("whole" + suffix)).pixels()) << k;
+    }
+    expectBadInput(test::runCli(common + " --frames 3:1 -o " + quoted(output("bad.png"))), {"--frames '3:1'"});
+    expectBadInput(test::runCli(common + " --frames 7:9 -o " + quoted(output("bad.png"))), {"the series has 5 steps"});
+    expectBadInput(test::runCli("render " + quoted(pvd()) + " --frames 0:1 -o " + quoted(output("bad.png"))),
+                   {"--frames: every job must use one camera"});
+}
+
+}  // namespace
+}  // namespace ivis::app

@@ -8,7 +8,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     ivis::fuzz::checkReader(data, size, [](std::string bytes) {
-        ivis::core::detail::readOpenMeshFile(IVIS_FUZZ_PATH, ivis::core::MeshFormat::IVIS_FUZZ_FORMAT, std::move(bytes));
+        ivis::core::detail::readOpenMeshFile(IVIS_FUZZ_PATH, ivis::core::detail::MeshFormat::IVIS_FUZZ_FORMAT, std::move(bytes));
     });
     return 0;
 }

@@ -1,0 +1,99 @@
+// `inversevis merge PART.json...`: joins the --json files of `evaluate` jobs (each run with --only
+// or on some of the meshes) into the results and tables one `evaluate` of them all would write.
+#include "commands.h"
+#include "evaluation_report.h"
+#include "json_output.h"
+#include "mesh_options.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/render/method_registry.h>
+
+#include <algorithm>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ivis::app {
+namespace {
+
+/// The results object of an evaluate --json file.
+nlohmann::json readPart(const std::string& path)
+{
+    std::ifstream in(path);
+    if (!in) throw InputError(path + ": cannot open");
+    nlohmann::json part = nlohmann::json::parse(in, nullptr, false);
+    if (!part.is_object()) throw InputError(path + ": not the JSON of an evaluation");
+    for (const auto& [stem, methods] : part.items()) {
+        if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
+        for (const auto& [method, entry] : methods.items())
+            if (!entry.is_object() || !entry.contains("visibility") || !entry.contains("seconds") ||
+                !entry.at("seconds").is_object())
+                throw InputError(path + ": " + stem + ":" + method + " holds no evaluation");
+    }
+    return part;
+}
+
+}  // namespace
+
+Command addMergeCommand(CLI::App& app)
+{
+    struct Options {
+        std::vector<std::string> parts;
+        std::string json, markdown;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "merge", "Join the --json files of evaluate jobs (--only MESH:METHOD) into one evaluation's JSON and tables");
+    command->add_option("parts", options->parts, "evaluate --json files")->required()->check(CLI::ExistingFile);
+    command->add_option("--json", options->json, "The joined results as JSON");
+    command->add_option("--markdown", options->markdown, "The tables as Markdown (also printed)");
+
+    return {command, [options] {
+        for (const std::string& path : {options->json, options->markdown})
+            if (!path.empty()) checkOutputFolder(path);
+        nlohmann::json results = nlohmann::json::object();
+        ReportLayout layout;
+        std::set<std::string> methodsSeen;
+        std::set<int> resolutions;
+        std::vector<int> displayResolutions;
+        std::map<std::string, std::string> source;  // "stem:method" -> the part that holds it
+        for (const std::string& path : options->parts) {
+            const nlohmann::json part = readPart(path);
+            for (const auto& [stem, methods] : part.items()) {
+                if (!results.contains(stem)) {
+                    results[stem] = nlohmann::json::object();
+                    layout.stems.push_back(stem);
+                }
+                for (const auto& [method, entry] : methods.items()) {
+                    const std::string key = stem + ":" + method;
+                    if (source.count(key)) throw InputError(path + ": " + key + " is in " + source.at(key) + " too");
+                    source[key] = path;
+                    results[stem][method] = entry;
+                    methodsSeen.insert(method);
+                    for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
+                    displayResolutions.push_back(entry.value("display_res", layout.displayResolution));
+                }
+            }
+        }
+        if (std::adjacent_find(displayResolutions.begin(), displayResolutions.end(), std::not_equal_to<>()) !=
+            displayResolutions.end())
+            throw InputError("the parts were measured at different --display-res; merge parts of one evaluation");
+        if (!displayResolutions.empty()) layout.displayResolution = displayResolutions.front();
+        for (const std::string& method : render::methodNames())  // the registry's order, as evaluate's default
+            if (methodsSeen.erase(method)) layout.methods.push_back(method);
+        layout.methods.insert(layout.methods.end(), methodsSeen.begin(), methodsSeen.end());
+        layout.optResolutions.assign(resolutions.begin(), resolutions.end());
+
+        if (!options->json.empty()) writeJsonFile(results, options->json);
+        const std::string markdown = evaluationMarkdown(results, layout);
+        if (!options->markdown.empty()) writeTextFile(markdown, options->markdown);
+        std::cout << markdown;
+    }};
+}
+
+}  // namespace ivis::app

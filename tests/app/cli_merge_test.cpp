@@ -1,0 +1,54 @@
+// Evaluation jobs run apart (evaluate --only MESH:METHOD) and joined by `inversevis merge` give
+// the results and tables of one evaluation of them all.
+#include "cli_fixture.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace ivis::app {
+namespace {
+
+/// @a results without the timings (which differ from run to run).
+nlohmann::json withoutSeconds(nlohmann::json results)
+{
+    for (auto& [stem, methods] : results.items())
+        for (auto& [method, entry] : methods.items()) entry.erase("seconds");
+    return results;
+}
+
+TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
+{
+    const std::string common = "evaluate scene:sphere scene:torus --volume-res 48 --methods front,inversevis --opt-res 16 "
+                               "--steps 1 --display-res 32 --cache-dir " + quoted(output(""));
+    const test::CliResult full = test::runCli(common + " --json " + quoted(output("all.json")) + " --markdown " +
+                                              quoted(output("all.md")));
+    ASSERT_EQ(full.status, 0) << full.err;
+    const test::CliResult first =
+        test::runCli(common + " --only sphere:front --only torus:inversevis --json " + quoted(output("p1.json")));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const test::CliResult second =
+        test::runCli(common + " --only sphere:inversevis --only torus:front --json " + quoted(output("p2.json")));
+    ASSERT_EQ(second.status, 0) << second.err;
+    const nlohmann::json part = nlohmann::json::parse(std::ifstream(output("p1.json")));
+    EXPECT_EQ(part.at("sphere").size(), 1u);  // only what --only asked for
+    EXPECT_TRUE(part.at("sphere").contains("front"));
+
+    const test::CliResult merged = test::runCli("merge " + quoted(output("p2.json")) + " " + quoted(output("p1.json")) +
+                                                " --json " + quoted(output("m.json")) + " --markdown " + quoted(output("m.md")));
+    ASSERT_EQ(merged.status, 0) << merged.err;
+    const nlohmann::json all = nlohmann::json::parse(std::ifstream(output("all.json")));
+    EXPECT_EQ(withoutSeconds(nlohmann::json::parse(std::ifstream(output("m.json")))), withoutSeconds(all));
+    const std::string tables = test::readFile(output("all.md")), joined = test::readFile(output("m.md"));
+    EXPECT_EQ(joined.substr(0, joined.find("## Viewpoint")), tables.substr(0, tables.find("## Viewpoint")))
+        << "the same tables (the seconds may differ)";
+
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("p1.json"))),
+                   {"sphere:front is in", "p1.json too"});
+    expectBadInput(test::runCli(common + " --only sphere"), {"--only 'sphere': expected MESH:METHOD"});
+    expectBadInput(test::runCli(common + " --only cube:front"), {"no mesh 'cube'"});
+    expectBadInput(test::runCli(common + " --only sphere:mirror"), {"method 'mirror' is not among --methods"});
+}
+
+}  // namespace
+}  // namespace ivis::app
