@@ -2,6 +2,7 @@
 #include "test_support.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/file_bytes.h>
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -137,6 +138,40 @@ TEST(VolumeCache, ForeignFileIsRejectedWithItsName)
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << e.what();
     }
+}
+
+}  // namespace
+}  // namespace ivis::vdb
+
+namespace ivis::vdb {
+namespace {
+
+// The content checksum rejects a damaged file before OpenVDB parses it: anywhere in the file (the
+// header included, where OpenVDB would otherwise read garbage counts), and a file without it.
+TEST(VolumeCache, ContentChecksumRejectsDamageBeforeOpenVdbReads)
+{
+    test::TempDir dir;
+    const std::string path = dir.file("v.vdb");
+    writeVolume(buildSurfaceVolume(core::makeSphere(1).mesh, smallOptions()), path);
+    const std::string bytes = core::detail::readFileBytes(path);
+    auto expectRejected = [&](const std::string& damaged, const std::string& problem) {
+        test::writeFile(path, damaged);
+        try {
+            readVolume(path);
+            FAIL() << "no exception for " << problem;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+        }
+    };
+    for (const std::size_t offset : {std::size_t(10), std::size_t(200), bytes.size() / 2}) {
+        std::string damaged = bytes;
+        damaged[offset] = char(damaged[offset] ^ 0x40);
+        expectRejected(damaged, "content checksum mismatch");
+    }
+    expectRejected(bytes.substr(0, bytes.size() - 24), "no content checksum");
+    expectRejected(bytes.substr(0, bytes.size() / 3), "no content checksum");
+    test::writeFile(path, bytes);
+    EXPECT_NO_THROW(readVolume(path));
 }
 
 }  // namespace

@@ -7,8 +7,12 @@
 
 #include <openvdb/io/File.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 namespace ivis::vdb {
 namespace {
@@ -24,6 +28,65 @@ constexpr const char* kFarResolutionKey = "ivis_far_field_resolution";
 constexpr const char* kUnsignedKey = "ivis_unsigned_distance";
 constexpr const char* kTrianglesKey = "ivis_triangles";
 constexpr const char* kChecksumKey = "ivis_checksum";
+
+// The file is OpenVDB's bytes followed by a trailer: kTrailerMagic, the payload's length and its
+// content hash (little-endian u64 each). readVolume checks it before OpenVDB parses a byte, so a
+// corrupt or truncated cache never reaches OpenVDB's reader (which is not hardened: it leaks or
+// crashes on some corrupt files, found by volume_cache_fuzzer).
+constexpr char kTrailerMagic[8] = {'I', 'V', 'I', 'S', 'S', 'U', 'M', '4'};
+constexpr std::size_t kTrailerBytes = 24;
+
+/// Content hash of the first @a length bytes of @a in (from its start); false when it ends sooner.
+bool hashPrefix(std::istream& in, std::uint64_t length, std::uint64_t& hash)
+{
+    core::ContentHash content;
+    std::vector<char> chunk(std::size_t(1) << 20);
+    in.seekg(0);
+    for (std::uint64_t left = length; left > 0;) {
+        const std::size_t size = std::size_t(std::min<std::uint64_t>(left, chunk.size()));
+        if (!in.read(chunk.data(), std::streamsize(size))) return false;
+        content.add(chunk.data(), size);
+        left -= size;
+    }
+    hash = content.value();
+    return true;
+}
+
+/// Appends the trailer to the OpenVDB file at @a path.
+void appendTrailer(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::uint64_t length = std::uint64_t(in.tellg());
+    std::uint64_t hash = 0;
+    if (!in || !hashPrefix(in, length, hash)) throw std::runtime_error("cannot read back the written volume");
+    in.close();
+    std::ofstream out(path, std::ios::binary | std::ios::app);
+    out.write(kTrailerMagic, sizeof kTrailerMagic);
+    for (const std::uint64_t value : {length, hash})
+        for (int byte = 0; byte < 8; ++byte) out.put(char((value >> (8 * byte)) & 0xff));
+    if (!out.flush()) throw std::runtime_error("cannot write the volume's checksum");
+}
+
+/// Checks the trailer of the file at @a path against its content.
+/// @throw InputError naming the file when the trailer is missing or the content does not match
+void checkTrailer(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::uint64_t size = in ? std::uint64_t(in.tellg()) : 0;
+    char trailer[kTrailerBytes] = {};
+    if (!in || size < kTrailerBytes || !in.seekg(std::streamoff(size - kTrailerBytes)) ||
+        !in.read(trailer, kTrailerBytes) || !std::equal(kTrailerMagic, kTrailerMagic + 8, trailer))
+        throw InputError(path + ": not an inversevis volume of format " + std::to_string(kVolumeFormatVersion) +
+                         " (no content checksum: an older cache, another file, or a truncated one)");
+    auto u64 = [&](int at) {
+        std::uint64_t value = 0;
+        for (int byte = 7; byte >= 0; --byte) value = (value << 8) | std::uint8_t(trailer[at + byte]);
+        return value;
+    };
+    std::uint64_t hash = 0;
+    if (u64(8) != size - kTrailerBytes || !hashPrefix(in, u64(8), hash) || hash != u64(16))
+        throw InputError(path + ": corrupt or truncated volume file (content checksum mismatch)");
+}
 
 /// Hash of a grid's leaf origins, active masks and values: detects corrupted payloads.
 template <typename GridT>
@@ -164,6 +227,7 @@ void writeVolume(const SurfaceVolume& volume, const std::string& path)
         openvdb::io::File file(temporary);
         file.write(grids, meta);
         file.close();
+        appendTrailer(temporary);
     });
 }
 
@@ -171,6 +235,7 @@ SurfaceVolume readVolume(const std::string& path)
 {
     detail::initializeOpenVdb();
     if (!fs::exists(path)) throw InputError(path + ": file not found");
+    checkTrailer(path);
     SurfaceVolume volume;
     CacheKey key;
     try {
