@@ -5,6 +5,7 @@
 #   scripts/fuzz.sh [READER] [SECONDS]   READER: obj off ply stl scalar_file volume_cache vtk_xml
 #                                        vtk_legacy pvd, or all (default); findings are written to
 #                                        build-fuzz/findings/<reader>/
+#   IVIS_FUZZ_JOBS=2 scripts/fuzz.sh ...  builds with 2 jobs (default 1)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
