@@ -1,8 +1,10 @@
 #include "json_output.h"
 
 #include <ivis/core/atomic_file.h>
+#include <ivis/optimize/sampling_bound.h>
 #include <ivis/render/method_json.h>
 
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -28,6 +30,42 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
     if (withReveal)
         json["reveal"] = {{"total", value.reveal.total}, {"direct", value.reveal.direct}, {"per_region", value.reveal.perRegion}};
     return json;
+}
+
+nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
+                                   const render::MethodPtr& method, int resolution,
+                                   const core::ScalarRange& importanceRange, double coherence)
+{
+    optimize::EnergyOptions options;
+    options.kind = optimize::EnergyKind::Visibility;
+    options.resolution = resolution;
+    options.paperLiteral = true;
+    options.reveal = scene.field().hasScalar();
+    options.importanceRange = importanceRange;
+    const optimize::EnergyEvaluator evaluator(scene, options);
+    const optimize::EnergyValue value = evaluator.evaluate(camera, method);
+    nlohmann::json measures = measuresJson(value, coherence, options.reveal);
+    const std::size_t surfacePixels = value.pixelsDirect + value.pixelsIndirect;
+    measures["surface_pixels"] = surfacePixels;
+    measures["even_bound"] =
+        surfacePixels > 0 ? optimize::evenSamplingBound(scene.mesh(), *evaluator.surfaceVoxels(), surfacePixels) : 0.0;
+    return measures;
+}
+
+std::string measuresLine(const nlohmann::json& measures)
+{
+    auto figure = [](double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3f", value);
+        return std::string(text);
+    };
+    std::string line = "surface visibility " + figure(measures.at("visibility")) + " (front " +
+                       figure(measures.at("front_visibility")) + "), paper-literal " +
+                       figure(measures.at("paper_literal")) + ", coherence " + figure(measures.at("coherence"));
+    if (measures.contains("even_bound"))
+        line += " (the same number of surface pixels spread evenly: " + figure(measures.at("even_bound")) + ")";
+    if (measures.contains("reveal")) line += ", reveal " + figure(measures.at("reveal").at("total"));
+    return line;
 }
 
 void writeTextFile(const std::string& text, const std::string& path)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/energy.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +19,17 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 ///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
 ///        direct, per_region).
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal);
+
+/// @brief measuresJson of a rendered picture (`render --measure`): @a method traced again from
+///        @a camera with @a resolution rays per side, its landings counted on METHOD.md's 200^3 grid;
+///        with a scalar, the reveal of the importance over @a importanceRange; and surface_pixels
+///        (direct and indirect) with even_bound, what as many points spread evenly would measure.
+nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
+                                   const render::MethodPtr& method, int resolution,
+                                   const core::ScalarRange& importanceRange, double coherence);
+
+/// @brief One line of pictureMeasuresJson's figures for the log ("surface visibility 0.941 (front 0.285), ...").
+std::string measuresLine(const nlohmann::json& measures);
 
 /// @brief Writes @a text to @a path through a temporary file.
 /// @throw InputError naming the path when it cannot be written

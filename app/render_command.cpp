@@ -40,6 +40,7 @@ Command addRenderCommand(CLI::App& app)
         std::string frames;
         int fps = 5;
         bool noVideo = false;
+        bool measure = false;
         std::vector<CLI::Option*> seriesFlags;
     };
     auto options = std::make_shared<Options>();
@@ -57,6 +58,10 @@ Command addRenderCommand(CLI::App& app)
     command->add_option("--exr", options->exr,
                         "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
     command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON (of a series: per frame too)");
+    command->add_flag("--measure", options->measure,
+                      "Also measure what the picture shows (METHOD.md: surface visibility on the 200^3 grid, "
+                      "paper-literal, front-only, with a scalar the hot-spot reveal) into --stats-json and the log; "
+                      "traces the method again with the picture's height in rays per side");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
@@ -126,6 +131,7 @@ Command addRenderCommand(CLI::App& app)
             request.firstStep = frameRange.firstStep;
             request.lastStep = frameRange.lastStep;
             request.fps = options->fps;
+            request.measure = options->measure;
             const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
             if (!options->viewOut.empty()) {
                 render::RenderOptions look = options->view.renderOptions();
@@ -166,6 +172,7 @@ Command addRenderCommand(CLI::App& app)
         if (s.nanPixels > 0)
             core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
         const glm::dvec2 angles = camera.angles();
+        const double coherence = optimize::mappingCoherence(result.layers).value();
         nlohmann::json stats = {{"seconds", s.seconds},
                                       {"width", renderOptions.width},
                                       {"height", renderOptions.height},
@@ -177,7 +184,7 @@ Command addRenderCommand(CLI::App& app)
                                       {"rays_landed", s.raysLanded},
                                       {"mean_steps", s.meanSteps()},
                                       {"nan_pixels", s.nanPixels},
-                                      {"coherence", optimize::mappingCoherence(result.layers).value()},
+                                      {"coherence", coherence},
                                       {"theta", angles.x},
                                       {"phi", angles.y},
                                       {"fov_y_deg", camera.fovYDeg},
@@ -188,6 +195,11 @@ Command addRenderCommand(CLI::App& app)
                                       {"camera", cameraPath}};
         const nlohmann::json method = render::methodToJson(*renderOptions.method);
         for (const auto& [key, value] : method.items()) stats[key] = value;
+        if (options->measure) {
+            stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
+                                                    renderOptions.shading.scale.range, coherence);
+            core::logInfo(measuresLine(stats["measures"]));
+        }
         if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
                       std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +

@@ -2,6 +2,7 @@
 #include "series_survey.h"
 
 #include "frame_video.h"
+#include "json_output.h"
 #include "series_scene.h"
 
 #include <ivis/core/atomic_file.h>
@@ -102,6 +103,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         if (s.nanPixels > 0)
             core::logWarning(step.label + ": " + std::to_string(s.nanPixels) +
                              " pixels show NaN scalar values (drawn in magenta)");
+        const double coherence = optimize::mappingCoherence(result.layers).value();
         frames.push_back({{"step", k},
                           {"time", step.time},
                           {"label", step.label},
@@ -118,7 +120,12 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"pixels_indirect", s.pixelsIndirect},
                           {"pixels_background", s.pixelsBackground},
                           {"nan_pixels", s.nanPixels},
-                          {"coherence", optimize::mappingCoherence(result.layers).value()}});
+                          {"coherence", coherence}});
+        if (request.measure) {
+            frames.back()["measures"] = pictureMeasuresJson(current.scene(), camera, options.method, options.height,
+                                                            options.shading.scale.range, coherence);
+            core::logInfo(step.label + ": " + measuresLine(frames.back()["measures"]));
+        }
         core::logInfo("frame " + std::to_string(k + 1) + "/" + std::to_string(count) + " (" + step.label +
                       "): volume " + volume + ", " + std::to_string(s.seconds) + " s render");
     }

@@ -34,6 +34,7 @@ struct SeriesRenderRequest {
     std::string cameraOut;    ///< the camera JSON ("" = "<png>.camera.json")
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
     int fps = 5;              ///< the video's frames per second
+    bool measure = false;     ///< each frame's METHOD.md measures in its statistics (pictureMeasuresJson)
     std::size_t firstStep = 0;                     ///< the steps rendered: firstStep..lastStep (a job's part)
     std::size_t lastStep = ~std::size_t(0);        ///< inclusive; past the end = to the last step
 };
@@ -49,7 +50,8 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
 /// @brief Renders every step of @a series as @a view and @a request say.
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and
 ///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range,
-///         counts and mapping coherence
+///         counts and mapping coherence (and with
+///         SeriesRenderRequest::measure its measures)
 /// @throw InputError when a step cannot be loaded or an output written (no frame is then written);
 ///        Cancelled when interrupted
 /// @param progress optional progress line, labelled with the frame ("frame 3/40")

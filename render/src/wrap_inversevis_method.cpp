@@ -89,7 +89,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
                  "silhouette in rings as wide as each part is thick (beyond the paper)";
         const WrapLaunch defaults;
         i.parameters = {
-            {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t across the ring)", {defaults.speed}, 0.0f, kMaxAlpha, true},
+            {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha, true},
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
             {"stable_shift", "largest bend (normalised units) of the landings of alpha - 0.01, alpha, alpha + 0.01; rays that bend more fly chaotically and are not drawn",

@@ -101,6 +101,25 @@ protected:
     }
 };
 
+// --measure measures every frame: one geometry seen from one camera shows the same surface in every
+// frame, while each step's scalar has its own important part.
+TEST_F(CliSeries, MeasureGivesEveryFrameItsMeasures)
+{
+    const CliResult result = runCli(renderSeries(quoted(pvd()), "--no-video --measure --method inversevis-wrap"));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json s = stats();
+    const nlohmann::json& frames = s.at("frames");
+    ASSERT_EQ(frames.size(), 5u);
+    const nlohmann::json& first = frames[0].at("measures");
+    EXPECT_GT(first.at("visibility").get<double>(), first.at("front_visibility").get<double>());
+    for (const nlohmann::json& frame : frames) {
+        const nlohmann::json& measures = frame.at("measures");
+        EXPECT_EQ(measures.at("visibility"), first.at("visibility"));
+        EXPECT_EQ(measures.at("coherence"), frame.at("coherence"));
+        EXPECT_TRUE(measures.contains("reveal"));
+    }
+}
+
 TEST_F(CliSeries, PvdRendersOneFramePerStepOnOneVolumeWithOneRange)
 {
     const CliResult result = runCli(renderSeries(quoted(pvd()), "--no-video"));

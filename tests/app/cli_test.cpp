@@ -435,6 +435,31 @@ TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
     EXPECT_LE(stats.at("coherence").get<double>(), 1.0);
 }
 
+// render --measure measures a picture as optimize measures its best view: rendering optimize's view
+// file gives the very figures optimize reported, and the even-spread bound of as many points.
+TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)
+{
+    const std::string common = " --volume-res 64 --hotspots 2 --res 48x48 --cache-dir " + quoted(output(""));
+    const CliResult best = runCli("optimize scene:sphere --method inversevis-wrap --opt-res 24 --steps 2" + common +
+                                  " -o " + quoted(output("best.png")) + " --json " + quoted(output("best.json")));
+    ASSERT_EQ(best.status, 0) << best.err;
+    const CliResult again = runCli("render scene:sphere --measure --view " + quoted(output("best.png.view.json")) +
+                                   common + " -o " + quoted(output("again.png")) + " --stats-json " +
+                                   quoted(output("again.json")));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_NE(again.err.find("surface visibility"), std::string::npos) << again.err;
+    const nlohmann::json reported = nlohmann::json::parse(std::ifstream(output("best.json"))).at("measures");
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(output("again.json")));
+    const nlohmann::json& measured = stats.at("measures");
+    for (const char* key : {"visibility", "paper_literal", "front_visibility", "coherence"})
+        EXPECT_EQ(measured.at(key), reported.at(key)) << key;
+    EXPECT_EQ(measured.at("reveal").at("total"), reported.at("reveal").at("total"));
+    EXPECT_EQ(measured.at("surface_pixels").get<std::size_t>(),
+              stats.at("pixels_direct").get<std::size_t>() + stats.at("pixels_indirect").get<std::size_t>());
+    EXPECT_GT(measured.at("even_bound").get<double>(), 0.0);
+    EXPECT_LE(measured.at("even_bound").get<double>(), 1.0);
+}
+
 // Each picture is framed for its method (the rings need a wider field of view than the object
 // alone); the camera file it writes records that field of view and reproduces the very picture;
 // --fov fixes the field of view.
