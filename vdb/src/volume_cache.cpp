@@ -67,27 +67,6 @@ void appendTrailer(const std::string& path)
     if (!out.flush()) throw std::runtime_error("cannot write the volume's checksum");
 }
 
-/// Checks the trailer of the file at @a path against its content.
-/// @throw InputError naming the file when the trailer is missing or the content does not match
-void checkTrailer(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    const std::uint64_t size = in ? std::uint64_t(in.tellg()) : 0;
-    char trailer[kTrailerBytes] = {};
-    if (!in || size < kTrailerBytes || !in.seekg(std::streamoff(size - kTrailerBytes)) ||
-        !in.read(trailer, kTrailerBytes) || !std::equal(kTrailerMagic, kTrailerMagic + 8, trailer))
-        throw InputError(path + ": not an inversevis volume of format " + std::to_string(kVolumeFormatVersion) +
-                         " (no content checksum: an older cache, another file, or a truncated one)");
-    auto u64 = [&](int at) {
-        std::uint64_t value = 0;
-        for (int byte = 7; byte >= 0; --byte) value = (value << 8) | std::uint8_t(trailer[at + byte]);
-        return value;
-    };
-    std::uint64_t hash = 0;
-    if (u64(8) != size - kTrailerBytes || !hashPrefix(in, u64(8), hash) || hash != u64(16))
-        throw InputError(path + ": corrupt or truncated volume file (content checksum mismatch)");
-}
-
 /// Hash of a grid's leaf origins, active masks and values: detects corrupted payloads.
 template <typename GridT>
 void hashGrid(const GridT& grid, core::ContentHash& hash)
@@ -231,11 +210,30 @@ void writeVolume(const SurfaceVolume& volume, const std::string& path)
     });
 }
 
+void checkVolumeChecksum(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::uint64_t size = in ? std::uint64_t(in.tellg()) : 0;
+    char trailer[kTrailerBytes] = {};
+    if (!in || size < kTrailerBytes || !in.seekg(std::streamoff(size - kTrailerBytes)) ||
+        !in.read(trailer, kTrailerBytes) || !std::equal(kTrailerMagic, kTrailerMagic + 8, trailer))
+        throw InputError(path + ": not an inversevis volume of format " + std::to_string(kVolumeFormatVersion) +
+                         " (no content checksum: an older cache, another file, or a truncated one)");
+    auto u64 = [&](int at) {
+        std::uint64_t value = 0;
+        for (int byte = 7; byte >= 0; --byte) value = (value << 8) | std::uint8_t(trailer[at + byte]);
+        return value;
+    };
+    std::uint64_t hash = 0;
+    if (u64(8) != size - kTrailerBytes || !hashPrefix(in, u64(8), hash) || hash != u64(16))
+        throw InputError(path + ": corrupt or truncated volume file (content checksum mismatch)");
+}
+
 SurfaceVolume readVolume(const std::string& path)
 {
     detail::initializeOpenVdb();
     if (!fs::exists(path)) throw InputError(path + ": file not found");
-    checkTrailer(path);
+    checkVolumeChecksum(path);
     SurfaceVolume volume;
     CacheKey key;
     try {

@@ -23,6 +23,11 @@ const char* toString(CacheOutcome outcome);
 /// @throw InputError when the file cannot be written (message names the path)
 void writeVolume(const SurfaceVolume& volume, const std::string& path);
 
+/// @brief Checks the content checksum that writeVolume appends (its length and hash of the OpenVDB
+///        bytes): the first thing readVolume does, before OpenVDB parses a byte.
+/// @throw InputError naming the path when the checksum is missing or does not match the content
+void checkVolumeChecksum(const std::string& path);
+
 /// @brief Reads a volume written by writeVolume and verifies its checksum.
 /// @throw InputError naming the path for a missing, truncated, corrupt or foreign file
 SurfaceVolume readVolume(const std::string& path);
