@@ -553,6 +553,14 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+/// A sanitizer build (scripts/test.sh --sanitize) runs two to three times slower and scans the
+/// heap for leaks at exit: measured 1.6-2.1 s beside the suite's heaviest tests.
+constexpr double kStopSeconds = 4.0;
+#else
+constexpr double kStopSeconds = 1.0;
+#endif
+
 TEST_F(Cli, EvaluateStopsOnCtrlCKeepingTheFinishedMeshes)
 {
     const std::string json = output("e.json");
@@ -567,7 +575,7 @@ TEST_F(Cli, EvaluateStopsOnCtrlCKeepingTheFinishedMeshes)
     const CliResult result = test::waitCli(child);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - pressed).count();
     EXPECT_EQ(result.status, 130) << result.err;
-    EXPECT_LT(seconds, 1.0) << "stops within a second";
+    EXPECT_LT(seconds, kStopSeconds) << "stops within a second (a sanitizer build: " << kStopSeconds << " s)";
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(json));
     EXPECT_TRUE(report.contains("sphere"));
     EXPECT_FALSE(report.contains("vessel-tree"));

@@ -1,6 +1,7 @@
 #include <ivis/optimize/energy.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/render/screen_map.h>
 
 #include <glm/geometric.hpp>
@@ -68,6 +69,7 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
     const std::size_t blockSize = 64, blocks = (missed.size() + blockSize - 1) / blockSize;
     std::vector<Tally> tallies(blocks);
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
+        if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         DistanceField::Sampler sampler = mScene.distance().sampler();
         Tally& tally = tallies[b];
         for (std::size_t i = b * blockSize; i < std::min(missed.size(), (b + 1) * blockSize); ++i) {
@@ -82,6 +84,7 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
                 tally.indirect += importance(m.point);
         }
     });
+    if (core::interruptRequested()) throw Cancelled("energy evaluation cancelled");
     EnergyValue value;
     Tally total;
     value.pixelsDirect = samples.direct().size();

@@ -1,5 +1,7 @@
 #include <ivis/optimize/view_samples.h>
 
+#include <ivis/core/errors.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/render/method_registry.h>
 
 #include <tbb/parallel_for.h>
@@ -18,6 +20,7 @@ ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& c
     };
     std::vector<Row> rows(static_cast<std::size_t>(resolution));
     tbb::parallel_for(0, resolution, [&](int y) {
+        if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         render::DistanceField::Sampler sampler = scene.distance().sampler();
         Row& row = rows[std::size_t(y)];
         for (int x = 0; x < resolution; ++x) {
@@ -29,6 +32,7 @@ ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& c
                 row.missed.push_back(pixel);
         }
     });
+    if (core::interruptRequested()) throw Cancelled("view sampling cancelled");
     for (const Row& row : rows) {  // in row order: independent of the thread count
         mDirect.insert(mDirect.end(), row.direct.begin(), row.direct.end());
         mMissed.insert(mMissed.end(), row.missed.begin(), row.missed.end());

@@ -64,6 +64,7 @@ public:
     EnergyValue evaluate(const core::Camera& camera, const render::MethodPtr& method) const;
     /// @brief Energy of prepared view samples with @a method (which must be compatible with them):
     ///        repeated evaluations of one view share the direct hits and the hull seeds.
+    /// @throw Cancelled once Ctrl-C was pressed (core/interrupt_signal.h), for both forms
     EnergyValue evaluate(const ViewSamples& samples, const render::MethodPtr& method) const;
 
     /// @brief Importance in [0,1] of a surface point (0 for caps, NaN data or no scalar).

@@ -22,6 +22,7 @@ struct MissedPixel {
 class ViewSamples {
 public:
     /// @brief Maps every pixel's view ray; for curved-ray methods keeps only the pixels that meet the hull.
+    /// @throw Cancelled once Ctrl-C was pressed (core/interrupt_signal.h)
     ViewSamples(const render::RenderScene& scene, const core::Camera& camera, int resolution,
                 const render::MethodPtr& method);
 
