@@ -1,5 +1,6 @@
 #include <ivis/render/wrap_inversevis_method.h>
 
+#include <ivis/render/landed_extent.h>
 #include <ivis/render/render_scene.h>
 
 #include <glm/geometric.hpp>
@@ -78,6 +79,11 @@ bool WrapInverseVisMethod::launchSensitivity(const CurvedRayStart& start, int /*
     sensitivity.direction = start.velocityPerAlpha;
     sensitivity.perParameter = {double(start.ring * (2.0f - start.ring))};
     return true;
+}
+
+PictureExtent WrapInverseVisMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+{
+    return landedExtent(scene, camera, *this, CurvedRayMethod::pictureExtent(scene, camera));
 }
 
 const MethodInfo& wrapInverseVisMethodInfo()

@@ -36,6 +36,9 @@ public:
     bool aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const override;
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
     bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const override;
+    /// @brief The object and the pixels whose rays land (landedExtent within the hull): the rings
+    ///        are narrower than the hull round thin parts and where their outer rays are not drawn.
+    PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     /// @brief The launch rule.
     const WrapLaunch& launch() const { return mLaunch; }
 

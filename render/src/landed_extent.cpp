@@ -1,0 +1,79 @@
+#include <ivis/render/landed_extent.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ivis::render {
+namespace {
+
+/// Cells of a coarse probe line: every kCoarseStride-th cell of every kCoarseStride-th line.
+constexpr int kCoarseStride = 4;
+
+/// Whether the curved ray of any probed cell of one line lands: every @a stride-th cell (from
+/// stride / 2) of column @a index (axis 0) or row @a index (axis 1) of the probe image of @a cells.
+bool anyLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::ivec2& cells, int axis, int index, int stride)
+{
+    const int length = (cells[1 - axis] - stride / 2 + stride - 1) / stride;
+    return tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, length, 8), false,
+        [&](const tbb::blocked_range<int>& range, bool landed) {
+            if (landed) return true;
+            DistanceField::Sampler sampler = scene.distance().sampler();
+            for (int k = range.begin(); k != range.end(); ++k) {
+                const int along = stride / 2 + k * stride;
+                const double x = (axis == 0 ? index : along) + 0.5, y = (axis == 0 ? along : index) + 0.5;
+                CurvedRayStart start;
+                if (rays.start(x, y, sampler, start) && rays.landing(start, sampler).region == Region::Indirect) return true;
+            }
+            return false;
+        },
+        [](bool a, bool b) { return a || b; });
+}
+
+/// The outermost line of @a axis, counted from either border, with a landed cell at @a stride:
+/// lines from @a first inward in steps of @a step (and their mirror images); -1 if none lands.
+int outermostLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::ivec2& cells, int axis, int first,
+                    int step, int stride)
+{
+    for (int outer = first; outer < (cells[axis] + 1) / 2; outer += step)
+        if (anyLanded(scene, rays, cells, axis, outer, stride) || anyLanded(scene, rays, cells, axis, cells[axis] - 1 - outer, stride))
+            return outer;
+    return -1;
+}
+
+}  // namespace
+
+PictureExtent landedExtent(const RenderScene& scene, const core::Camera& camera, const CurvedRayMethod& method,
+                           const PictureExtent& bound)
+{
+    const glm::dvec2 reach = bound.imagePlane;
+    if (!(std::isfinite(reach.x) && std::isfinite(reach.y) && reach.x > 0.0 && reach.y > 0.0)) return bound;
+
+    // Square cells covering [-reach, reach] on both axes: the probe camera's image is that rectangle.
+    const double cell = 2.0 * std::max(reach.x, reach.y) / kLandedExtentProbes;
+    const glm::ivec2 cells(std::max(1, int(std::ceil(2.0 * reach.x / cell))), std::max(1, int(std::ceil(2.0 * reach.y / cell))));
+    core::Camera probe = camera;
+    const double halfHeight = 0.5 * cells.y * cell;
+    if (camera.orthographic) probe.orthoHalfHeight = halfHeight;
+    else probe.fovYDeg = 2.0 * std::atan(halfHeight) * 180.0 / M_PI;
+    const core::CameraFrame frame(probe, cells.x, cells.y);
+    const CurvedRayMap rays(scene, frame, method);
+
+    // Per axis, the outermost pair of lines (columns, then rows) holding a landed cell, swept from
+    // the border inward so that the rings inside are never traced: first on a coarse lattice, then
+    // cell by cell from one coarse line further out (from the border if the coarse lattice missed
+    // every landing); its reach plus one cell.
+    glm::dvec2 landed(0.0);
+    for (int axis = 0; axis < 2; ++axis) {
+        const int coarse = outermostLanded(scene, rays, cells, axis, kCoarseStride / 2, kCoarseStride, kCoarseStride);
+        const int outer = outermostLanded(scene, rays, cells, axis, std::max(0, coarse - kCoarseStride), 1, 1);
+        if (outer < 0) continue;
+        landed[axis] = std::min((0.5 * cells[axis] - outer) * cell + cell, reach[axis]);
+    }
+    return PictureExtent{landed, bound.fixed}.united(offsetMeshExtent(scene.mesh(), camera, 0.0));
+}
+
+}  // namespace ivis::render
