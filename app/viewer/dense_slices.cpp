@@ -182,7 +182,8 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.outside = farSource.background();
     slices.farResolution = volume.farPhi ? volume.options.farFieldResolution : slices.shownResolution;
     slices.farVoxelSize = float(vdb::BoxLattice{slices.farResolution}.voxelSize());
-    slices.trustBelow = field.fineTrustBelow();
+    slices.fineFrom = field.fineFrom();
+    slices.fineUntil = field.fineUntil();
     const bool exact = slices.exact();
     const WorldBox bandBox = activeWorldBox(*volume.phi);
 

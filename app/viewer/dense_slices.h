@@ -54,7 +54,8 @@ struct DenseSlices {
     float farVoxelSize = 0.0f; ///< voxel size of @a far
     float voxelSize = 0.0f;    ///< voxel size of @a band and @a triangles
     float outside = 0.0f;      ///< phi outside @a far (the field's clamp value)
-    float trustBelow = 0.0f;   ///< far values above this never use the band (DistanceField's rule)
+    float fineFrom = 0.0f;     ///< far values below this use the band alone (DistanceField's rule)
+    float fineUntil = 0.0f;    ///< far values above this never use the band; blended between
     float reach = 0.0f;        ///< exterior distance up to which phi is exact
     bool unsignedDistance = false;  ///< phi is |distance| (open mesh)
     int volumeResolution = 0;  ///< resolution of the sparse volume

@@ -129,7 +129,8 @@ void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float inte
     scene.set("uFarInvVoxel", 1.0f / slices.farVoxelSize);
     scene.set("uOutside", slices.outside);
     scene.set("uHasFineBand", slices.hasFineBand);
-    scene.set("uTrustBelow", slices.trustBelow);
+    scene.set("uFineFrom", slices.fineFrom);
+    scene.set("uFineUntil", slices.fineUntil);
     scene.set("uBandDims", dims(slices.band.dims));
     scene.set("uBandOrigin", slices.band.origin);
     scene.set("uTriangleDims", dims(slices.triangles.dims));

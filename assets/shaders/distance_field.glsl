@@ -12,7 +12,8 @@ uniform vec3 uFarOrigin;        // world centre of far voxel (0,0,0)
 uniform float uFarInvVoxel;
 uniform float uOutside;         // phi outside the far box (the field's clamp value)
 uniform bool uHasFineBand;      // the band refines the far copy near the surface
-uniform float uTrustBelow;      // far values above this never use the band
+uniform float uFineFrom;        // far values below this use the band alone
+uniform float uFineUntil;       // far values above this never use the band; blended between
 uniform ivec3 uBandDims;
 uniform vec3 uBandOrigin;       // world centre of band voxel (0,0,0)
 uniform ivec3 uTriangleDims;
@@ -75,15 +76,17 @@ bool bandSample(vec3 p, out vec4 blended)
 }
 
 // render::DistanceField::Sampler::phiAndGradient: the far copy, refined by the fine band where
-// all eight corners of the fine cell are in the band.
+// all eight corners of the fine cell are in the band, blended by render::detail::fineWeight.
 float phiAndGradient(vec3 p, out vec3 gradient)
 {
     float far = farValueAndGradient(p, gradient);
-    if (!uHasFineBand || far > uTrustBelow) return far;
+    if (!uHasFineBand || far > uFineUntil) return far;
     vec4 blended;
     if (!bandSample(p, blended)) return far;
-    gradient = blended.yzw;
-    return blended.x;
+    float t = clamp((uFineUntil - far) / (uFineUntil - uFineFrom), 0.0, 1.0);
+    float w = t * t * (3.0 - 2.0 * t);
+    gradient = mix(gradient, blended.yzw, w);
+    return mix(far, blended.x, w);
 }
 
 // render::DistanceField::Sampler::phi

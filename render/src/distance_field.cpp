@@ -1,8 +1,20 @@
 #include <ivis/render/distance_field.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ivis::render {
+namespace {
+
+/// Far values up to which the fine band is used: the band's half-width less a fine cell's
+/// diagonal, and at least one fine voxel.
+float fineBandReach(const vdb::SurfaceVolume& volume)
+{
+    const float voxel = float(volume.lattice().voxelSize());
+    return std::max(volume.phi->background() - std::sqrt(3.0f) * voxel, voxel);
+}
+
+}  // namespace
 
 DistanceField::DistanceField(const vdb::SurfaceVolume& volume)
     : mVolume(volume),
@@ -11,10 +23,12 @@ DistanceField::DistanceField(const vdb::SurfaceVolume& volume)
       mVoxelSize(float(volume.lattice().voxelSize())),
       mInvVoxelSize(1.0f / mVoxelSize),
       mOrigin(float(volume.lattice().worldFromIndex(0.0))),
-      // A point whose fine cell is complete is within the band (phi is 1-Lipschitz), and the far
-      // blend is within a small fraction of its voxel of the exact distance: beyond this margin
-      // no fine cell can be complete, and trying one is wasted.
-      mFineTrustBelow(volume.phi->background() + 0.25f * mFar.voxelSize()),
+      // Every corner of the fine cell of a point closer than the band minus the cell's diagonal is
+      // in the band (phi is 1-Lipschitz), so below mFineUntil the band serves continuously; the far
+      // field takes over across [mFineFrom, mFineUntil] instead of at the band's voxel-shaped edge,
+      // whose jump of phi and gradient scattered the landings of neighbouring rays.
+      mFineFrom(0.5f * fineBandReach(volume)),
+      mFineUntil(fineBandReach(volume)),
       mReach(float(volume.reach()))
 {
 }
@@ -59,8 +73,9 @@ float DistanceField::Sampler::finePhiAndGradient(const glm::vec3& p, float far, 
 {
     glm::vec4 sample;
     if (!fineSample(p, sample)) return far;
-    gradient = glm::vec3(sample.y, sample.z, sample.w);
-    return sample.x;
+    const float w = detail::fineWeight(far, mField.mFineFrom, mField.mFineUntil);
+    gradient = w * glm::vec3(sample.y, sample.z, sample.w) + (1.0f - w) * gradient;
+    return w * sample.x + (1.0f - w) * far;
 }
 
 int DistanceField::Sampler::nearestTriangle(const glm::vec3& p)

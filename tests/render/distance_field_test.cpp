@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -107,6 +108,38 @@ TEST(DistanceField, GradientIsContinuousAcrossVoxelFaces)
             }
         }
     }
+}
+
+// Within a far voxel of the surface the far field's blend is poor (its corners straddle the
+// surface), so the band reaches beyond it, and the sampler passes from band to far field across
+// [fineFrom, fineUntil] instead of at the band's voxel-shaped edge: along radial lines through the
+// passage, phi and its gradient change by no more per step than the smooth field does.
+TEST(DistanceField, PhiAndGradientPassFromTheBandToTheFarFieldContinuously)
+{
+    const DistanceField field(sphere().volume);
+    auto sampler = field.sampler();
+    const float fine = field.voxelSize(), far = float(sphere().volume.farLattice().voxelSize());
+    EXPECT_GE(field.fineFrom(), 0.5f * far);
+    EXPECT_GT(field.fineUntil(), field.fineFrom());
+    const float step = 0.002f * fine;
+    float worstPhi = 0.0f, worstGradient = 0.0f;
+    for (const glm::vec3& n : test::fibonacciDirections(100)) {
+        glm::vec3 previousGradient;
+        float previousPhi = sampler.phiAndGradient((1.0f + 0.5f * field.fineFrom()) * n, previousGradient);
+        for (float d = 0.5f * field.fineFrom() + step; d < 1.5f * field.fineUntil(); d += step) {
+            glm::vec3 gradient;
+            const float phi = sampler.phiAndGradient((1.0f + d) * n, gradient);
+            worstPhi = std::max(worstPhi, std::abs(phi - previousPhi - step));
+            worstGradient = std::max(worstGradient, glm::length(gradient - previousGradient));
+            previousPhi = phi;
+            previousGradient = gradient;
+        }
+    }
+    // A step moves phi by the step and the sphere's gradient by step / radius; the blend adds a
+    // share of the small band-to-far difference per step.
+    EXPECT_LT(worstPhi, 0.1f * step) << "largest change of phi per step beyond the step itself";
+    EXPECT_LT(worstGradient, 20.0f * step) << "largest change of the gradient per step";
+    std::cout << "[ passage  ] per step of " << step << ": phi " << worstPhi << ", gradient " << worstGradient << "\n";
 }
 
 TEST(DistanceField, NearestTriangleIsTheBruteForceClosestAtVoxelCentres)

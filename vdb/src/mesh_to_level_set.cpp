@@ -250,11 +250,15 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     volume.triangleCount = mesh.triangles.size();
     volume.meshHash = core::meshHash(mesh);
 
-    // The fine band alone reaches the hull when its voxels are as coarse as the far field's.
+    // The fine band alone reaches the hull when its voxels are as coarse as the far field's. Else
+    // its exterior reaches one far voxel and two fine ones out: within a far voxel of the surface
+    // the far field's blend is poor (its corners straddle the surface), and the renderer passes
+    // from band to far field beyond that (render::DistanceField).
     const double voxelSize = volume.voxelSize();
     const bool fineReachesHull = options.resolution <= options.farFieldResolution;
     const float reachVoxels = float(std::ceil(options.farFieldReach / voxelSize)) + 1.0f;
-    const float exteriorVoxels = fineReachesHull ? std::max(options.bandVoxels, reachVoxels) : options.bandVoxels;
+    const float farVoxels = float(std::ceil(volume.farLattice().voxelSize() / voxelSize)) + 2.0f;
+    const float exteriorVoxels = std::max(options.bandVoxels, fineReachesHull ? reachVoxels : farVoxels);
     const float interiorVoxels = volume.unsignedDistance ? exteriorVoxels : options.bandVoxels;
 
     volume.phi = meshToNarrowBand(mesh, options.resolution, exteriorVoxels, interiorVoxels, volume.unsignedDistance,

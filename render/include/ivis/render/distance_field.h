@@ -12,7 +12,19 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+
 namespace ivis::render {
+
+namespace detail {
+/// @brief Weight of the fine band at far value @a far: 1 up to @a from, 0 from @a until on, a
+///        smoothstep between (so phi and its gradient pass from band to far field continuously).
+inline float fineWeight(float far, float from, float until)
+{
+    const float t = std::clamp((until - far) / (until - from), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+}  // namespace detail
 
 /// @brief Read-only distance field of one volume.
 class DistanceField {
@@ -54,10 +66,13 @@ public:
     float voxelSize() const { return mVoxelSize; }
     /// @brief Exterior distance up to which phi is exact; beyond it phi is clamped to this value.
     float reach() const { return mReach; }
-    /// @brief Far-field values above this never use the fine band.
-    float fineTrustBelow() const { return mFineTrustBelow; }
+    /// @brief Far-field values below this use the fine band alone (where its cell is complete).
+    float fineFrom() const { return mFineFrom; }
+    /// @brief Far-field values above this never use the fine band; between fineFrom() and this the
+    ///        two are blended (detail::fineWeight).
+    float fineUntil() const { return mFineUntil; }
     /// @brief Voxel size of the grid that serves a sample whose value is @a phi (fine band or far field).
-    float servingVoxelSize(float phi) const { return mHasFineBand && phi <= mFineTrustBelow ? mVoxelSize : mFar.voxelSize(); }
+    float servingVoxelSize(float phi) const { return mHasFineBand && phi <= mFineUntil ? mVoxelSize : mFar.voxelSize(); }
     /// @brief Whether phi is an unsigned distance (open mesh).
     bool isUnsigned() const { return mVolume.unsignedDistance; }
     /// @brief The volume it samples.
@@ -70,7 +85,8 @@ private:
     float mVoxelSize;
     float mInvVoxelSize;
     float mOrigin;           ///< world coordinate of fine voxel centre 0 on each axis
-    float mFineTrustBelow;   ///< far values below this may lie in the fine band
+    float mFineFrom;         ///< far values below this use the fine band alone
+    float mFineUntil;        ///< far values above this never use it
     float mReach;
 };
 
@@ -85,7 +101,7 @@ inline float DistanceField::Sampler::phi(const glm::vec3& p)
 inline float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
 {
     const float far = mField.mFar.valueAndGradient(p, gradient);
-    if (!mField.mHasFineBand || far > mField.mFineTrustBelow) return far;
+    if (!mField.mHasFineBand || far > mField.mFineUntil) return far;
     return finePhiAndGradient(p, far, gradient);
 }
 
