@@ -139,9 +139,8 @@ TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
                     if (border >= std::min(shown, 13)) continue;
                     CurvedRayStart start;
                     const bool inPicture = r != Region::Background ||
-                                           (framedToLandings ? false
-                                            : curved         ? curved->start(x + 0.5, y + 0.5, sampler, start)
-                                                             : map->map(x + 0.5, y + 0.5, sampler).launched);
+                                           (!framedToLandings && (curved ? curved->start(x + 0.5, y + 0.5, sampler, start)
+                                                                         : map->map(x + 0.5, y + 0.5, sampler).launched));
                     if (inPicture) shown = border;
                 }
             nearest = std::min(nearest, shown);
