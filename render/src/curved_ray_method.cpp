@@ -84,6 +84,90 @@ CurvedRayTrace CurvedRayMap::trace(const CurvedRayStart& start, DistanceField::S
     }
 }
 
+void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
+                             CurvedRayTrace* traces) const
+{
+    struct Lane {
+        std::size_t ray;
+        int launch;
+        glm::vec3 launchVelocity;
+        CurvedRayEnd end;
+    };
+    const CurvedRayParams& params = mMethod.rayParams();
+    const float escape = escapeDistance(sampler.field());
+    auto launch = [&](Lane& lane, std::size_t ray, int launchIndex) {
+        lane.ray = ray;
+        lane.launch = launchIndex;
+        lane.launchVelocity = mMethod.launchVelocity(starts[ray], launchIndex);
+        lane.end = CurvedRayEnd{};
+        lane.end.position = starts[ray].seed;
+        lane.end.velocity = lane.launchVelocity;
+    };
+    Lane lanes[kLanes];
+    int live = 0;
+    std::size_t next = 0;
+    for (; live < kLanes && next < count; ++live) launch(lanes[live], next++, 0);
+    while (live > 0) {
+        for (int k = 0; k < live;) {
+            Lane& lane = lanes[k];
+            CurvedRayEnd& end = lane.end;
+            if (end.steps < params.maxSteps) {
+                const CurvedRayStep step =
+                    stepCurvedRay(sampler, end.position, end.velocity, params.stepSize, mEpsilon, escape);
+                if (step == CurvedRayStep::Moved) {
+                    ++end.steps;
+                    ++k;
+                    continue;
+                }
+                end.landed = step == CurvedRayStep::Landed;
+            }
+            // This launch has ended: as trace(), launch again or record it and take the next ray.
+            if (!end.landed && lane.launch != mMethod.relaunches() && lane.launchVelocity != glm::vec3(0.0f)) {
+                launch(lane, lane.ray, lane.launch + 1);
+            } else {
+                traces[lane.ray] = {end, lane.launch};
+                if (next < count) {
+                    launch(lane, next++, 0);
+                } else {
+                    lanes[k] = lanes[--live];  // slot k now holds the last lane: step it next
+                    continue;
+                }
+            }
+            ++k;
+        }
+    }
+}
+
+void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                           PixelMapping* mappings) const
+{
+    std::vector<CurvedRayStart> starts;
+    std::vector<std::size_t> pixels;  // the pixel of each start
+    for (std::size_t i = 0; i < count; ++i) {
+        CurvedRayStart start;
+        if (seedFromRay(mFrame.ray(positions[i].x, positions[i].y), sampler, start)) {
+            starts.push_back(start);
+            pixels.push_back(i);
+        } else {
+            mappings[i] = {};
+        }
+    }
+    std::vector<PixelMapping> landings(starts.size());
+    landingMany(starts.data(), starts.size(), sampler, landings.data());
+    for (std::size_t j = 0; j < starts.size(); ++j) mappings[pixels[j]] = landings[j];
+}
+
+void CurvedRayMap::landingMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
+                               PixelMapping* mappings) const
+{
+    std::vector<CurvedRayTrace> traces(count);
+    traceMany(starts, count, sampler, traces.data());
+    for (std::size_t i = 0; i < count; ++i) {
+        const CurvedRayEnd& end = traces[i].end;
+        mappings[i] = end.landed ? landedAt(end, sampler) : launchedMiss(end.steps);
+    }
+}
+
 PixelMapping CurvedRayMap::landedAt(const CurvedRayEnd& end, DistanceField::Sampler& sampler) const
 {
     return render::landedAt(mScene, mFrame, end.position, end.velocity, end.steps, sampler);

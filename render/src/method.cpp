@@ -17,6 +17,12 @@ const ParameterSpec* MethodInfo::parameter(const std::string& key) const
     return nullptr;
 }
 
+void IndirectMap::mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                          PixelMapping* mappings) const
+{
+    for (std::size_t i = 0; i < count; ++i) mappings[i] = map(positions[i].x, positions[i].y, sampler);
+}
+
 std::unique_ptr<IndirectMap> Method::indirectMap(const RenderScene& /*scene*/, const core::CameraFrame& /*frame*/) const
 {
     return nullptr;

@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -76,15 +77,20 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
         if (cancelled) return;
         DistanceField::Sampler sampler = scene.distance().sampler();
         RenderStats local;
+        std::vector<glm::dvec2> positions(std::size_t(options.width));
+        std::vector<PixelMapping> mappings(std::size_t(options.width));
+        std::vector<glm::vec4> colours(std::size_t(options.width));
         for (int y = rows.begin(); y != rows.end(); ++y) {
-            for (int x = 0; x < options.width; ++x) {
-                glm::vec4 colour(0.0f);
-                const std::size_t index = std::size_t(y) * options.width + x;
-                for (int k = 0; k < options.samplesPerPixel; ++k) {
-                    const glm::dvec2 offset = sampleOffset(k);
-                    const PixelMapping m = screen.map(x + offset.x, y + offset.y, sampler);
+            std::fill(colours.begin(), colours.end(), glm::vec4(0.0f));
+            for (int k = 0; k < options.samplesPerPixel; ++k) {
+                const glm::dvec2 offset = sampleOffset(k);
+                for (int x = 0; x < options.width; ++x) positions[std::size_t(x)] = {x + offset.x, y + offset.y};
+                screen.mapMany(positions.data(), positions.size(), sampler, mappings.data());
+                for (int x = 0; x < options.width; ++x) {
+                    const PixelMapping& m = mappings[std::size_t(x)];
+                    const std::size_t index = std::size_t(y) * options.width + x;
                     bool isNan = false;
-                    colour += shader.shade(m, sampler, isNan);
+                    colours[std::size_t(x)] += shader.shade(m, sampler, isNan);
                     if (m.launched) {
                         ++local.raysLaunched;
                         local.totalSteps += std::size_t(m.steps);
@@ -105,8 +111,9 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
                     (*layers[6])[index] = shown ? scalarAt(scene.field(), m.point) : nan;
                     (*layers[7])[index] = float(m.steps);
                 }
-                result.image.at(x, y) = colour / float(options.samplesPerPixel);
             }
+            for (int x = 0; x < options.width; ++x)
+                result.image.at(x, y) = colours[std::size_t(x)] / float(options.samplesPerPixel);
         }
         {
             std::lock_guard<std::mutex> lock(statsMutex);

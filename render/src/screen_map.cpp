@@ -34,6 +34,23 @@ PixelMapping ScreenMap::map(double x, double y, DistanceField::Sampler& sampler)
     return direct.region == Region::Direct ? direct : indirect(x, y, sampler);
 }
 
+void ScreenMap::mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                        PixelMapping* mappings) const
+{
+    std::vector<glm::dvec2> missed;  // positions whose view ray misses the surface
+    std::vector<std::size_t> where;  // and their pixels
+    for (std::size_t i = 0; i < count; ++i) {
+        mappings[i] = directHit(positions[i].x, positions[i].y);
+        if (mappings[i].region == Region::Direct) continue;
+        missed.push_back(positions[i]);
+        where.push_back(i);
+    }
+    if (!mIndirect || missed.empty()) return;
+    std::vector<PixelMapping> indirect(missed.size());
+    mIndirect->mapMany(missed.data(), missed.size(), sampler, indirect.data());
+    for (std::size_t j = 0; j < missed.size(); ++j) mappings[where[j]] = indirect[j];
+}
+
 PixelMapping ScreenMap::indirect(double x, double y, DistanceField::Sampler& sampler) const
 {
     return mIndirect ? mIndirect->map(x, y, sampler) : PixelMapping{};

@@ -303,6 +303,49 @@ TEST(ScreenMap, IndirectPointsLieOnTheVesselTreeWithInterpolatedScalar)
     expectIndirectPointsOnSurface(fixture, makeMethod("neugebauer"), camera, "tree/neugebauer");
 }
 
+TEST(ScreenMap, ManyPixelsMapAsOneByOne)
+{
+    // mapMany traces a row's curved rays together (and relaunches the adaptive method's misses in
+    // their lanes); every pixel must come out exactly as map() alone gives it.
+    const auto& fixture = test::sphereWithFarField();
+    const core::CameraFrame frame(core::Camera::fromAngles(70, 30), 80, 80);
+    // The adaptive method's steep profile sends its outer rays out of the field: they are launched again.
+    const std::vector<std::pair<std::string, MethodPtr>> methods = {
+        {"inversevis", makeMethod("inversevis")},
+        {"inversevis-adaptive", makeMethod("inversevis-adaptive", {{"alpha_profile", {0.0f, 8.0f, 8.0f}}})},
+        {"inversevis-wrap", makeMethod("inversevis-wrap")},
+        {"neugebauer", makeMethod("neugebauer")},
+        {"front", makeMethod("front")}};
+    for (const auto& [method, instance] : methods) {
+        SCOPED_TRACE(method);
+        const ScreenMap screen(*fixture.scene, frame, instance);
+        auto sampler = fixture.scene->distance().sampler();
+        std::vector<glm::dvec2> positions;
+        for (int y = 0; y < frame.height(); ++y)
+            for (int x = 0; x < frame.width(); ++x) positions.push_back({x + 0.5, y + 0.5});
+        std::vector<PixelMapping> many(positions.size());
+        screen.mapMany(positions.data(), positions.size(), sampler, many.data());
+        int indirect = 0, launched = 0;
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            const PixelMapping one = screen.map(positions[i].x, positions[i].y, sampler);
+            ASSERT_EQ(many[i].region, one.region) << i;
+            ASSERT_EQ(many[i].launched, one.launched) << i;
+            ASSERT_EQ(many[i].steps, one.steps) << i;
+            ASSERT_EQ(many[i].point.triangle, one.point.triangle) << i;
+            ASSERT_EQ(many[i].point.position, one.point.position) << i;
+            ASSERT_EQ(many[i].arrival, one.arrival) << i;
+            indirect += one.region == Region::Indirect;
+            launched += one.launched;
+        }
+        if (method != "front") {
+            EXPECT_GT(indirect, 500);
+        }
+        if (method.rfind("inversevis", 0) == 0) {
+            EXPECT_GE(launched, indirect);
+        }
+    }
+}
+
 TEST(ScreenMap, FrontAndBackfacesLaunchNoIndirectRays)
 {
     const auto& fixture = smallSphere();

@@ -50,8 +50,12 @@ Coherence measureCoherence(const render::RenderScene& scene, const core::Camera&
     std::vector<glm::vec3> points(pixels);
     tbb::parallel_for(0, resolution, [&](int y) {
         render::DistanceField::Sampler sampler = scene.distance().sampler();
+        std::vector<glm::dvec2> positions(static_cast<std::size_t>(resolution));
+        for (int x = 0; x < resolution; ++x) positions[std::size_t(x)] = {x + 0.5, y + 0.5};
+        std::vector<render::PixelMapping> row(positions.size());
+        screen.mapMany(positions.data(), positions.size(), sampler, row.data());
         for (int x = 0; x < resolution; ++x) {
-            const render::PixelMapping m = screen.map(x + 0.5, y + 0.5, sampler);
+            const render::PixelMapping& m = row[std::size_t(x)];
             const std::size_t i = std::size_t(y) * resolution + x;
             indirect[i] = m.region == render::Region::Indirect;
             points[i] = m.point.position;

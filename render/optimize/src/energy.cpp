@@ -72,10 +72,16 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
         if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         DistanceField::Sampler sampler = mScene.distance().sampler();
         Tally& tally = tallies[b];
-        for (std::size_t i = b * blockSize; i < std::min(missed.size(), (b + 1) * blockSize); ++i) {
-            const MissedPixel& pixel = missed[i];
-            const PixelMapping m =
-                curved ? curved->landing(pixel.start, sampler) : screen.indirect(pixel.x, pixel.y, sampler);
+        const std::size_t begin = b * blockSize, end = std::min(missed.size(), begin + blockSize);
+        std::vector<PixelMapping> mappings(end - begin);
+        if (curved) {  // the block's rays traced together
+            std::vector<CurvedRayStart> starts;
+            for (std::size_t i = begin; i < end; ++i) starts.push_back(missed[i].start);
+            curved->landingMany(starts.data(), starts.size(), sampler, mappings.data());
+        } else {
+            for (std::size_t i = begin; i < end; ++i) mappings[i - begin] = screen.indirect(missed[i].x, missed[i].y, sampler);
+        }
+        for (const PixelMapping& m : mappings) {
             if (m.region != Region::Indirect) continue;
             ++tally.pixelsIndirect;
             if (mSurface)

@@ -53,31 +53,44 @@ core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float
 ///        of the view direction r tangential to the hull.
 glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirection, float alpha);
 
-/// @brief Integrates dp/dt = phi v/|v|, dv/dt = -grad phi with symplectic Euler:
-///        v' = v - h grad phi(p); p' = p + h phi(p) v'/|v'|, until phi(p) < eps (landed), phi
-///        reaches @a escapeDistance (escaped) or maxSteps.
+/// @brief What one integration step did.
+enum class CurvedRayStep { Moved, Landed, Escaped };
+
+/// @brief One symplectic Euler step of dp/dt = phi v/|v|, dv/dt = -grad phi at p:
+///        v' = v - h grad phi(p); p' = p + h phi(p) v'/|v'|; or, without moving, Landed when
+///        phi(p) < eps and Escaped when phi(p) reaches @a escapeDistance.
 /// @interface FieldSampler: float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
+template <typename FieldSampler>
+[[gnu::always_inline]] inline CurvedRayStep stepCurvedRay(FieldSampler& sampler, glm::vec3& p, glm::vec3& v,
+                                                          float stepSize, float epsilon, float escapeDistance)
+{
+    glm::vec3 gradient;
+    const float phi = sampler.phiAndGradient(p, gradient);
+    if (phi < epsilon) return CurvedRayStep::Landed;
+    if (phi >= escapeDistance) return CurvedRayStep::Escaped;
+    v -= stepSize * gradient;
+    const float speed = glm::length(v);
+    const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
+    p += stepSize * phi * heading;
+    return CurvedRayStep::Moved;
+}
+
+/// @brief Integrates a curved ray with stepCurvedRay from @a seed until it lands, escapes or has
+///        taken params.maxSteps steps.
 template <typename FieldSampler>
 CurvedRayEnd integrateCurvedRay(FieldSampler& sampler, const glm::vec3& seed, const glm::vec3& velocity,
                                 const CurvedRayParams& params, float epsilon, float escapeDistance)
 {
     CurvedRayEnd end;
-    glm::vec3 p = seed, v = velocity, gradient;
-    for (int step = 0; step < params.maxSteps; ++step) {
-        const float phi = sampler.phiAndGradient(p, gradient);
-        if (phi < epsilon) {
-            end.landed = true;
-            break;
-        }
-        if (phi >= escapeDistance) break;
-        v -= params.stepSize * gradient;
-        const float speed = glm::length(v);
-        const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
-        p += params.stepSize * phi * heading;
-        ++end.steps;
+    end.position = seed;
+    end.velocity = velocity;
+    for (; end.steps < params.maxSteps; ++end.steps) {
+        const CurvedRayStep step =
+            stepCurvedRay(sampler, end.position, end.velocity, params.stepSize, epsilon, escapeDistance);
+        if (step == CurvedRayStep::Moved) continue;
+        end.landed = step == CurvedRayStep::Landed;
+        break;
     }
-    end.position = p;
-    end.velocity = v;
     return end;
 }
 

@@ -10,7 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstddef>
-#include <vector>
+#include <memory>
 
 namespace ivis::render {
 
@@ -33,7 +33,7 @@ private:
     /// Cell origin index and fractional position of p; false when the cell is outside the box.
     bool locate(const glm::vec3& p, std::size_t& base, glm::vec3& t) const;
 
-    std::vector<glm::vec4> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
+    std::unique_ptr<glm::vec4[]> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
     int mDims[3] = {0, 0, 0};
     glm::vec3 mOrigin{0.0f};  ///< world position of voxel (0,0,0) of the box
     float mVoxelSize = 1.0f;
@@ -94,7 +94,7 @@ inline float DenseGrid::valueAndGradient(const glm::vec3& p, glm::vec3& gradient
         return mBackground;
     }
     const std::size_t sy = std::size_t(mDims[0]), sz = sy * mDims[1];
-    const glm::vec4* v = mVoxels.data() + base;
+    const glm::vec4* v = mVoxels.get() + base;
     const glm::vec4 corners[8] = {v[0], v[1], v[sy], v[sy + 1], v[sz], v[sz + 1], v[sz + sy], v[sz + sy + 1]};
     const glm::vec4 sample = detail::blend(corners, t, mVoxelSize);
     gradient = glm::vec3(sample.y, sample.z, sample.w);

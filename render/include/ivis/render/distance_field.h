@@ -7,12 +7,14 @@
 /// @warning DistanceField is immutable and shared; create one Sampler per thread.
 #pragma once
 
+#include <ivis/render/band_bricks.h>
 #include <ivis/render/dense_grid.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <glm/vec3.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ivis::render {
 
@@ -30,7 +32,7 @@ inline float fineWeight(float far, float from, float until)
 class DistanceField {
 public:
     /// @brief Wraps @a volume (kept by reference: it must outlive this object) and densifies its
-    ///        far field (or, without one, its band) for fast sampling.
+    ///        far field (or, without one, its band) and bricks its band for fast sampling.
     explicit DistanceField(const vdb::SurfaceVolume& volume);
 
     /// @brief Per-thread sampler: owns the OpenVDB accessors, never shared between threads.
@@ -55,8 +57,8 @@ public:
         float finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient);
 
         const DistanceField& mField;
-        openvdb::FloatGrid::ConstAccessor mPhi;
-        openvdb::Vec3SGrid::ConstAccessor mGradient;
+        glm::ivec3 mLeaf{-1};                 ///< leaf (fine index / 8) of the last brick looked up
+        const glm::vec4* mBrick = nullptr;    ///< its brick (nullptr: no band there)
         openvdb::Int32Grid::ConstAccessor mTriangle;
     };
 
@@ -81,6 +83,7 @@ public:
 private:
     const vdb::SurfaceVolume& mVolume;
     DenseGrid mFar;
+    BandBricks mBand;        ///< the fine band, when the far field is separate
     bool mHasFineBand;       ///< false when the dense copy is the fine grid itself
     float mVoxelSize;
     float mInvVoxelSize;
@@ -90,7 +93,7 @@ private:
     float mReach;
 };
 
-// Inline: curved rays sample at every step, mostly in the far field.
+// Inline: curved rays and shadow rays sample at every step.
 
 inline float DistanceField::Sampler::phi(const glm::vec3& p)
 {
@@ -98,11 +101,38 @@ inline float DistanceField::Sampler::phi(const glm::vec3& p)
     return phiAndGradient(p, gradient);
 }
 
-inline float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
+[[gnu::always_inline]] inline float DistanceField::Sampler::phiAndGradient(const glm::vec3& p, glm::vec3& gradient)
 {
     const float far = mField.mFar.valueAndGradient(p, gradient);
     if (!mField.mHasFineBand || far > mField.mFineUntil) return far;
     return finePhiAndGradient(p, far, gradient);
+}
+
+inline bool DistanceField::Sampler::fineSample(const glm::vec3& p, glm::vec4& sample)
+{
+    const glm::vec3 q = (p - glm::vec3(mField.mOrigin)) * mField.mInvVoxelSize;
+    if (!(q.x >= 0.0f && q.y >= 0.0f && q.z >= 0.0f)) return false;  // outside the box: no band there
+    const int x = int(q.x), y = int(q.y), z = int(q.z);                // truncation = floor for q >= 0
+    const glm::ivec3 leaf(x >> 3, y >> 3, z >> 3);
+    if (leaf != mLeaf) {
+        mLeaf = leaf;
+        mBrick = mField.mBand.find(x, y, z);
+    }
+    if (!mBrick) return false;
+    constexpr int sy = BandBricks::kEdge, sz = sy * sy;
+    const glm::vec4* v = mBrick + BandBricks::voxelOffset(x & 7, y & 7, z & 7);
+    const glm::vec4 corners[8] = {v[0], v[1], v[sy], v[sy + 1], v[sz], v[sz + 1], v[sz + sy], v[sz + sy + 1]};
+    sample = detail::blend(corners, q - glm::vec3(float(x), float(y), float(z)), mField.mVoxelSize);
+    return !std::isnan(sample.x);  // NaN: some corner is outside the band
+}
+
+inline float DistanceField::Sampler::finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient)
+{
+    glm::vec4 sample;
+    if (!fineSample(p, sample)) return far;
+    const float w = detail::fineWeight(far, mField.mFineFrom, mField.mFineUntil);
+    gradient = w * glm::vec3(sample.y, sample.z, sample.w) + (1.0f - w) * gradient;
+    return w * sample.x + (1.0f - w) * far;
 }
 
 }  // namespace ivis::render

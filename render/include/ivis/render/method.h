@@ -12,6 +12,8 @@
 #include <ivis/render/pixel_mapping.h>
 #include <ivis/render/render_scene.h>
 
+#include <glm/vec2.hpp>
+
 #include <functional>
 #include <map>
 #include <memory>
@@ -78,6 +80,10 @@ public:
     virtual ~IndirectMap() = default;
     /// @brief What the indirect ray of continuous pixel position (x, y) shows (its view ray missed).
     virtual PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const = 0;
+    /// @brief map() of each of @a count pixel positions into @a mappings; a method may trace them
+    ///        together (the curved rays do, for speed), with the same results.
+    virtual void mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                         PixelMapping* mappings) const;
 };
 
 /// @brief A visualisation method with its parameter values.

@@ -11,6 +11,7 @@
 #include <ivis/render/render_scene.h>
 
 #include <memory>
+#include <vector>
 
 namespace ivis::render {
 
@@ -22,6 +23,10 @@ public:
 
     /// @brief The surface point shown at continuous pixel position (x, y).
     PixelMapping map(double x, double y, DistanceField::Sampler& sampler) const;
+    /// @brief map() of each of @a count pixel positions into @a mappings, the indirect ones traced
+    ///        together (IndirectMap::mapMany): what a renderer calls per row.
+    void mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                 PixelMapping* mappings) const;
 
     /// @brief The direct part of map(): the surface point the view ray of (x, y) hits, or background.
     PixelMapping directHit(double x, double y) const;
