@@ -77,11 +77,8 @@ bool CurvedRayMap::start(double x, double y, DistanceField::Sampler& sampler, Cu
 CurvedRayTrace CurvedRayMap::trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const
 {
     CurvedRayTrace result;
-    for (;; ++result.launch) {
-        const glm::vec3 velocity = mMethod.launchVelocity(start, result.launch);
-        result.end = traceCurvedRay(sampler, start.seed, velocity, mMethod.rayParams(), mEpsilon);
-        if (result.end.landed || result.launch == mMethod.relaunches() || velocity == glm::vec3(0.0f)) return result;
-    }
+    traceMany(&start, 1, sampler, &result);
+    return result;
 }
 
 void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
@@ -121,7 +118,8 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
                 }
                 end.landed = step == CurvedRayStep::Landed;
             }
-            // This launch has ended: as trace(), launch again or record it and take the next ray.
+            // This launch has ended: launch again while it did not land (as the method says), else
+            // record it and take the next ray.
             if (!end.landed && lane.launch != mMethod.relaunches() && lane.launchVelocity != glm::vec3(0.0f)) {
                 launch(lane, lane.ray, lane.launch + 1);
             } else {

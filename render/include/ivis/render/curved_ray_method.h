@@ -98,10 +98,9 @@ public:
     bool start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
     /// @brief Traces the ray of @a start, launching it again while it does not land (as the method says).
     CurvedRayTrace trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
-    /// @brief trace() of each of @a count starts into @a traces, with the same results: kLanes rays
-    ///        step in turn, a lane taking the next ray when its own ends, so that the samples of
-    ///        different rays overlap in memory latency (about 1.4 times the steps per second of one
-    ///        ray after another).
+    /// @brief trace() of each of @a count starts into @a traces: kLanes rays step in turn, a lane
+    ///        taking the next ray when its own ends, so that the samples of different rays overlap
+    ///        in memory latency (about 1.4 times the steps per second of one ray after another).
     void traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
                    CurvedRayTrace* traces) const;
     /// @brief Rays traceMany() steps together.

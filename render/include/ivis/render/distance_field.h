@@ -35,7 +35,7 @@ public:
     ///        far field (or, without one, its band) and bricks its band for fast sampling.
     explicit DistanceField(const vdb::SurfaceVolume& volume);
 
-    /// @brief Per-thread sampler: owns the OpenVDB accessors, never shared between threads.
+    /// @brief Per-thread sampler: owns its brick cache and an OpenVDB accessor, never shared between threads.
     class Sampler {
     public:
         explicit Sampler(const DistanceField& field);
