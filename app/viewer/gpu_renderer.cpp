@@ -4,6 +4,7 @@
 
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
+#include <ivis/render/curved_ray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,7 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<std::size_t>(slices.localRadii.size() * sizeof(float), 16)),
                  slices.localRadii.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    keepVolumeUniforms(mSceneUniforms, slices, interiorStep);
+    keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(mField->mesh, 0.0f, fineVoxelSize));
     mVolumeScale = {fineVoxelSize, slices.voxelSize, slices.reach};
     mHasVolume = true;
 }

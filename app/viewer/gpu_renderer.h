@@ -34,7 +34,8 @@ public:
     ///        beside the positions, or per triangle for a cell scalar.
     /// @param field normalised surface; kept by reference (ring layout, hull box) and must outlive this
     void setMesh(const core::SurfaceField& field, const std::vector<glm::vec3>& normals);
-    /// @brief Uploads the far, band and triangle boxes. @throw GlError (e.g. GL_OUT_OF_MEMORY)
+    /// @brief Uploads the far, band and triangle boxes of the mesh given to setMesh.
+    ///        @throw GlError (e.g. GL_OUT_OF_MEMORY)
     /// @param fineVoxelSize the volume's own voxel size (the CPU's hull box uses it)
     /// @param interiorStep largest step trusted where phi < 0 (the interior band width)
     void setVolume(const DenseSlices& slices, float fineVoxelSize, float interiorStep);

@@ -121,7 +121,8 @@ void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field)
     scene.set("uDataTriangles", int(std::min<std::size_t>(field.mesh.dataTriangleCount, 0x7fffffff)));
 }
 
-void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float interiorStep)
+void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float interiorStep,
+                        const core::Bounds3& surfaceBox)
 {
     auto dims = [](const std::array<int, 3>& d) { return glm::ivec3(d[0], d[1], d[2]); };
     scene.set("uFarDims", dims(slices.far.dims));
@@ -140,6 +141,8 @@ void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float inte
     scene.set("uUnsigned", slices.unsignedDistance);
     scene.set("uInteriorStep", interiorStep);
     scene.set("uBoxHalf", float(vdb::kBoxHalfExtent));
+    scene.set("uSurfaceLo", glm::vec3(surfaceBox.lo));
+    scene.set("uSurfaceHi", glm::vec3(surfaceBox.hi));
     scene.set("uVolumeReady", true);
 }
 

@@ -26,7 +26,9 @@ void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field);
 /// @brief Keeps the volume's uniforms in @a scene: box sizes and origins, voxel sizes, sign, and
 ///        uVolumeReady = true.
 /// @param interiorStep largest step trusted where phi < 0 (the interior band width)
-void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float interiorStep);
+/// @param surfaceBox a box around the surface (render::shadowFactor's)
+void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float interiorStep,
+                        const core::Bounds3& surfaceBox);
 
 /// @brief Sets the mesh pass's per-frame uniforms: look, camera, clip transform, key light, shadows.
 void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera);

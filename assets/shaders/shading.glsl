@@ -3,9 +3,12 @@
 uniform vec3 uToLight;         // the view's key light
 uniform float uAmbient;
 uniform bool uShadows;
+uniform vec3 uSurfaceLo;       // a box around the surface (render::hullBounds(mesh, 0, voxel))
+uniform vec3 uSurfaceHi;
 
-// render::shadowFactor: soft shadow toward the key light, sphere-traced through phi; on an unsigned
-// field a wall thinner than a step shows up as phi falling then rising within two voxels.
+// render::shadowFactor: soft shadow toward the key light, sphere-traced by max(phi, distance to the
+// surface's box) (phi is clamped beyond the field's reach); on an unsigned field a wall thinner than
+// a step shows up as phi falling then rising within two voxels.
 float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
 {
     const float kSoftness = 8.0;
@@ -15,14 +18,16 @@ float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
     float t = uVoxel;
     float previousSlope = 0.0;
     for (int step = 0; step < 512 && t < 6.0; ++step) {
+        vec3 p = start + t * toLight;
         vec3 gradient;
-        float phi = phiAndGradient(start + t * toLight, gradient);
+        float phi = phiAndGradient(p, gradient);
         if (phi < hitDistance) return 0.0;
         float slope = dot(gradient, toLight);
         if (phi < 2.0 * uVoxel && previousSlope < 0.0 && slope > 0.0 && uUnsigned) return 0.0;
         previousSlope = slope;
-        lit = min(lit, kSoftness * phi / t);
-        t += max(phi, 0.5 * uVoxel);
+        float distance = max(phi, length(max(max(uSurfaceLo - p, p - uSurfaceHi), vec3(0.0))));
+        lit = min(lit, kSoftness * distance / t);
+        t += max(distance, 0.5 * uVoxel);
     }
     return clamp(lit, 0.0, 1.0);
 }

@@ -1,5 +1,6 @@
 #include <ivis/render/shading.h>
 
+#include <ivis/render/curved_ray.h>
 #include <ivis/render/shadow.h>
 
 #include <glm/geometric.hpp>
@@ -16,7 +17,8 @@ Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const S
       mToLight(glm::normalize(glm::vec3(-0.35 * frame.right() + 0.55 * frame.upVector() - 0.75 * frame.forward()))),
       mUp(frame.upVector()),
       mRight(frame.right()),
-      mIndirectShadows(options.shadows && method.indirectRaysArriveFromOutside())
+      mIndirectShadows(options.shadows && method.indirectRaysArriveFromOutside()),
+      mSurfaceBox(hullBounds(scene.mesh(), 0.0f, scene.distance().voxelSize()))
 {
 }
 
@@ -33,7 +35,7 @@ float Shader::lighting(const glm::vec3& position, const glm::vec3& normal, const
                        DistanceField::Sampler& sampler) const
 {
     float diffuse = std::max(0.0f, glm::dot(normal, toLight));
-    if (diffuse > 0.0f && shadows) diffuse *= shadowFactor(sampler, position, normal, toLight);
+    if (diffuse > 0.0f && shadows) diffuse *= shadowFactor(sampler, position, normal, toLight, mSurfaceBox);
     return mOptions.ambient + (1.0f - mOptions.ambient) * diffuse;
 }
 

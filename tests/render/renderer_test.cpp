@@ -10,6 +10,7 @@
 
 #include <ivis/core/colormap.h>
 #include <ivis/core/image_io.h>
+#include <ivis/render/curved_ray.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 #include <ivis/render/screen_map.h>
@@ -25,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -188,6 +190,7 @@ TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)
     const Shader shader(scene, frame, ShadingOptions{}, *makeMethod("backfaces"));
     auto sampler = scene.distance().sampler();
     const float voxel = scene.distance().voxelSize();
+    const core::Bounds3 surfaceBox = hullBounds(scene.mesh(), 0.0f, voxel);
     int blocked = 0, leaks = 0;
     for (int y = 0; y < 128; ++y)
         for (int x = 0; x < 128; ++x) {
@@ -200,10 +203,31 @@ TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)
             if (!scene.bvh().intersect(m.point.position + 2.0f * voxel * n, shader.toLight(), 0.0f, 6.0f).hit())
                 continue;
             ++blocked;
-            leaks += shadowFactor(sampler, m.point.position, n, shader.toLight()) > 0.0f;
+            leaks += shadowFactor(sampler, m.point.position, n, shader.toLight(), surfaceBox) > 0.0f;
         }
     ASSERT_GT(blocked, 500);
     EXPECT_LE(leaks, blocked / 500) << leaks << " of " << blocked << " blocked shadow rays report light";
+}
+
+// A shadow ray leaving a convex object meets nothing: it must come back fully lit, also where it
+// runs beyond the field's reach (phi clamped at 0.6 there; min(8 phi / t) over t < 6 would give 0.8).
+TEST(Renderer, ShadowRaysLeavingAConvexObjectAreFullyLit)
+{
+    const RenderScene& scene = *test::sphereScene().scene;
+    auto sampler = scene.distance().sampler();
+    const core::Bounds3 surfaceBox = hullBounds(scene.mesh(), 0.0f, scene.distance().voxelSize());
+    std::mt19937 random(7);
+    std::normal_distribution<float> gauss;
+    float darkest = 1.0f;
+    for (int i = 0; i < 200; ++i) {
+        const glm::vec3 normal = glm::normalize(glm::vec3(gauss(random), gauss(random), gauss(random)));
+        glm::vec3 tangent = glm::cross(normal, glm::normalize(glm::vec3(gauss(random), gauss(random), gauss(random))));
+        tangent = glm::normalize(tangent);
+        const float tilt = 0.6f;  // radians between the normal and the light
+        const glm::vec3 toLight = std::cos(tilt) * normal + std::sin(tilt) * tangent;
+        darkest = std::min(darkest, shadowFactor(sampler, normal, normal, toLight, surfaceBox));
+    }
+    EXPECT_GE(darkest, 0.999f);
 }
 
 // ---------------------------------------------------------------------------------------------

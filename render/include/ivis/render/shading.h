@@ -60,6 +60,7 @@ private:
     glm::vec3 mUp;     ///< the camera's up vector
     glm::vec3 mRight;  ///< the camera's right vector
     bool mIndirectShadows;
+    core::Bounds3 mSurfaceBox;  ///< a box around the surface, for shadowFactor
 };
 
 }  // namespace ivis::render

@@ -2,6 +2,7 @@
 /// @brief Shadow rays sphere-traced through the level set (the paper's depth cue).
 #pragma once
 
+#include <ivis/core/triangle_mesh.h>
 #include <ivis/render/distance_field.h>
 
 #include <glm/vec3.hpp>
@@ -9,11 +10,14 @@
 namespace ivis::render {
 
 /// @brief Soft shadow factor in [0, 1] (1 = fully lit) toward a directional light: sphere traces
-///        phi from @a point (offset two voxels along @a normal) along @a toLight, darkening by the
-///        closest approach min(k phi / t) and returning 0 when the ray meets the surface.
+///        from @a point (offset two voxels along @a normal) along @a toLight by the distance d =
+///        max(phi, distance to @a surfaceBox), darkening by the closest approach min(k d / t) and
+///        returning 0 when the ray meets the surface.
 /// @param normal unit surface normal on the side facing the light
 /// @param toLight unit direction from the surface to the light
+/// @param surfaceBox a box containing the surface (hullBounds(mesh, 0, voxel)): beyond the field's
+///        reach, where phi is clamped, its distance bounds the true distance from below
 float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, const glm::vec3& normal,
-                   const glm::vec3& toLight);
+                   const glm::vec3& toLight, const core::Bounds3& surfaceBox);
 
 }  // namespace ivis::render
