@@ -26,6 +26,29 @@ bool boxInterval(vec3 origin, vec3 direction, out float tEnter, out float tExit)
     return tEnter < tExit;
 }
 
+// render::refineHullCrossing: regula falsi with the Illinois rule between lo (inside) and hi.
+float refineHullCrossing(vec3 origin, vec3 direction, float lo, float excessLo, float hi, float excessHi)
+{
+    int lastSide = 0;
+    for (int i = 0; i < 64 && hi - lo > 1e-5; ++i) {
+        float mid = clamp(lo + (hi - lo) * excessLo / (excessLo - excessHi), lo, hi);
+        float excess = phiAt(origin + mid * direction) - uHullOffset;
+        if (abs(excess) < 1e-6) return mid;
+        if (excess <= 0.0) {
+            lo = mid;
+            excessLo = excess;
+            if (lastSide < 0) excessHi *= 0.5;
+            lastSide = -1;
+        } else {
+            hi = mid;
+            excessHi = excess;
+            if (lastSide > 0) excessLo *= 0.5;
+            lastSide = 1;
+        }
+    }
+    return hi;
+}
+
 // render::findHullExit: the FARTHEST crossing of {phi = phi0}, sphere-traced backward.
 bool findHullExit(vec3 origin, vec3 direction, out vec3 seed)
 {
@@ -34,20 +57,16 @@ bool findHullExit(vec3 origin, vec3 direction, out vec3 seed)
     if (!boxInterval(origin, direction, tEnter, tExit)) return false;
     const float minStep = 1e-4;
     float tOutside = tExit;
+    float excessOutside = 0.0;
     float t = tExit;
     for (int i = 0; i < uMaxHullSteps && t >= tEnter; ++i) {
         float excess = phiAt(origin + t * direction) - uHullOffset;
         if (excess <= 0.0) {
-            float lo = t, hi = tOutside;
-            for (int k = 0; k < 64 && hi - lo > 1e-5; ++k) {
-                float mid = 0.5 * (lo + hi);
-                if (phiAt(origin + mid * direction) <= uHullOffset) lo = mid;
-                else hi = mid;
-            }
-            seed = origin + hi * direction;
+            seed = origin + refineHullCrossing(origin, direction, t, excess, tOutside, excessOutside) * direction;
             return true;
         }
         tOutside = t;
+        excessOutside = excess;
         t -= max(excess, minStep);
     }
     return false;

@@ -7,8 +7,8 @@ uniform vec3 uSurfaceLo;       // a box around the surface (render::hullBounds(m
 uniform vec3 uSurfaceHi;
 
 // render::shadowFactor: soft shadow toward the key light, sphere-traced by max(phi, distance to the
-// surface's box) (phi is clamped beyond the field's reach); on an unsigned field a wall thinner than
-// a step shows up as phi falling then rising within two voxels.
+// surface's box) (phi is clamped beyond the field's reach) until the ray leaves the box for good; on
+// an unsigned field a wall thinner than a step shows up as phi falling then rising within two voxels.
 float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
 {
     const float kSoftness = 8.0;
@@ -27,6 +27,10 @@ float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
         previousSlope = slope;
         float distance = max(phi, length(max(max(uSurfaceLo - p, p - uSurfaceHi), vec3(0.0))));
         lit = min(lit, kSoftness * distance / t);
+        bool leaves = false;  // left the surface's box for good: nothing ahead can shadow it
+        for (int a = 0; a < 3; ++a)
+            leaves = leaves || (p[a] > uSurfaceHi[a] && toLight[a] >= 0.0) || (p[a] < uSurfaceLo[a] && toLight[a] <= 0.0);
+        if (leaves) break;
         t += max(distance, 0.5 * uVoxel);
     }
     return clamp(lit, 0.0, 1.0);

@@ -61,7 +61,7 @@ ImageLayers::ImageLayers(int width, int height) : mWidth(width), mHeight(height)
     checkSize(width, height);
 }
 
-std::vector<float>& ImageLayers::add(const std::string& name, float fill)
+Channel& ImageLayers::add(const std::string& name, float fill)
 {
     if (name.empty() || name == "R" || name == "G" || name == "B" || name == "A")
         throw ValueError("invalid image channel name '" + name + "' (R, G, B, A hold the colour)");
@@ -71,12 +71,12 @@ std::vector<float>& ImageLayers::add(const std::string& name, float fill)
     return it->second;
 }
 
-std::vector<float>& ImageLayers::channel(const std::string& name)
+Channel& ImageLayers::channel(const std::string& name)
 {
-    return const_cast<std::vector<float>&>(std::as_const(*this).channel(name));
+    return const_cast<Channel&>(std::as_const(*this).channel(name));
 }
 
-const std::vector<float>& ImageLayers::channel(const std::string& name) const
+const Channel& ImageLayers::channel(const std::string& name) const
 {
     const auto it = mChannels.find(name);
     if (it == mChannels.end()) throw ValueError("no image channel '" + name + "'");

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ivis::render {
 
@@ -21,29 +22,104 @@ core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float
     return box;
 }
 
+namespace {
+
+constexpr float kMinHullStep = 1e-4f;  ///< the backward hull search's smallest step
+
+/// The crossing of phi = phi0 between @a lo (excess phi - phi0 <= 0) and @a hi (excess > 0) by
+/// regula falsi with the Illinois rule (Dowell & Jarratt 1971): phi is smooth along the ray, so a
+/// few samples reach what bisection to the same 1e-5 needed about ten for. Returns a parameter on
+/// the outside within 1e-5 of the crossing, or one whose excess is below 1e-6.
+float refineHullCrossing(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                         float hullOffset, float lo, float excessLo, float hi, float excessHi)
+{
+    int lastSide = 0;  // -1: lo moved last, +1: hi moved last
+    for (int i = 0; i < 64 && hi - lo > 1e-5f; ++i) {
+        const float mid = std::clamp(lo + (hi - lo) * excessLo / (excessLo - excessHi), lo, hi);
+        const float excess = sampler.phi(origin + mid * direction) - hullOffset;
+        if (std::abs(excess) < 1e-6f) return mid;
+        if (excess <= 0.0f) {
+            lo = mid, excessLo = excess;
+            if (lastSide < 0) excessHi *= 0.5f;
+            lastSide = -1;
+        } else {
+            hi = mid, excessHi = excess;
+            if (lastSide > 0) excessLo *= 0.5f;
+            lastSide = 1;
+        }
+    }
+    return hi;
+}
+
+/// findHullExit's search of the parameters [tEnter, tStart], none beyond tStart inside the hull.
+bool findHullExitFrom(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                      float hullOffset, float tEnter, float tStart, glm::vec3& seed)
+{
+    float tOutside = tStart;  // last parameter known to be outside the hull (phi > phi0)
+    float excessOutside = 0.0f;
+    float t = tStart;
+    while (t >= tEnter) {
+        const float excess = sampler.phi(origin + t * direction) - hullOffset;
+        if (excess <= 0.0f) {
+            seed = origin + refineHullCrossing(sampler, origin, direction, hullOffset, t, excess, tOutside,
+                                               excessOutside) * direction;
+            return true;
+        }
+        tOutside = t;
+        excessOutside = excess;
+        t -= std::max(excess, kMinHullStep);
+    }
+    return false;
+}
+
+}  // namespace
+
 bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
                   float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed)
 {
     float tEnter, tExit;
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
-    const float minStep = 1e-4f;
-    float tOutside = tExit;  // last parameter known to be outside the hull (phi > phi0)
-    float t = tExit;
-    while (t >= tEnter) {
-        const float excess = sampler.phi(origin + t * direction) - hullOffset;
-        if (excess <= 0.0f) {
-            float lo = t, hi = tOutside;  // phi(lo) <= phi0 < phi(hi)
-            while (hi - lo > 1e-5f) {
-                const float mid = 0.5f * (lo + hi);
-                (sampler.phi(origin + mid * direction) <= hullOffset ? lo : hi) = mid;
-            }
-            seed = origin + hi * direction;
-            return true;
+    return findHullExitFrom(sampler, origin, direction, hullOffset, tEnter, tExit, seed);
+}
+
+void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, const glm::vec3* directions,
+                   std::size_t count, float hullOffset, const core::Bounds3& hullBox, glm::vec3* seeds, bool* found)
+{
+    constexpr std::size_t kGroup = 8;
+    const float stopExcess = sampler.field().voxelSize();
+    for (std::size_t first = 0; first < count; first += kGroup) {
+        const std::size_t n = std::min(kGroup, count - first);
+        const std::size_t centre = first + n / 2;
+        // The group's rays stay within a + b t of the central ray at parameter t (unit directions).
+        float a = 0.0f, b = 0.0f, tNear = std::numeric_limits<float>::max(), tFar = -1.0f;
+        float tEnter[kGroup], tExit[kGroup];
+        bool inBox[kGroup];
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t r = first + i;
+            inBox[i] = core::rayBoxInterval(origins[r], directions[r], hullBox, tEnter[i], tExit[i]);
+            if (!inBox[i]) continue;
+            a = std::max(a, glm::length(origins[r] - origins[centre]));
+            b = std::max(b, glm::length(directions[r] - directions[centre]));
+            tNear = std::min(tNear, tEnter[i]);
+            tFar = std::max(tFar, tExit[i]);
         }
-        tOutside = t;
-        t -= std::max(excess, minStep);
+        // March the cone backward from the farthest exit: where phi on the central ray exceeds the
+        // hull offset by more than the cone's radius, no ray of the group meets the hull within
+        // that excess (phi is 1-Lipschitz), so each ray's own search starts where the cone stops.
+        float t = tFar;
+        while (t >= tNear) {
+            const float excess = sampler.phi(origins[centre] + t * directions[centre]) - hullOffset - (a + b * t);
+            if (excess < stopExcess) break;
+            t -= excess;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t r = first + i;
+            found[r] = false;
+            if (!inBox[i] || t < tEnter[i]) continue;  // outside the box, or the cone cleared its interval
+            found[r] = findHullExitFrom(sampler, origins[r], directions[r], hullOffset, tEnter[i],
+                                        std::min(t, tExit[i]), seeds[r]);
+        }
     }
-    return false;
 }
 
 bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,

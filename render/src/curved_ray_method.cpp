@@ -2,6 +2,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <memory>
+#include <vector>
+
 namespace ivis::render {
 
 std::vector<ParameterSpec> curvedRaySpecs()
@@ -59,6 +62,11 @@ bool CurvedRayMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sample
     } else if (!findHullExit(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed)) {
         return false;
     }
+    return aimFromSeed(direction, sampler, start);
+}
+
+bool CurvedRayMap::aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const
+{
     glm::vec3 gradient;
     sampler.phiAndGradient(start.seed, gradient);
     start.velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
@@ -141,13 +149,34 @@ void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, Dista
 {
     std::vector<CurvedRayStart> starts;
     std::vector<std::size_t> pixels;  // the pixel of each start
-    for (std::size_t i = 0; i < count; ++i) {
-        CurvedRayStart start;
-        if (seedFromRay(mFrame.ray(positions[i].x, positions[i].y), sampler, start)) {
+    auto keep = [&](std::size_t i, bool seeded, const CurvedRayStart& start) {
+        if (seeded) {
             starts.push_back(start);
             pixels.push_back(i);
         } else {
             mappings[i] = {};
+        }
+    };
+    if (mMethod.seedRule() == SeedRule::HullExit) {
+        // Seed the pixels' rays together (findHullExits clears neighbouring rays at once).
+        std::vector<glm::vec3> origins(count), directions(count), seeds(count);
+        std::unique_ptr<bool[]> found(new bool[count]);
+        for (std::size_t i = 0; i < count; ++i) {
+            const core::CameraRay ray = mFrame.ray(positions[i].x, positions[i].y);
+            origins[i] = glm::vec3(ray.origin);
+            directions[i] = glm::vec3(ray.direction);
+        }
+        findHullExits(sampler, origins.data(), directions.data(), count, mMethod.rayParams().hullOffset, mHullBox,
+                      seeds.data(), found.get());
+        for (std::size_t i = 0; i < count; ++i) {
+            CurvedRayStart start;
+            start.seed = seeds[i];
+            keep(i, found[i] && aimFromSeed(directions[i], sampler, start), start);
+        }
+    } else {
+        for (std::size_t i = 0; i < count; ++i) {
+            CurvedRayStart start;
+            keep(i, seedFromRay(mFrame.ray(positions[i].x, positions[i].y), sampler, start), start);
         }
     }
     std::vector<PixelMapping> landings(starts.size());

@@ -26,7 +26,7 @@ glm::dvec2 sampleOffset(int k)
 }
 
 /// Marks direct pixels next to a non-direct one within @a radius pixels and darkens them.
-void drawOutline(core::Image& image, const std::vector<float>& region, int radius)
+void drawOutline(core::Image& image, const core::Channel& region, int radius)
 {
     const int w = image.width(), h = image.height();
     auto isDirect = [&](int x, int y) { return region[std::size_t(y) * w + x] == float(Region::Direct); };
@@ -65,7 +65,7 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
     RenderResult result;
     result.image = core::Image(options.width, options.height);
     result.layers = core::ImageLayers(options.width, options.height);
-    std::vector<std::vector<float>*> layers;
+    std::vector<core::Channel*> layers;
     for (const char* const* name = kLayerNames; *name; ++name) layers.push_back(&result.layers.add(*name));
     const float nan = std::numeric_limits<float>::quiet_NaN();
 

@@ -14,6 +14,15 @@ float distanceToBox(const glm::vec3& p, const glm::vec3& lo, const glm::vec3& hi
     return glm::length(glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f)));
 }
 
+/// Whether the ray from p along d never enters the box again: on some axis p lies beyond the box
+/// and d does not turn back.
+bool leavesBox(const glm::vec3& p, const glm::vec3& d, const glm::vec3& lo, const glm::vec3& hi)
+{
+    for (int a = 0; a < 3; ++a)
+        if ((p[a] > hi[a] && d[a] >= 0.0f) || (p[a] < lo[a] && d[a] <= 0.0f)) return true;
+    return false;
+}
+
 }  // namespace
 
 float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, const glm::vec3& normal,
@@ -38,9 +47,11 @@ float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, cons
         if (phi < 2.0f * voxel && previousSlope < 0.0f && slope > 0.0f && sampler.field().isUnsigned()) return 0.0f;
         previousSlope = slope;
         // Beyond the field's reach phi is clamped; the distance to the surface's box bounds the
-        // true distance from below there, so a ray leaving the object is not darkened by the clamp.
+        // true distance from below there, so a ray leaving the object is not darkened by the clamp,
+        // and it ends once it has left the box for good.
         const float distance = std::max(phi, distanceToBox(p, lo, hi));
         lit = std::min(lit, kSoftness * distance / t);
+        if (leavesBox(p, toLight, lo, hi)) break;  // nothing ahead can shadow it
         t += std::max(distance, 0.5f * voxel);
     }
     return std::clamp(lit, 0.0f, 1.0f);

@@ -133,7 +133,8 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     // The viewer frames the view as the CLI does: the same field of view on the CPU and the GPU.
     const core::Camera camera = render::frameView(scene, core::Camera::fromAngles(90.0, 0.0), *options.method, 1.0);
     const render::RenderResult cpu = render::renderImage(scene, camera, options);
-    const std::vector<float>& cpuRegion = cpu.layers.channel("region");
+    const core::Channel& cpuChannel = cpu.layers.channel("region");
+    const std::vector<float> cpuRegion(cpuChannel.begin(), cpuChannel.end());
 
     const std::string shot = dir.file("gpu.png"), region = dir.file("gpu-region.png");
     const RunResult run = runViewer("'" + source + "' --theta 90 --phi 0 --method " + method + " --width 512 --height 512" +

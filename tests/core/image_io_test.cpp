@@ -100,8 +100,8 @@ TEST(ImageIo, ExrRoundTripsLayersExactlyAndColourAsHalf)
     Image image(5, 3, glm::vec4(0.25f, 0.5f, 2.0f, 1.0f));
     image.at(4, 0) = glm::vec4(0.1f, 0.0f, 0.0f, 0.5f);
     ImageLayers layers(5, 3);
-    std::vector<float>& depth = layers.add("depth", std::numeric_limits<float>::infinity());
-    std::vector<float>& px = layers.add("P.X");
+    core::Channel& depth = layers.add("depth", std::numeric_limits<float>::infinity());
+    core::Channel& px = layers.add("P.X");
     for (std::size_t i = 0; i < depth.size(); ++i) {
         depth[i] = i == 7 ? std::numeric_limits<float>::quiet_NaN() : 1.0f / 3.0f + float(i) * 1e5f;
         px[i] = -float(i) * 0.123456789f;
@@ -111,7 +111,7 @@ TEST(ImageIo, ExrRoundTripsLayersExactlyAndColourAsHalf)
     const std::vector<float> readDepth = readExrChannel(dir.file("layers.exr"), "depth");
     ASSERT_EQ(readDepth.size(), depth.size());
     EXPECT_EQ(std::memcmp(readDepth.data(), depth.data(), depth.size() * sizeof(float)), 0);
-    EXPECT_EQ(readExrChannel(dir.file("layers.exr"), "P.X"), px);
+    EXPECT_EQ(readExrChannel(dir.file("layers.exr"), "P.X"), std::vector<float>(px.begin(), px.end()));
     const std::vector<float> red = readExrChannel(dir.file("layers.exr"), "R");
     EXPECT_EQ(red[0], 0.25f);
     EXPECT_NEAR(red[4], 0.1f, 1e-4f);  // top-right pixel, stored as half
@@ -181,7 +181,7 @@ TEST(ImageIo, RejectsEmptyImagesAndMismatchedLayers)
 TEST(ImageLayers, ValidatesNames)
 {
     ImageLayers layers(3, 2);
-    EXPECT_EQ(layers.add("region", -1.0f), std::vector<float>(6, -1.0f));
+    EXPECT_EQ(layers.add("region", -1.0f), core::Channel(6, -1.0f));
     EXPECT_THROW(layers.add("region"), ValueError);
     EXPECT_THROW(layers.add("A"), ValueError);
     EXPECT_THROW(layers.add(""), ValueError);

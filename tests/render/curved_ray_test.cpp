@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace ivis::render {
@@ -58,6 +59,45 @@ TEST(CurvedRay, HullExitIsFarthestCrossingOfAnalyticHull)
     const float tFar = -b + std::sqrt(b * b - c);
     EXPECT_LT(glm::length(seed - (eye + tFar * direction)), 0.01f);
     EXPECT_FALSE(findHullExit(sampler, eye, glm::normalize(glm::vec3(1.0f, 0.0f, -0.5f)), 0.4f, hullBox(), seed));
+}
+
+// findHullExits clears groups of neighbouring rays with one cone: each ray must still get its own
+// farthest crossing (findHullExit's), for a perspective fan (one origin), parallel rays (an orthographic camera)
+// and groups whose rays point far apart.
+TEST(CurvedRay, HullExitsOfManyRaysAreEachRaysOwn)
+{
+    const auto& fixture = test::sphereScene();
+    auto sampler = fixture.scene->distance().sampler();
+    const glm::vec3 eye(0.0f, 0.0f, 2.5f);
+    std::vector<glm::vec3> origins, directions;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 120; ++x) {
+            const float u = -1.0f + 2.0f * (x + 0.5f) / 120.0f, v = -1.0f + 2.0f * (y + 0.5f) / 120.0f;
+            origins.push_back(eye);  // perspective
+            directions.push_back(glm::normalize(glm::vec3(u, v, -1.0f)));
+            origins.push_back(glm::vec3(2.0f * u, 2.0f * v, 2.5f));  // orthographic
+            directions.push_back(glm::vec3(0.0f, 0.0f, -1.0f));
+        }
+    const std::size_t rows = origins.size();
+    for (std::size_t i = 0; i < rows; i += 7) {  // scattered rays, grouped together
+        origins.push_back(origins[(i * 7919) % rows]);
+        directions.push_back(directions[(i * 7919) % rows]);
+    }
+    std::vector<glm::vec3> seeds(origins.size());
+    std::unique_ptr<bool[]> found(new bool[origins.size()]);
+    findHullExits(sampler, origins.data(), directions.data(), origins.size(), 0.4f, hullBox(), seeds.data(),
+                  found.get());
+    int hits = 0;
+    for (std::size_t i = 0; i < origins.size(); ++i) {
+        glm::vec3 seed;
+        const bool one = findHullExit(sampler, origins[i], directions[i], 0.4f, hullBox(), seed);
+        ASSERT_EQ(found[i], one) << i;
+        if (!one) continue;
+        ++hits;
+        EXPECT_LT(glm::length(seeds[i] - seed), 1e-4f) << i;
+    }
+    EXPECT_GT(hits, 5000);
+    EXPECT_LT(hits, int(origins.size()) - 5000);
 }
 
 TEST(CurvedRay, SmallAlphaFallsRadiallyFromTheSeed)

@@ -119,7 +119,7 @@ TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
             options.width = options.height = kSize;
             options.method = method;
             options.legend = false;
-            const std::vector<float> region = renderImage(scene, camera, options).layers.channel("region");
+            const core::Channel region = renderImage(scene, camera, options).layers.channel("region");
             const core::CameraFrame frame(camera, kSize, kSize);
             const std::unique_ptr<IndirectMap> map = method->indirectMap(scene, frame);
             std::unique_ptr<CurvedRayMap> curved;

@@ -75,7 +75,7 @@ TEST(Renderer, SameResultWithOneAndTwoThreads)
                 << name << ": image differs";
             ASSERT_EQ(one.layers.channels().size(), two.layers.channels().size());
             for (const auto& [layer, values] : one.layers.channels()) {
-                const std::vector<float>& other = two.layers.channel(layer);
+                const core::Channel& other = two.layers.channel(layer);
                 ASSERT_EQ(values.size(), other.size());
                 EXPECT_TRUE(sameBits(values.data(), other.data(), values.size() * sizeof(float)))
                     << name << ": layer " << layer << " differs";
@@ -99,10 +99,10 @@ TEST(Renderer, StatsMatchTheRegionLayer)
             const std::string name = method + " spp " + std::to_string(spp);
             const RenderOptions options = testOptions(fixture.field, method, 48, spp);
             const RenderResult result = renderImage(*fixture.scene, camera, options);
-            const std::vector<float>& region = result.layers.channel("region");
-            const std::vector<float>& triangle = result.layers.channel("triangle");
-            const std::vector<float>& px = result.layers.channel("P.X");
-            const std::vector<float>& depth = result.layers.channel("depth");
+            const core::Channel& region = result.layers.channel("region");
+            const core::Channel& triangle = result.layers.channel("triangle");
+            const core::Channel& px = result.layers.channel("P.X");
+            const core::Channel& depth = result.layers.channel("depth");
             std::size_t counts[3] = {0, 0, 0};
             for (std::size_t i = 0; i < region.size(); ++i) {
                 ASSERT_TRUE(region[i] == 0.0f || region[i] == 1.0f || region[i] == 2.0f) << region[i];
@@ -150,7 +150,7 @@ TEST(Renderer, InverseVisRingSurroundsTheSphere)
     const int size = 96;
     const RenderResult result =
         renderImage(*fixture.scene, core::Camera(), testOptions(fixture.field, "inversevis", size, 1));
-    const std::vector<float>& region = result.layers.channel("region");
+    const core::Channel& region = result.layers.channel("region");
     double maxDirect = 0.0, minIndirect = 1e30, maxIndirect = 0.0;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {

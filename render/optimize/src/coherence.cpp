@@ -29,8 +29,8 @@ Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<
 
 Coherence mappingCoherence(const core::ImageLayers& layers, double maxDistance)
 {
-    const std::vector<float>& region = layers.channel("region");
-    const std::vector<float>&x = layers.channel("P.X"), &y = layers.channel("P.Y"), &z = layers.channel("P.Z");
+    const core::Channel& region = layers.channel("region");
+    const core::Channel &x = layers.channel("P.X"), &y = layers.channel("P.Y"), &z = layers.channel("P.Z");
     std::vector<char> indirect(region.size());
     std::vector<glm::vec3> points(region.size());
     for (std::size_t i = 0; i < region.size(); ++i) {

@@ -4,6 +4,8 @@
 /// @note Colours are premultiplied by alpha (the OpenEXR convention); row 0 is the TOP row.
 #pragma once
 
+#include <ivis/core/huge_page_allocator.h>
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -21,6 +23,11 @@ float srgbFromLinear(float linear);
 
 /// @brief linearFromSrgb applied to each channel.
 glm::vec3 linearFromSrgb(const glm::vec3& encoded);
+
+/// @brief Storage of an image's pixels (large ones on huge pages).
+using PixelBuffer = std::vector<glm::vec4, HugePageAllocator<glm::vec4>>;
+/// @brief Storage of one layer channel (large ones on huge pages).
+using Channel = std::vector<float, HugePageAllocator<float>>;
 
 /// @brief A width x height grid of linear-light RGBA pixels (premultiplied alpha), row 0 at the top.
 class Image {
@@ -47,14 +54,14 @@ public:
     void blendOver(int x, int y, const glm::vec3& color, float opacity = 1.0f);
 
     /// @brief All pixels, row-major from the top row.
-    const std::vector<glm::vec4>& pixels() const { return mPixels; }
+    const PixelBuffer& pixels() const { return mPixels; }
     /// @brief All pixels, row-major from the top row.
-    std::vector<glm::vec4>& pixels() { return mPixels; }
+    PixelBuffer& pixels() { return mPixels; }
 
 private:
     int mWidth = 0;
     int mHeight = 0;
-    std::vector<glm::vec4> mPixels;
+    PixelBuffer mPixels;
 };
 
 /// @brief Extra per-pixel float channels written beside RGBA into an EXR ("depth", "region",
@@ -68,13 +75,13 @@ public:
 
     /// @brief Adds channel @a name with every value set to @a fill and returns it.
     /// @throw ValueError for an empty or duplicate name, or R, G, B, A (those hold the colour)
-    std::vector<float>& add(const std::string& name, float fill = 0.0f);
+    Channel& add(const std::string& name, float fill = 0.0f);
     /// @brief The channel called @a name. @throw ValueError when there is none
-    std::vector<float>& channel(const std::string& name);
+    Channel& channel(const std::string& name);
     /// @brief The channel called @a name. @throw ValueError when there is none
-    const std::vector<float>& channel(const std::string& name) const;
+    const Channel& channel(const std::string& name) const;
     /// @brief All channels, sorted by name.
-    const std::map<std::string, std::vector<float>>& channels() const { return mChannels; }
+    const std::map<std::string, Channel>& channels() const { return mChannels; }
 
     /// @brief Number of columns of every channel.
     int width() const { return mWidth; }
@@ -84,7 +91,7 @@ public:
 private:
     int mWidth = 0;
     int mHeight = 0;
-    std::map<std::string, std::vector<float>> mChannels;
+    std::map<std::string, Channel> mChannels;
 };
 
 }  // namespace ivis::core

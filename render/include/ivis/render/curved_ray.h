@@ -38,6 +38,14 @@ struct CurvedRayEnd {
 bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
                   float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed);
 
+/// @brief findHullExit() of each of @a count rays (unit @a directions) into @a seeds and @a found,
+///        neighbouring rays (in groups of 8) first cleared together: a cone round the group's
+///        central ray is sphere-traced backward by phi minus its radius, and each ray's own search
+///        starts where the cone first comes within a voxel of the hull, or is skipped when the cone
+///        cleared its whole interval (the view rays beside an object mostly miss the hull).
+void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, const glm::vec3* directions,
+                   std::size_t count, float hullOffset, const core::Bounds3& hullBox, glm::vec3* seeds, bool* found);
+
 /// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
 ///        comes within @a hullOffset of it: phi sampled along the ray inside @a hullBox, skipping
 ///        by the 1-Lipschitz bound, then refined by golden-section search.

@@ -122,6 +122,8 @@ public:
 
 private:
     bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// The rest of a start whose seed is set: launch velocity per alpha, alignment, the method's aim.
+    bool aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
 
     const RenderScene& mScene;
     core::CameraFrame mFrame;

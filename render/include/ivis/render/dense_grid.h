@@ -4,13 +4,14 @@
 ///        bend smoothly) and a phi consistent with it.
 #pragma once
 
+#include <ivis/core/huge_page_allocator.h>
+
 #include <openvdb/openvdb.h>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstddef>
-#include <memory>
 
 namespace ivis::render {
 
@@ -33,7 +34,7 @@ private:
     /// Cell origin index and fractional position of p; false when the cell is outside the box.
     bool locate(const glm::vec3& p, std::size_t& base, glm::vec3& t) const;
 
-    std::unique_ptr<glm::vec4[]> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
+    core::HugePageArray<glm::vec4> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
     int mDims[3] = {0, 0, 0};
     glm::vec3 mOrigin{0.0f};  ///< world position of voxel (0,0,0) of the box
     float mVoxelSize = 1.0f;

@@ -11,8 +11,8 @@ namespace ivis::render {
 
 /// @brief Soft shadow factor in [0, 1] (1 = fully lit) toward a directional light: sphere traces
 ///        from @a point (offset two voxels along @a normal) along @a toLight by the distance d =
-///        max(phi, distance to @a surfaceBox), darkening by the closest approach min(k d / t) and
-///        returning 0 when the ray meets the surface.
+///        max(phi, distance to @a surfaceBox), darkening by the closest approach min(k d / t),
+///        returning 0 when the ray meets the surface and ending when it leaves the box for good.
 /// @param normal unit surface normal on the side facing the light
 /// @param toLight unit direction from the surface to the light
 /// @param surfaceBox a box containing the surface (hullBounds(mesh, 0, voxel)): beyond the field's
