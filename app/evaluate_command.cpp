@@ -183,9 +183,10 @@ Command addEvaluateCommand(CLI::App& app)
                     const int resolution = options->optResolutions[k];
                     const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
+                    const auto finalistEvaluator = options->optimization.finalistEvaluator(scene, resolution, range);
                     const optimize::AnnealingResult run = optimize::annealViewpoint(
                         evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
-                        options->optimization.ascentOptions(), ascentEvaluator.get(), &progress);
+                        options->optimization.ascentOptions(), ascentEvaluator.get(), &progress, finalistEvaluator.get());
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
                     entry["ascent_res"][std::to_string(resolution)] =
                         ascentEvaluator ? options->optimization.ascentResolution : resolution;

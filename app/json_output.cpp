@@ -12,13 +12,15 @@ namespace ivis::app {
 
 nlohmann::json visitedViewJson(const optimize::VisitedView& view)
 {
-    return {{"theta", view.thetaDeg},
-            {"phi", view.phiDeg},
-            {"fov_y_deg", view.camera.fovYDeg},
-            {"energy", view.value.energy},
-            {"front_energy", view.value.front},
-            {"accepted", view.accepted},
-            {"params", render::methodToJson(*view.method)}};
+    nlohmann::json json = {{"theta", view.thetaDeg},
+                           {"phi", view.phiDeg},
+                           {"fov_y_deg", view.camera.fovYDeg},
+                           {"energy", view.value.energy},
+                           {"front_energy", view.value.front},
+                           {"accepted", view.accepted},
+                           {"params", render::methodToJson(*view.method)}};
+    if (view.finalValue) json["finalist_energy"] = view.finalValue->energy;
+    return json;
 }
 
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)

@@ -12,7 +12,8 @@
 
 namespace ivis::app {
 
-/// @brief One visited view: angles, field of view, energy, front-only energy, accepted, parameters.
+/// @brief One visited view: angles, field of view, energy, front-only energy, accepted, parameters
+///        and, for a finalist, its energy on the finalists' evaluator.
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
 /// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,

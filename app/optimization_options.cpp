@@ -31,6 +31,15 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "Try this many values of the method's scanned parameter (inversevis: alpha) evenly over its "
                        "bounds before each ascent and start from the best (beyond the paper; default none)")
         ->check(CLI::Range(2, 400));
+    command.add_option("--finalists", finalists,
+                       "Measure this many best annealed views again with --finalist-res rays per side and keep the "
+                       "best there (0 or 1: the annealing's best)")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
+    command.add_option("--finalist-res", finalistResolution,
+                       "Rays per side of the finalists' measurement (none when not above the optimisation's)")
+        ->check(CLI::Range(4, 8192))
+        ->capture_default_str();
 }
 
 optimize::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
@@ -59,6 +68,7 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg
     options.steps = steps;
     options.cooling = cooling;
     options.seed = seed;
+    options.finalists = finalists;
     options.startThetaDeg = thetaDeg;
     options.startPhiDeg = phiDeg;
     options.fovYDeg = fovYDeg;
@@ -82,6 +92,14 @@ std::unique_ptr<optimize::EnergyEvaluator> OptimizationOptions::ascentEvaluator(
 {
     if (ascentResolution <= 0 || ascentResolution >= resolution) return nullptr;
     return std::make_unique<optimize::EnergyEvaluator>(scene, energyOptions(ascentResolution, range));
+}
+
+std::unique_ptr<optimize::EnergyEvaluator> OptimizationOptions::finalistEvaluator(const render::RenderScene& scene,
+                                                                                int resolution,
+                                                                                const core::ScalarRange& range) const
+{
+    if (finalists <= 1 || finalistResolution <= resolution) return nullptr;
+    return std::make_unique<optimize::EnergyEvaluator>(scene, energyOptions(finalistResolution, range));
 }
 
 }  // namespace ivis::app

@@ -27,9 +27,12 @@ struct OptimizationOptions {
     int ascentIterations = 3;
     int ascentResolution = 0;           ///< rays per side of the per-view ascent; 0: the optimisation's
     int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
+    int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
+    int finalistResolution = 300;       ///< rays per side of that measurement
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
-    ///        --cooling, --gradient, --ascent-iterations, --ascent-res, --alpha-scan.
+    ///        --cooling, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
+    ///        --finalist-res.
     void addTo(CLI::App& command);
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
@@ -48,6 +51,10 @@ struct OptimizationOptions {
     ///        @a resolution (annealViewpoint's ascentEvaluator), else null.
     std::unique_ptr<optimize::EnergyEvaluator> ascentEvaluator(const render::RenderScene& scene, int resolution,
                                                              const core::ScalarRange& range) const;
+    /// @brief The evaluator that ranks the finalists (annealViewpoint's finalistEvaluator) when
+    ///        --finalists is above 1 and --finalist-res above @a resolution, else null.
+    std::unique_ptr<optimize::EnergyEvaluator> finalistEvaluator(const render::RenderScene& scene, int resolution,
+                                                               const core::ScalarRange& range) const;
 };
 
 }  // namespace ivis::app

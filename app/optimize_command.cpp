@@ -119,7 +119,8 @@ Command addOptimizeCommand(CLI::App& app)
             evaluator, renderOptions.method,
             options->optimization.annealingOptions(startAngles.x, startAngles.y,
                                                    options->view.framed() ? std::nullopt : std::optional(start.fovYDeg)),
-            options->optimization.ascentOptions(), ascentEvaluator.get(), &progress);
+            options->optimization.ascentOptions(), ascentEvaluator.get(), &progress,
+            options->optimization.finalistEvaluator(scene, options->optResolution, importanceRange).get());
         const optimize::VisitedView& best = result.bestView();
 
         // The best view at display resolution, framed for the picture's size: picture, camera and energy.

@@ -82,7 +82,8 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
             evaluator, start.method,
             settings.optimization.annealingOptions(angles.x, angles.y,
                                                    settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg)),
-            settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter);
+            settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
+            settings.optimization.finalistEvaluator(scene, settings.resolution, settings.importanceRange).get());
         const optimize::VisitedView& best = annealing.bestView();
         OptimiserResult result;
         result.state.camera = best.camera;

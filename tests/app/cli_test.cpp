@@ -388,15 +388,24 @@ TEST_F(Cli, DegenerateTrianglesAreDroppedWithACount)
 TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
 {
     const CliResult result = runCli("optimize scene:sphere --volume-res 64 --method inversevis-adaptive --opt-res 24 "
-                                    "--steps 3 --res 48x48 --cache-dir " + quoted(output("")) + " -o " +
+                                    "--steps 3 --finalists 3 --finalist-res 48 --res 48x48 --cache-dir " + quoted(output("")) + " -o " +
                                     quoted(output("best.png")) + " --json " + quoted(output("best.json")) +
                                     " --plot " + quoted(output("views.png")) + " --exr " + quoted(output("best.exr")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("best.json")));
     ASSERT_EQ(report.at("visited").size(), 4u);  // the start view and 3 proposals
-    double best = 0.0;
-    for (const auto& view : report.at("visited")) best = std::max(best, view.at("energy").get<double>());
-    EXPECT_EQ(report.at("energy_value").get<double>(), best);
+    // The best view is the finalist (one of the 3 of highest energy) of highest finalist energy.
+    const nlohmann::json* best = nullptr;
+    int finalists = 0;
+    for (const auto& view : report.at("visited")) {
+        if (!view.contains("finalist_energy")) continue;
+        ++finalists;
+        if (!best || view.at("finalist_energy").get<double>() > best->at("finalist_energy").get<double>()) best = &view;
+    }
+    EXPECT_EQ(finalists, 3);
+    ASSERT_NE(best, nullptr);
+    EXPECT_EQ(report.at("energy_value").get<double>(), best->at("energy").get<double>());
+    EXPECT_EQ(report.at("theta"), best->at("theta"));
     EXPECT_EQ(report.at("params").at("method"), "inversevis-adaptive");
     EXPECT_EQ(report.at("params").at("alpha_profile").size(), 3u);
     EXPECT_GT(report.at("display_energy_value").get<double>(), report.at("display_front_energy_value").get<double>());

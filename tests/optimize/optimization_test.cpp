@@ -337,5 +337,39 @@ TEST(ViewpointAnnealing, CoarseAscentIsMeasuredOnTheFullEnergyAndTheWinnerAscend
     }
 }
 
+TEST(ViewpointAnnealing, FinalistsAreTheBestViewsAndTheFinerEnergyPicksAmongThem)
+{
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(8));
+    const EnergyEvaluator finer(*fixture.scene, visibilityOptions(64));
+    AnnealingOptions options;
+    options.steps = 12;
+    const MethodPtr start = makeMethod("neugebauer");  // nothing optimised: the test is about the view search
+    const AnnealingResult plain = annealViewpoint(evaluator, start, options);
+    options.finalists = 4;
+    const AnnealingResult run = annealViewpoint(evaluator, start, options, {}, nullptr, nullptr, &finer);
+    ASSERT_EQ(run.visited.size(), plain.visited.size());
+    double lowestFinalist = 1.0, highestOther = 0.0, bestFinal = 0.0;
+    int finalists = 0;
+    for (std::size_t i = 0; i < run.visited.size(); ++i) {
+        const VisitedView& view = run.visited[i];
+        EXPECT_EQ(view.value.energy, plain.visited[i].value.energy) << "the annealing itself is unchanged";
+        if (!view.finalValue) {
+            highestOther = std::max(highestOther, view.value.energy);
+            continue;
+        }
+        ++finalists;
+        lowestFinalist = std::min(lowestFinalist, view.value.energy);
+        EXPECT_EQ(view.finalValue->energy, finer.evaluate(view.camera, view.method).energy);
+        bestFinal = std::max(bestFinal, view.finalValue->energy);
+    }
+    EXPECT_EQ(finalists, 4);
+    EXPECT_GE(lowestFinalist, highestOther) << "the finalists are the views of highest energy";
+    ASSERT_TRUE(run.bestView().finalValue);
+    EXPECT_EQ(run.bestView().finalValue->energy, bestFinal);
+    EXPECT_GT(bestFinal, finer.evaluate(plain.bestView().camera, plain.bestView().method).energy)
+        << "on 8 rays per side the annealing's best is not the best of its finalists on 64";
+}
+
 }  // namespace
 }  // namespace ivis::optimize

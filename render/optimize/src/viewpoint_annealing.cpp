@@ -31,6 +31,25 @@ void wrapAngles(double& theta, double& phi)
     phi = std::remainder(phi, 360.0);
 }
 
+/// Measures the @a count visited views of highest energy on @a finalist and makes the best there
+/// (the higher energy breaking ties) the result's best.
+void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvaluator& finalist)
+{
+    std::vector<std::size_t> order(result.visited.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t kept = std::min(order.size(), std::size_t(count));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return result.visited[a].value.energy > result.visited[b].value.energy;
+    });
+    result.best = order.front();
+    for (std::size_t rank = 0; rank < kept; ++rank) {
+        VisitedView& view = result.visited[order[rank]];
+        view.finalValue = finalist.evaluate(view.camera, view.method);
+        ++result.evaluations;
+        if (view.finalValue->energy > result.bestView().finalValue->energy) result.best = order[rank];
+    }
+}
+
 }  // namespace
 
 bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw)
@@ -40,7 +59,8 @@ bool acceptsProposal(double gain, double temperature, double acceptanceScale, do
 
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options, const AscentOptions& ascent,
-                                const EnergyEvaluator* ascentEvaluator, core::Interrupter* interrupter)
+                                const EnergyEvaluator* ascentEvaluator, core::Interrupter* interrupter,
+                                const EnergyEvaluator* finalistEvaluator)
 {
     if (options.steps < 0 || !(options.cooling > 0.0 && options.cooling <= 1.0) || !(options.startTemperature > 0.0))
         throw ValueError("annealing needs steps >= 0, 0 < cooling <= 1 and a positive start temperature");
@@ -97,6 +117,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         if (interrupter && interrupter->wasInterrupted(100 * (step + 1) / std::max(1, options.steps)))
             throw Cancelled("viewpoint annealing cancelled");
     }
+    if (finalistEvaluator && options.finalists > 1) chooseAmongFinalists(result, options.finalists, *finalistEvaluator);
     if (ascentEvaluator) {  // the winner's parameters, ascended on the full energy
         VisitedView& best = result.visited[result.best];
         const AscentResult polished = optimizeParameters(evaluator, best.camera, best.method, ascent, interrupter);

@@ -29,6 +29,7 @@ struct AnnealingOptions {
     double startPhiDeg = 0.0;
     std::optional<double> fovYDeg;  ///< a fixed vertical field of view; empty: each view framed
     std::uint64_t seed = 1;
+    int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
 };
 
 /// @brief One evaluated camera position.
@@ -39,6 +40,7 @@ struct VisitedView {
     EnergyValue value;
     render::MethodPtr method;  ///< the method with the parameters optimised at this view
     bool accepted = false;
+    std::optional<EnergyValue> finalValue;  ///< its energy on the finalist evaluator (finalists only)
 };
 
 /// @brief Every visited view (the start first) and the best one.
@@ -64,10 +66,14 @@ bool acceptsProposal(double gain, double temperature, double acceptanceScale, do
 /// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended
 ///        on it and only then measured on @a evaluator, and the best view's parameters are
 ///        ascended once more on @a evaluator; when null everything uses @a evaluator.
+/// @param finalistEvaluator when given (typically more rays) and AnnealingOptions::finalists > 1,
+///        the best view is the one of the finalists (the visited views of highest energy) with the
+///        highest energy on it: an energy measured on few rays ranks close views only roughly.
 /// @throw Cancelled when interrupted
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options = {}, const AscentOptions& ascent = {},
                                 const EnergyEvaluator* ascentEvaluator = nullptr,
-                                core::Interrupter* interrupter = nullptr);
+                                core::Interrupter* interrupter = nullptr,
+                                const EnergyEvaluator* finalistEvaluator = nullptr);
 
 }  // namespace ivis::optimize
