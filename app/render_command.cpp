@@ -34,6 +34,7 @@ Command addRenderCommand(CLI::App& app)
         std::string cameraOut;
         std::string legendOnly;
         std::string viewOut;
+        std::string tearMap;
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
@@ -62,6 +63,9 @@ Command addRenderCommand(CLI::App& app)
                       "Also measure what the picture shows (METHOD.md: surface visibility on the 200^3 grid, "
                       "paper-literal, front-only, with a scalar the hot-spot reveal) into --stats-json and the log; "
                       "traces the method again with the picture's height in rays per side");
+    command->add_option("--tear-map", options->tearMap,
+                        "Also write a PNG of the picture in grey with its tears in red: the indirect pixels whose "
+                        "neighbour's surface point lies further than the coherence measure's 0.1 (one picture only)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
@@ -87,7 +91,8 @@ Command addRenderCommand(CLI::App& app)
 
     return {command, [options] {
         for (const std::string& path :
-             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut})
+             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut,
+              options->tearMap})
             if (!path.empty()) checkOutputFolder(path);
         if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
         if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
@@ -106,6 +111,8 @@ Command addRenderCommand(CLI::App& app)
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));
         if (core::isSeries(options->sources, options->mesh.load)) {
+            if (!options->tearMap.empty())
+                throw InputError("--tear-map: a series has one picture per step; render the step alone");
             core::SurfaceSeries series(options->sources, options->mesh.load);
             SeriesRenderRequest request;
             request.method = options->view.renderOptions().method;
@@ -172,7 +179,9 @@ Command addRenderCommand(CLI::App& app)
         if (s.nanPixels > 0)
             core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
         const glm::dvec2 angles = camera.angles();
-        const double coherence = optimize::mappingCoherence(result.layers).value();
+        std::vector<char> torn;
+        const double coherence = optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, &torn).value();
+        if (!options->tearMap.empty()) core::writePng(optimize::tearMap(result.image, torn), options->tearMap, false);
         nlohmann::json stats = {{"seconds", s.seconds},
                                       {"width", renderOptions.width},
                                       {"height", renderOptions.height},

@@ -445,6 +445,9 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
     expectBadInput(test::runCli(common + " --frames 7:9 -o " + quoted(output("bad.png"))), {"the series has 5 steps"});
     expectBadInput(test::runCli("render " + quoted(pvd()) + " --frames 0:1 -o " + quoted(output("bad.png"))),
                    {"--frames: every job must use one camera"});
+    expectBadInput(test::runCli(common + " --tear-map " + quoted(output("tears.png")) + " -o " + quoted(output("bad.png"))),
+                   {"--tear-map: a series has one picture per step"});
+    EXPECT_FALSE(std::filesystem::exists(output("tears.png")));
 }
 
 }  // namespace

@@ -444,6 +444,27 @@ TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
     EXPECT_LE(stats.at("coherence").get<double>(), 1.0);
 }
 
+TEST_F(Cli, RenderTearMapMarksTheTornPixelsInRed)
+{
+    const CliResult result = runCli(render("scene:vessel-tree", "--method inversevis-adaptive --stats-json " +
+                                                                 quoted(output("s.json")) + " --tear-map " +
+                                                                 quoted(output("tears.png"))));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const double coherence = nlohmann::json::parse(std::ifstream(output("s.json"))).at("coherence").get<double>();
+    ASSERT_LT(coherence, 1.0) << "the adaptive picture of the tree tears, or the test means nothing";
+    const core::Image map = core::readPng(output("tears.png"));
+    ASSERT_EQ(map.width(), 32) << "the picture's size, without the colour bar's margin";
+    ASSERT_EQ(map.height(), 32);
+    std::size_t red = 0;
+    for (int y = 0; y < map.height(); ++y)
+        for (int x = 0; x < map.width(); ++x) {
+            const glm::vec4 c = map.at(x, y);
+            if (c.r > 0.99f && c.g < 0.01f && c.b < 0.01f) ++red;
+            else EXPECT_TRUE(c.r == c.g && c.g == c.b) << "grey elsewhere, at " << x << ", " << y;
+        }
+    EXPECT_GT(red, 0u);
+}
+
 // render --measure measures a picture as optimize measures its best view: rendering optimize's view
 // file gives the very figures optimize reported, and the even-spread bound of as many points.
 TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)

@@ -1,6 +1,7 @@
 // Mapping coherence on hand-made P layers with known tears, and on a render's layers.
 #include "render/scene_fixture.h"
 
+#include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
@@ -35,7 +36,23 @@ TEST(MappingCoherence, CountsTheTornPairsOfAHandMadeLayer)
     points[0] = glm::vec3(0.0f, 0.0f, 0.09f);  // within 0.1 of its neighbours (0.01, 0, 0) and (0, 0.02, 0)
     EXPECT_EQ(mappingCoherence(indirect, points, width, height).coherent, c.coherent);
     points[0] = glm::vec3(0.0f, 0.0f, 0.2f);  // now beyond: two more torn pairs
-    EXPECT_EQ(mappingCoherence(indirect, points, width, height).coherent, c.coherent - 2u);
+    std::vector<char> torn;
+    EXPECT_EQ(mappingCoherence(indirect, points, width, height, kCoherenceDistance, &torn).coherent, c.coherent - 2u);
+    // The tears' pixels: columns 1 and 2 of every row, pixel 0 and its two neighbours.
+    ASSERT_EQ(torn.size(), std::size_t(width * height));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const bool expected = x == 1 || x == 2 || (y == 0 && x == 0) || (y == 1 && x == 0);
+            EXPECT_EQ(bool(torn[y * width + x]), expected) << x << ", " << y;
+        }
+    // The tear map shows those pixels red and the others grey.
+    const core::Image picture(width, height, glm::vec4(0.0f, 0.5f, 1.0f, 1.0f));
+    const core::Image map = tearMap(picture, torn);
+    EXPECT_EQ(map.at(1, 3), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+    const glm::vec4 grey = map.at(3, 3);
+    EXPECT_EQ(grey.r, grey.g);
+    EXPECT_EQ(grey.g, grey.b);
+    EXPECT_THROW(tearMap(picture, std::vector<char>(3, 0)), ValueError);
 }
 
 TEST(MappingCoherence, OfARenderEqualsTheMeasureOfItsView)

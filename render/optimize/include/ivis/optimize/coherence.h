@@ -28,12 +28,19 @@ struct Coherence {
 inline constexpr double kCoherenceDistance = 0.1;
 
 /// @brief The measure over a P layer: @a indirect marks the landed indirect pixels and @a points
-///        their surface points, both width x height in row order.
+///        their surface points, both width x height in row order. @a torn, when given, receives
+///        width x height marks of the pixels in a pair that is not coherent (the tears).
 Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<glm::vec3>& points, int width,
-                           int height, double maxDistance = kCoherenceDistance);
+                           int height, double maxDistance = kCoherenceDistance, std::vector<char>* torn = nullptr);
 
-/// @brief The measure over a render's layers ("region" and "P.X", "P.Y", "P.Z", as renderImage writes them).
-Coherence mappingCoherence(const core::ImageLayers& layers, double maxDistance = kCoherenceDistance);
+/// @brief The measure over a render's layers ("region" and "P.X", "P.Y", "P.Z", as renderImage
+///        writes them); @a torn as above.
+Coherence mappingCoherence(const core::ImageLayers& layers, double maxDistance = kCoherenceDistance,
+                           std::vector<char>* torn = nullptr);
+
+/// @brief @a picture in grey with the pixels of @a torn (mappingCoherence's marks) in red: where a
+///        picture tears.
+core::Image tearMap(const core::Image& picture, const std::vector<char>& torn);
 
 /// @brief The measure of @a method's picture from @a camera at @a resolution^2 pixel centres.
 Coherence measureCoherence(const render::RenderScene& scene, const core::Camera& camera,
