@@ -7,8 +7,10 @@
 namespace ivis::render {
 namespace {
 
-/// Smoothing passes over the vertices' triangles.
-constexpr int kSmoothingPasses = 2;
+/// Smoothing passes over the vertices' triangles: at sharp edges the vertex normals lean to one face
+/// or the other and the one-ray thickness jumps from vertex to vertex (by up to 0.2 on Neptune's
+/// pedestal after 2 passes, 0.02 after 32).
+constexpr int kSmoothingPasses = 32;
 
 /// Each vertex gets the mean over its triangles of their vertices' mean value.
 std::vector<float> smoothOverTriangles(const core::TriangleMesh& mesh, const std::vector<float>& values)
