@@ -179,8 +179,10 @@ Command addRenderCommand(CLI::App& app)
         if (s.nanPixels > 0)
             core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
         const glm::dvec2 angles = camera.angles();
-        std::vector<char> torn;
-        const double coherence = optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, &torn).value();
+        std::vector<char> torn;  // marked only for a tear map
+        const double coherence =
+            optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, options->tearMap.empty() ? nullptr : &torn)
+                .value();
         if (!options->tearMap.empty()) core::writePng(optimize::tearMap(result.image, torn), options->tearMap, false);
         nlohmann::json stats = {{"seconds", s.seconds},
                                       {"width", renderOptions.width},

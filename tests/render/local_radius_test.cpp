@@ -1,5 +1,6 @@
 // vertexLocalRadii against shapes whose thickness is known: a unit sphere (radius 1 everywhere) and
-// a torus (tube radius 0.3), and the cap where the inward ray leaves through an opening.
+// a torus (tube radius 0.3), the cap where the inward ray leaves through an opening, and its
+// smoothness on a real mesh with sharp edges (Neptune).
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/core/triangle_bvh.h>

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 namespace ivis::optimize {
@@ -36,7 +37,7 @@ void wrapAngles(double& theta, double& phi)
 void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvaluator& finalist)
 {
     std::vector<std::size_t> order(result.visited.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::iota(order.begin(), order.end(), std::size_t(0));
     const std::size_t kept = std::min(order.size(), std::size_t(count));
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return result.visited[a].value.energy > result.visited[b].value.energy;
