@@ -184,9 +184,11 @@ Command addEvaluateCommand(CLI::App& app)
                     const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const auto finalistEvaluator = options->optimization.finalistEvaluator(scene, resolution, range);
-                    const optimize::AnnealingResult run = optimize::annealViewpoint(
-                        evaluator, start, options->optimization.annealingOptions(90.0, 0.0, options->fovYDeg),
-                        options->optimization.ascentOptions(), ascentEvaluator.get(), &progress, finalistEvaluator.get());
+                    const optimize::AnnealingOptions annealing = options->optimization.annealingOptions(
+                        90.0, 0.0, options->fovYDeg, options->displayResolution);
+                    const optimize::AnnealingResult run =
+                        optimize::annealViewpoint(evaluator, start, annealing, options->optimization.ascentOptions(),
+                                                  ascentEvaluator.get(), &progress, finalistEvaluator.get());
                     entry["seconds"][std::to_string(resolution)] = run.seconds;
                     entry["ascent_res"][std::to_string(resolution)] =
                         ascentEvaluator ? options->optimization.ascentResolution : resolution;
@@ -197,6 +199,8 @@ Command addEvaluateCommand(CLI::App& app)
                                                                           {"fov_y_deg", optimum.camera.fovYDeg},
                                                                           {"params", render::methodToJson(*optimum.method)},
                                                                           {"visibility", measured.energy}};
+                    if (run.readable)
+                        entry["by_resolution"][std::to_string(resolution)]["readability"] = readableSettingJson(*run.readable);
                     if (k == 0) {
                         best = optimum;
                     } else {

@@ -23,6 +23,15 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
     return json;
 }
 
+nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
+{
+    const std::string& parameter = setting.method->info().readabilityParameter;
+    return {{"parameter", parameter},
+            {"value", setting.method->values().at(parameter).at(0)},
+            {"estimated_coherence", setting.coherence.value()},
+            {"sampled_pairs", setting.coherence.pairs}};
+}
+
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)
 {
     nlohmann::json json = {{"visibility", value.energy},

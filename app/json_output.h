@@ -16,6 +16,10 @@ namespace ivis::app {
 ///        and, for a finalist, its energy on the finalists' evaluator.
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
+/// @brief The readability step's choice (optimize::loosestReadable): parameter, value, its
+///        estimated coherence and the sampled pairs it was estimated on.
+nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting);
+
 /// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,
 ///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
 ///        direct, per_region).

@@ -40,6 +40,12 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "Rays per side of the finalists' measurement (none when not above the optimisation's)")
         ->check(CLI::Range(4, 8192))
         ->capture_default_str();
+    command.add_option("--min-coherence", minCoherence,
+                       "Readability step: at the best view, loosen the method's rule for drawing rays "
+                       "(inversevis-wrap: --stable-shift, up to 8 times) as far as the picture keeps an estimated "
+                       "mapping coherence of at least this (beyond the paper); 0: keep the rule as given")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
 }
 
 optimize::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
@@ -62,7 +68,8 @@ optimize::EnergyOptions OptimizationOptions::measureOptions(int resolution, cons
 }
 
 optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg,
-                                                                 std::optional<double> fovYDeg) const
+                                                                 std::optional<double> fovYDeg,
+                                                                 int pictureResolution) const
 {
     optimize::AnnealingOptions options;
     options.steps = steps;
@@ -72,6 +79,8 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg
     options.startThetaDeg = thetaDeg;
     options.startPhiDeg = phiDeg;
     options.fovYDeg = fovYDeg;
+    options.readableResolution = minCoherence > 0.0 ? pictureResolution : 0;
+    options.minCoherence = minCoherence;
     return options;
 }
 

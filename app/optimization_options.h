@@ -29,10 +29,11 @@ struct OptimizationOptions {
     int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
     int finalistResolution = 300;       ///< rays per side of that measurement
+    double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
-    ///        --finalist-res.
+    ///        --finalist-res, --min-coherence.
     void addTo(CLI::App& command);
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
@@ -43,8 +44,10 @@ struct OptimizationOptions {
     ///        --visibility-res (the paper's 200), whatever the optimisation used.
     optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at (theta, phi) with the fixed field of view @a fovYDeg
-    ///        (none: each view framed for its method).
-    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, std::optional<double> fovYDeg) const;
+    ///        (none: each view framed for its method); the readability step keeps the coherence of
+    ///        a picture of @a pictureResolution pixels per side.
+    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, std::optional<double> fovYDeg,
+                                                int pictureResolution) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).
     optimize::AscentOptions ascentOptions() const;
     /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below

@@ -118,7 +118,8 @@ Command addOptimizeCommand(CLI::App& app)
         const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
             options->optimization.annealingOptions(startAngles.x, startAngles.y,
-                                                   options->view.framed() ? std::nullopt : std::optional(start.fovYDeg)),
+                                                   options->view.framed() ? std::nullopt : std::optional(start.fovYDeg),
+                                                   renderOptions.height),
             options->optimization.ascentOptions(), ascentEvaluator.get(), &progress,
             options->optimization.finalistEvaluator(scene, options->optResolution, importanceRange).get());
         const optimize::VisitedView& best = result.bestView();
@@ -198,6 +199,13 @@ Command addOptimizeCommand(CLI::App& app)
             {"output", options->output},
             {"visited", visited}};
         if (isSeries) json["series"] = seriesStats;
+        if (result.readable) {
+            json["readability"] = readableSettingJson(*result.readable);
+            const nlohmann::json& choice = json["readability"];
+            core::logInfo("readability step: " + choice["parameter"].get<std::string>() + " " +
+                          choice["value"].dump() + ", estimated coherence " + choice["estimated_coherence"].dump() +
+                          " on " + choice["sampled_pairs"].dump() + " sampled pairs");
+        }
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +

@@ -1,5 +1,6 @@
 #include "view_optimiser.h"
 
+#include <ivis/optimize/coherence.h>
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/viewpoint_annealing.h>
@@ -81,7 +82,8 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
         const optimize::AnnealingResult annealing = optimize::annealViewpoint(
             evaluator, start.method,
             settings.optimization.annealingOptions(angles.x, angles.y,
-                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg)),
+                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg),
+                                                   optimize::kCoherenceResolution),
             settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
             settings.optimization.finalistEvaluator(scene, settings.resolution, settings.importanceRange).get());
         const optimize::VisitedView& best = annealing.bestView();

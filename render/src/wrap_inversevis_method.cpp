@@ -63,8 +63,11 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
         return end.landed;
     };
     glm::vec3 slower, here, faster;
-    return landingAt(start.alpha, here) && landingAt(start.alpha - kSpeedProbe, slower) &&
-           landingAt(start.alpha + kSpeedProbe, faster) && glm::length(slower + faster - 2.0f * here) <= mLaunch.stableShift;
+    if (!(landingAt(start.alpha, here) && landingAt(start.alpha - kSpeedProbe, slower) &&
+          landingAt(start.alpha + kSpeedProbe, faster)))
+        return false;
+    start.bend = glm::length(slower + faster - 2.0f * here);
+    return start.bend <= mLaunch.stableShift;
 }
 
 glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
@@ -102,6 +105,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
              {defaults.stableShift}, 0.0001f, 10.0f}};
         for (const ParameterSpec& spec : curvedRaySpecs()) i.parameters.push_back(spec);
         i.scannedParameter = "wrap_speed";
+        i.readabilityParameter = "stable_shift";
         i.tangentLinearGradient = true;
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;

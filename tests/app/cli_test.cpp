@@ -430,6 +430,33 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     EXPECT_EQ(core::readExrChannel(output("best.exr"), "R"), core::readExrChannel(output("again.exr"), "R"));
 }
 
+TEST_F(Cli, OptimizeLoosensTheWrapsRuleAsFarAsThePictureStaysReadable)
+{
+    // A 64 x 64 picture of the tree tears far more than a 1000 x 1000 one (coherence about 0.6):
+    // asking for 0.55 lets the rule loosen a little, 0 leaves it as given.
+    auto optimizeTree = [&](const std::string& minCoherence, const std::string& json) {
+        return runCli("optimize scene:vessel-tree --volume-res 64 --method inversevis-wrap --opt-res 24 --steps 1 "
+                      "--finalists 0 --res 64x64 --min-coherence " + minCoherence + " --cache-dir " + quoted(output("")) +
+                      " -o " + quoted(output("best.png")) + " --json " + quoted(output(json)));
+    };
+    ASSERT_EQ(optimizeTree("0.55", "readable.json").status, 0);
+    const nlohmann::json readable = nlohmann::json::parse(std::ifstream(output("readable.json")));
+    const nlohmann::json& choice = readable.at("readability");
+    EXPECT_EQ(choice.at("parameter"), "stable_shift");
+    EXPECT_EQ(choice.at("value"), readable.at("params").at("stable_shift")) << "the best view's rule is the chosen one";
+    EXPECT_GT(choice.at("value").get<double>(), 0.0051) << "loosened";
+    EXPECT_GE(choice.at("estimated_coherence").get<double>(), 0.55);
+    // Below 200 pixels per side every pair is sampled: the estimate is the picture's measure.
+    EXPECT_DOUBLE_EQ(choice.at("estimated_coherence").get<double>(), readable.at("measures").at("coherence").get<double>());
+
+    ASSERT_EQ(optimizeTree("0", "given.json").status, 0);
+    const nlohmann::json given = nlohmann::json::parse(std::ifstream(output("given.json")));
+    EXPECT_FALSE(given.contains("readability")) << "0: no readability step";
+    EXPECT_FLOAT_EQ(given.at("params").at("stable_shift").get<float>(), 0.005f);
+    EXPECT_LT(given.at("measures").at("visibility").get<double>(), readable.at("measures").at("visibility").get<double>())
+        << "the looser rule shows more";
+}
+
 TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
 {
     const CliResult result = runCli(render("scene:vessel-tree", "--method inversevis-adaptive --stats-json " +

@@ -38,6 +38,12 @@ TEST(MappingCoherence, CountsTheTornPairsOfAHandMadeLayer)
     points[0] = glm::vec3(0.0f, 0.0f, 0.2f);  // now beyond: two more torn pairs
     std::vector<char> torn;
     EXPECT_EQ(mappingCoherence(indirect, points, width, height, kCoherenceDistance, &torn).coherent, c.coherent - 2u);
+    // With stride 2 only pixels (0|2|4, 0|2) and their right and lower neighbours count: 8 pairs
+    // (column 4 is background), 2 of them torn by pixel 0, none across columns 1|2.
+    const Coherence sampled = mappingCoherence(indirect, points, width, height, kCoherenceDistance, nullptr, 2);
+    EXPECT_EQ(sampled.pairs, 8u);
+    EXPECT_EQ(sampled.coherent, 6u);
+    EXPECT_THROW(mappingCoherence(indirect, points, width, height, kCoherenceDistance, nullptr, 0), ValueError);
     // The tears' pixels: columns 1 and 2 of every row, pixel 0 and its two neighbours.
     ASSERT_EQ(torn.size(), std::size_t(width * height));
     for (int y = 0; y < height; ++y)

@@ -9,8 +9,9 @@
 namespace ivis::optimize {
 
 Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<glm::vec3>& points, int width,
-                           int height, double maxDistance, std::vector<char>* torn)
+                           int height, double maxDistance, std::vector<char>* torn, int stride)
 {
+    if (stride < 1) throw ValueError("coherence needs a positive stride");
     Coherence result;
     const double limitSquared = maxDistance * maxDistance;
     if (torn) torn->assign(indirect.size(), 0);
@@ -24,8 +25,8 @@ Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<
             (*torn)[a] = (*torn)[b] = 1;
         }
     };
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < height; y += stride)
+        for (int x = 0; x < width; x += stride) {
             const std::size_t i = std::size_t(y) * width + x;
             if (x + 1 < width) count(i, i + 1);
             if (y + 1 < height) count(i, i + std::size_t(width));

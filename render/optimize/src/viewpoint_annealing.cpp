@@ -125,6 +125,17 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         result.evaluations += polished.evaluations;
         measured(best, polished, best.camera, true);
     }
+    if (options.readableResolution > 0 && !start->info().readabilityParameter.empty()) {
+        VisitedView& best = result.visited[result.best];
+        result.readable = loosestReadable(evaluator.scene(), best.camera, best.method, options.readableResolution,
+                                          options.minCoherence);
+        if (result.readable->method != best.method) {
+            best.method = result.readable->method;
+            best.camera = cameraAt(best.thetaDeg, best.phiDeg, *best.method);
+            best.value = evaluator.evaluate(best.camera, best.method);
+            ++result.evaluations;
+        }
+    }
     if (interrupter) interrupter->end();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
     return result;

@@ -18,6 +18,9 @@ struct CurvedRayStart {
     float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
     float ring = 0.0f;             ///< closest-approach seeds: phi at the seed / phi0 (0 at the silhouette, 1 at the hull); aim() may rescale it
     float alpha = 0.0f;            ///< launch speed the method chose for this ray (CurvedRayMethod::aim)
+    float bend = 0.0f;             ///< how far the landing strays from a smooth function of the launch, where
+                                   ///< the method measures it (the wrap's stability rule); rays bending more
+                                   ///< than its readability parameter are not drawn (MethodInfo::readabilityParameter)
 };
 
 /// @brief Where on its view ray a curved ray starts.

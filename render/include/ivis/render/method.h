@@ -64,6 +64,10 @@ struct MethodInfo {
     /// A one-component optimised parameter whose range the ascent may scan before it starts
     /// (AscentOptions::scanSamples); empty: none.
     std::string scannedParameter;
+    /// A one-component parameter that trades completeness for coherence, larger values drawing
+    /// more rays (the wrap's stable_shift): the optimisation's readability step loosens it as far
+    /// as the picture stays coherent (optimize/readability.h); empty: none.
+    std::string readabilityParameter;
     /// Creates the method from complete, validated values.
     std::function<std::shared_ptr<const Method>(const ParameterValues&)> create;
 

@@ -26,12 +26,18 @@ struct Coherence {
 
 /// @brief Neighbours closer than this count as coherent (normalised units).
 inline constexpr double kCoherenceDistance = 0.1;
+/// @brief Pixels per side of the picture the measure is defined on (METHOD.md).
+inline constexpr int kCoherenceResolution = 1000;
 
 /// @brief The measure over a P layer: @a indirect marks the landed indirect pixels and @a points
 ///        their surface points, both width x height in row order. @a torn, when given, receives
-///        width x height marks of the pixels in a pair that is not coherent (the tears).
+///        width x height marks of the pixels in a pair that is not coherent (the tears). With
+///        @a stride above 1, an estimate from a sample of the pairs: the pixels of every stride-th
+///        row and column with their right and lower neighbours (only those pixels are read).
+/// @throw ValueError for a stride below 1
 Coherence mappingCoherence(const std::vector<char>& indirect, const std::vector<glm::vec3>& points, int width,
-                           int height, double maxDistance = kCoherenceDistance, std::vector<char>* torn = nullptr);
+                           int height, double maxDistance = kCoherenceDistance, std::vector<char>* torn = nullptr,
+                           int stride = 1);
 
 /// @brief The measure over a render's layers ("region" and "P.X", "P.Y", "P.Z", as renderImage
 ///        writes them); @a torn as above.

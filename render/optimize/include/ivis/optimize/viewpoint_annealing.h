@@ -11,6 +11,7 @@
 #pragma once
 
 #include <ivis/optimize/parameter_optimizer.h>
+#include <ivis/optimize/readability.h>
 
 #include <cstdint>
 #include <optional>
@@ -30,6 +31,8 @@ struct AnnealingOptions {
     std::optional<double> fovYDeg;  ///< a fixed vertical field of view; empty: each view framed
     std::uint64_t seed = 1;
     int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
+    int readableResolution = 0;  ///< pixels per side of the picture the readability step keeps coherent (loosestReadable); 0: no step
+    double minCoherence = 0.99;  ///< the coherence that step keeps
 };
 
 /// @brief One evaluated camera position.
@@ -47,6 +50,7 @@ struct VisitedView {
 struct AnnealingResult {
     std::vector<VisitedView> visited;
     std::size_t best = 0;  ///< index into visited
+    std::optional<ReadableSetting> readable;  ///< the readability step's choice for the best view (when it ran)
     double seconds = 0.0;
     int evaluations = 0;
     /// @brief The best view.
@@ -69,6 +73,8 @@ bool acceptsProposal(double gain, double temperature, double acceptanceScale, do
 /// @param finalistEvaluator when given (typically more rays) and AnnealingOptions::finalists > 1,
 ///        the best view is the one of the finalists (the visited views of highest energy) with the
 ///        highest energy on it: an energy measured on few rays ranks close views only roughly.
+///        Last, with AnnealingOptions::readableResolution, the best view's method gets its loosest
+///        readable setting (loosestReadable), and the view is framed and measured again with it.
 /// @throw Cancelled when interrupted
 AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::MethodPtr& start,
                                 const AnnealingOptions& options = {}, const AscentOptions& ascent = {},

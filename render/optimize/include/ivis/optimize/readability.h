@@ -1,0 +1,47 @@
+/// @file readability.h
+/// @brief The optimisation's readability step (beyond the paper, docs/optimisation.md, "Readable by
+///        choice"): a method whose rule for drawing its rays trades completeness for coherence
+///        (MethodInfo::readabilityParameter) gets, at the optimised view, the loosest setting
+///        whose picture keeps the mapping coherence a reader needs.
+#pragma once
+
+#include <ivis/optimize/coherence.h>
+#include <ivis/render/method.h>
+#include <ivis/render/render_scene.h>
+
+#include <vector>
+
+namespace ivis::optimize {
+
+/// @brief What the readability step chose.
+struct ReadableSetting {
+    render::MethodPtr method;  ///< the method with the chosen setting
+    Coherence coherence;       ///< its picture's coherence, estimated on sampled pairs
+};
+
+/// @brief Lower end of the about 95% interval of the coherence estimated from @a coherence's pairs:
+///        value - 2 sqrt(value (1 - value) / pairs).
+double coherenceLowerBound(const Coherence& coherence);
+
+/// @brief The mapping coherence of @a method's picture from @a camera at @a resolution^2 pixels with
+///        its readability parameter at each of @a values, from one tracing of its rays at the
+///        largest value (a ray is drawn at a value when its CurvedRayStart::bend is at most that):
+///        on the pairs of every @a stride-th row and column (mappingCoherence's stride; stride 1 is
+///        measureCoherence of the method at that value).
+/// @throw ValueError for a method without a readability parameter, no value, a resolution or
+///        stride below 1
+std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, const core::Camera& camera,
+                                           const render::Method& method, int resolution, int stride,
+                                           const std::vector<float>& values);
+
+/// @brief Of @a method's readability parameter at its own value v and the rungs 1.5v, 2v, 3v, 4v,
+///        6v, 8v (at most the parameter's upper bound), the loosest reached before a rung whose
+///        picture from @a camera at @a resolution^2 pixels has a coherence lower bound below
+///        @a minCoherence (v itself when v does), estimated on the pairs of every
+///        (resolution / 200)-th row and column. A method without such a parameter is returned as it
+///        is, nothing measured.
+/// @throw ValueError for a resolution below 1 or a minimum coherence outside (0, 1]
+ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
+                                const render::MethodPtr& method, int resolution, double minCoherence);
+
+}  // namespace ivis::optimize

@@ -1,0 +1,98 @@
+#include <ivis/optimize/readability.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/render/curved_ray_method.h>
+#include <ivis/render/method_registry.h>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ivis::optimize {
+namespace {
+
+/// The rungs of the ladder above the method's own value, as multiples of it.
+constexpr float kLoosening[] = {1.5f, 2.0f, 3.0f, 4.0f, 6.0f, 8.0f};
+/// Sampled rows and columns across the picture (about 3 * 200^2 rays at any resolution).
+constexpr int kSampledLines = 200;
+
+}  // namespace
+
+double coherenceLowerBound(const Coherence& coherence)
+{
+    const double value = coherence.value();
+    if (coherence.pairs == 0) return value;
+    return value - 2.0 * std::sqrt(value * (1.0 - value) / double(coherence.pairs));
+}
+
+std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, const core::Camera& camera,
+                                           const render::Method& method, int resolution, int stride,
+                                           const std::vector<float>& values)
+{
+    const std::string& parameter = method.info().readabilityParameter;
+    if (parameter.empty() || !method.curved()) throw ValueError(method.name() + " has no readability parameter");
+    if (values.empty() || resolution < 1 || stride < 1)
+        throw ValueError("coherence at settings needs values, a positive resolution and a positive stride");
+    const float loosest = *std::max_element(values.begin(), values.end());
+    const render::MethodPtr traced = render::withValues(method, {{parameter, {loosest}}});
+    const core::CameraFrame frame(camera, resolution, resolution);
+    const render::CurvedRayMap rays(scene, frame, *traced->curved());
+
+    // The sampled pixels' landings and bends (infinite where no curved ray lands): in a sampled
+    // row the sampled columns and their right neighbours, in the row below one the sampled columns.
+    const std::size_t pixels = std::size_t(resolution) * resolution;
+    std::vector<glm::vec3> points(pixels);
+    std::vector<float> bends(pixels, std::numeric_limits<float>::infinity());
+    tbb::parallel_for(0, resolution, [&](int y) {
+        render::DistanceField::Sampler sampler = scene.distance().sampler();
+        std::vector<render::CurvedRayStart> starts;
+        std::vector<std::size_t> at;
+        for (int x = 0; x < resolution; ++x) {
+            const bool sampled = y % stride == 0 ? x % stride == 0 || (x - 1) % stride == 0
+                                                 : (y - 1) % stride == 0 && x % stride == 0;
+            render::CurvedRayStart start;
+            if (!sampled || !rays.start(x + 0.5, y + 0.5, sampler, start)) continue;
+            starts.push_back(start);
+            at.push_back(std::size_t(y) * resolution + x);
+        }
+        std::vector<render::PixelMapping> landings(starts.size());
+        rays.landingMany(starts.data(), starts.size(), sampler, landings.data());
+        for (std::size_t k = 0; k < starts.size(); ++k) {
+            if (landings[k].region != render::Region::Indirect) continue;
+            points[at[k]] = landings[k].point.position;
+            bends[at[k]] = starts[k].bend;
+        }
+    });
+    std::vector<Coherence> result;
+    std::vector<char> drawn(pixels);
+    for (const float value : values) {
+        for (std::size_t i = 0; i < pixels; ++i) drawn[i] = bends[i] <= value;
+        result.push_back(mappingCoherence(drawn, points, resolution, resolution, kCoherenceDistance, nullptr, stride));
+    }
+    return result;
+}
+
+ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
+                                const render::MethodPtr& method, int resolution, double minCoherence)
+{
+    if (resolution < 1) throw ValueError("the readability step needs a positive resolution");
+    if (!(minCoherence > 0.0 && minCoherence <= 1.0)) throw ValueError("the minimum coherence must lie in (0, 1]");
+    const std::string& parameter = method->info().readabilityParameter;
+    if (parameter.empty()) return {method, {}};
+    const float hi = method->info().parameter(parameter)->hi;
+    std::vector<float> ladder = {method->values().at(parameter).at(0)};
+    for (const float factor : kLoosening) {
+        const float value = std::min(ladder.front() * factor, hi);
+        if (value > ladder.back()) ladder.push_back(value);
+    }
+    const std::vector<Coherence> coherence =
+        coherenceAtSettings(scene, camera, *method, resolution, std::max(1, resolution / kSampledLines), ladder);
+    std::size_t chosen = 0;
+    while (chosen + 1 < ladder.size() && coherenceLowerBound(coherence[chosen + 1]) >= minCoherence) ++chosen;
+    if (chosen == 0) return {method, coherence[0]};
+    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen]};
+}
+
+}  // namespace ivis::optimize

@@ -1,0 +1,129 @@
+// The readability step: the loosest setting of a method's drawing rule whose picture stays
+// coherent, chosen on the ladder v, 2v, 4v, 8v; and the annealing applying it to its best view.
+#include "render/scene_fixture.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/optimize/energy.h>
+#include <ivis/optimize/readability.h>
+#include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_registry.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace ivis::optimize {
+namespace {
+
+constexpr int kResolution = 400;  // pixels per side of the pictures kept coherent (stride 2)
+
+float stableShift(const render::Method& method) { return method.values().at("stable_shift").at(0); }
+
+TEST(Readability, LowerBoundIsTheEstimateLessTwoStandardErrors)
+{
+    Coherence c;
+    c.pairs = 10000;
+    c.coherent = 9900;
+    EXPECT_NEAR(coherenceLowerBound(c), 0.99 - 2.0 * std::sqrt(0.99 * 0.01 / 10000.0), 1e-12);
+    c.coherent = c.pairs;
+    EXPECT_DOUBLE_EQ(coherenceLowerBound(c), 1.0) << "no tear among the pairs";
+    EXPECT_DOUBLE_EQ(coherenceLowerBound(Coherence{}), 1.0) << "no pair, nothing torn";
+}
+
+TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
+{
+    // Brute force: the method made with each value and its picture measured pixel by pixel.
+    const auto& fixture = test::vesselScene();
+    const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    const std::vector<float> values = {0.005f, 0.02f, 0.08f};
+    const int size = 150;
+    const std::vector<Coherence> all = coherenceAtSettings(*fixture.scene, camera, *wrap, size, 1, values);
+    ASSERT_EQ(all.size(), values.size());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        const render::MethodPtr method = render::withValues(*wrap, {{"stable_shift", {values[k]}}});
+        const Coherence measured = measureCoherence(*fixture.scene, camera, method, size);
+        EXPECT_EQ(all[k].pairs, measured.pairs) << values[k];
+        EXPECT_EQ(all[k].coherent, measured.coherent) << values[k];
+    }
+    EXPECT_GT(all[2].pairs, all[0].pairs) << "a looser rule draws more rays";
+    EXPECT_LT(all[2].value(), 1.0) << "and the tree's picture has tears to count";
+    const std::vector<Coherence> sampled = coherenceAtSettings(*fixture.scene, camera, *wrap, size, 3, values);
+    EXPECT_LT(sampled[0].pairs, all[0].pairs / 4);
+    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *render::makeMethod("inversevis"), size, 1, values),
+                 ValueError);
+    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, size, 1, {}), ValueError);
+}
+
+TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
+{
+    const auto& fixture = test::vesselScene();
+    const render::RenderScene& scene = *fixture.scene;
+    const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    const float own = stableShift(*wrap);
+    const std::vector<float> ladder = {own, 1.5f * own, 2.0f * own, 3.0f * own, 4.0f * own, 6.0f * own, 8.0f * own};
+    const std::vector<Coherence> coherence =
+        coherenceAtSettings(scene, camera, *wrap, kResolution, kResolution / 200, ladder);
+
+    // Any coherence will do: the loosest rung.
+    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1e-6).method), 8.0f * own);
+    // At 0.99: every rung up to the chosen one holds the bound, the next one does not.
+    const ReadableSetting chosen = loosestReadable(scene, camera, wrap, kResolution, 0.99);
+    const auto rung = std::find(ladder.begin(), ladder.end(), stableShift(*chosen.method));
+    ASSERT_NE(rung, ladder.end()) << "a rung of the ladder";
+    const std::size_t k = std::size_t(rung - ladder.begin());
+    for (std::size_t i = 1; i <= k; ++i) EXPECT_GE(coherenceLowerBound(coherence[i]), 0.99) << ladder[i];
+    if (k + 1 < ladder.size()) {
+        EXPECT_LT(coherenceLowerBound(coherence[k + 1]), 0.99) << ladder[k + 1];
+    }
+    EXPECT_EQ(chosen.coherence.pairs, coherence[k].pairs);
+    EXPECT_EQ(chosen.coherence.coherent, coherence[k].coherent);
+    // Looser draws more: the chosen picture shows at least as much of the surface.
+    EnergyOptions options;
+    options.resolution = 200;
+    const EnergyEvaluator evaluator(scene, options);
+    EXPECT_GE(evaluator.evaluate(camera, chosen.method).energy, evaluator.evaluate(camera, wrap).energy);
+    // Perfect coherence is more than the tree's picture has at 1.5 v: the method's own value stays.
+    ASSERT_LT(coherenceLowerBound(coherence[1]), 1.0);
+    EXPECT_EQ(loosestReadable(scene, camera, wrap, kResolution, 1.0).method, wrap);
+
+    // A method without a readability parameter is left as it is; bad arguments are refused.
+    const render::MethodPtr faithful = render::makeMethod("inversevis");
+    EXPECT_EQ(loosestReadable(scene, camera, faithful, kResolution, 0.99).method, faithful);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, 0, 0.99), ValueError);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, kResolution, 0.0), ValueError);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, kResolution, 1.5), ValueError);
+}
+
+TEST(Readability, TheAnnealingsBestViewIsMeasuredWithTheChosenSetting)
+{
+    const auto& fixture = test::vesselScene();
+    EnergyOptions energy;
+    energy.resolution = 24;
+    const EnergyEvaluator evaluator(*fixture.scene, energy);
+    AnnealingOptions options;
+    options.steps = 2;
+    AscentOptions ascent;
+    ascent.maxIterations = 1;
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    const AnnealingResult plain = annealViewpoint(evaluator, wrap, options, ascent);
+    EXPECT_FALSE(plain.readable.has_value());
+    EXPECT_FLOAT_EQ(stableShift(*plain.bestView().method), stableShift(*wrap));
+
+    options.readableResolution = kResolution;
+    options.minCoherence = 1e-6;  // any: the loosest rung
+    const AnnealingResult readable = annealViewpoint(evaluator, wrap, options, ascent);
+    ASSERT_TRUE(readable.readable.has_value());
+    const VisitedView& best = readable.bestView();
+    EXPECT_EQ(best.method, readable.readable->method);
+    EXPECT_FLOAT_EQ(stableShift(*best.method), 8.0f * stableShift(*wrap));
+    EXPECT_DOUBLE_EQ(best.value.energy, evaluator.evaluate(best.camera, best.method).energy)
+        << "the best view is measured again with its new rule";
+    EXPECT_EQ(readable.evaluations, plain.evaluations + 1);
+}
+
+}  // namespace
+}  // namespace ivis::optimize
