@@ -9,6 +9,7 @@
 #include <ivis/core/surface_source.h>
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/front_method.h>
+#include <ivis/render/inversevis_method.h>
 #include <ivis/render/renderer.h>
 #include <ivis/render/screen_map.h>
 
@@ -109,7 +110,7 @@ Benchmark addRenderBenchmark(CLI::App& app)
 
         renderOptions.method = render::makeMethod(render::frontMethodInfo().name);
         const render::RenderStats front = render::renderImage(scene, camera, renderOptions).stats;
-        renderOptions.method = render::defaultMethod();
+        renderOptions.method = render::makeMethod(render::inverseVisMethodInfo().name);
         const render::RenderStats inverse = render::renderImage(scene, camera, renderOptions).stats;
 
         const core::CameraFrame frame(camera, renderOptions.width, renderOptions.height);

@@ -49,7 +49,7 @@ const std::vector<const MethodInfo*>& methodRegistry()
     return registry;
 }
 
-MethodPtr defaultMethod() { return makeMethod(inverseVisMethodInfo().name); }
+MethodPtr defaultMethod() { return makeMethod(wrapInverseVisMethodInfo().name); }
 
 std::vector<std::string> methodNames()
 {

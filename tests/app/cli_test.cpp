@@ -181,7 +181,7 @@ TEST_F(Cli, VersionNamesTheLibraries)
 TEST_F(Cli, MethodParameterOutOfItsBounds)
 {
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
-    expectRejected(render(mesh, "--alpha 7"), {"inversevis --alpha 7 is out of range (0 to 4)"});
+    expectRejected(render(mesh, "--method inversevis --alpha 7"), {"inversevis --alpha 7 is out of range (0 to 4)"});
     expectRejected(render(mesh, "--method mirror --mirror-w 0.3 0.3 0 0 30"), {"mirror --mirror-w 30 is out of range"});
     expectRejected(render(mesh, "--max-steps 2.5"), {"--max-steps 2.5 is not a whole number"});
 }
@@ -190,7 +190,7 @@ TEST_F(Cli, ParameterOfAnotherMethodIsRejected)
 {
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
     expectRejected(render(mesh, "--method mirror --alpha 0.7"), {"--alpha does not apply to the method mirror"});
-    expectRejected(render(mesh, "--ring-width 0.2"), {"--ring-width does not apply to the method inversevis"});
+    expectRejected(render(mesh, "--ring-width 0.2"), {"--ring-width does not apply to the method inversevis-wrap"});
 }
 
 TEST_F(Cli, HullOffsetBeyondTheReachNamesBoth)

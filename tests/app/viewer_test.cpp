@@ -364,7 +364,7 @@ TEST(Viewer, PanelRunsTheParameterOptimiser)
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string shot = dir.file("window.png");
-    const RunResult run = runViewer("scene:sphere --optimize parameters --energy scalar --opt-res 48 --frames 2 --width 640 --height 480 --ui-screenshot '" +
+    const RunResult run = runViewer("scene:sphere --method inversevis --optimize parameters --energy scalar --opt-res 48 --frames 2 --width 640 --height 480 --ui-screenshot '" +
                                         shot + "' --cache-dir '" + dir.path() + "'",
                                     true, dir);
     ASSERT_EQ(run.status, 0) << run.output;

@@ -14,7 +14,7 @@ namespace ivis::render {
 /// @brief Every registered method's description, in the order --help lists them.
 const std::vector<const MethodInfo*>& methodRegistry();
 
-/// @brief The method a command uses when none is named: the paper's InverseVis with its defaults.
+/// @brief The method a command uses when none is named: the wrapped InverseVis (inversevis-wrap) with its defaults.
 MethodPtr defaultMethod();
 
 /// @brief Names of the registered methods, in registry order.
