@@ -15,7 +15,7 @@ namespace {
 
 /// The rungs of the ladder above the method's own value, as multiples of it.
 constexpr float kLoosening[] = {1.5f, 2.0f, 3.0f, 4.0f, 6.0f, 8.0f};
-/// Sampled rows and columns across the picture (about 3 * 200^2 rays at any resolution).
+/// Sampled rows and columns across the picture (about 3 * 200^2 pixels at any resolution).
 constexpr int kSampledLines = 200;
 
 }  // namespace
