@@ -1,5 +1,5 @@
 // The readability step: the loosest setting of a method's drawing rule whose picture stays
-// coherent, chosen on the ladder v, 2v, 4v, 8v; and the annealing applying it to its best view.
+// coherent, chosen on the ladder v, 1.5v, 2v, 3v, 4v, 6v, 8v; and the annealing applying it to its best view.
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>

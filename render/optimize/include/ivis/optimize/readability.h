@@ -37,7 +37,7 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
 /// @brief Of @a method's readability parameter at its own value v and the rungs 1.5v, 2v, 3v, 4v,
 ///        6v, 8v (at most the parameter's upper bound), the loosest reached before a rung whose
 ///        picture from @a camera at @a resolution^2 pixels has a coherence lower bound below
-///        @a minCoherence (v itself when v does), estimated on the pairs of every
+///        @a minCoherence (v itself when 1.5v falls short), estimated on the pairs of every
 ///        (resolution / 200)-th row and column. A method without such a parameter is returned as it
 ///        is, nothing measured.
 /// @throw ValueError for a resolution below 1 or a minimum coherence outside (0, 1]
