@@ -18,6 +18,7 @@
 #include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -201,10 +202,12 @@ Command addOptimizeCommand(CLI::App& app)
         if (isSeries) json["series"] = seriesStats;
         if (result.readable) {
             json["readability"] = readableSettingJson(*result.readable);
-            const nlohmann::json& choice = json["readability"];
-            core::logInfo("readability step: " + choice["parameter"].get<std::string>() + " " +
-                          choice["value"].dump() + ", estimated coherence " + choice["estimated_coherence"].dump() +
-                          " on " + choice["sampled_pairs"].dump() + " sampled pairs");
+            const std::string& parameter = result.readable->method->info().readabilityParameter;
+            char text[160];
+            std::snprintf(text, sizeof text, "readability step: %s %.4g, estimated coherence %.4f on %zu sampled pairs",
+                          parameter.c_str(), result.readable->method->values().at(parameter).at(0),
+                          result.readable->coherence.value(), result.readable->coherence.pairs);
+            core::logInfo(text);
         }
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +

@@ -82,9 +82,10 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
     const std::string& parameter = method->info().readabilityParameter;
     if (parameter.empty()) return {method, {}};
     const float hi = method->info().parameter(parameter)->hi;
-    std::vector<float> ladder = {method->values().at(parameter).at(0)};
+    const float own = method->values().at(parameter).at(0);
+    std::vector<float> ladder = {own};
     for (const float factor : kLoosening) {
-        const float value = std::min(ladder.front() * factor, hi);
+        const float value = std::min(own * factor, hi);
         if (value > ladder.back()) ladder.push_back(value);
     }
     const std::vector<Coherence> coherence =
