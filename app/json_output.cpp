@@ -32,6 +32,16 @@ nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
             {"sampled_pairs", setting.coherence.pairs}};
 }
 
+std::string readableSettingLine(const optimize::ReadableSetting& setting)
+{
+    const std::string& parameter = setting.method->info().readabilityParameter;
+    char text[160];
+    std::snprintf(text, sizeof text, "readable rule: %s %.4g, estimated coherence %.4f on %zu sampled pairs",
+                  parameter.c_str(), setting.method->values().at(parameter).at(0), setting.coherence.value(),
+                  setting.coherence.pairs);
+    return text;
+}
+
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)
 {
     nlohmann::json json = {{"visibility", value.energy},

@@ -37,6 +37,12 @@ bool MethodOptions::given() const
     return false;
 }
 
+bool MethodOptions::givenParameter(const std::string& key) const
+{
+    const auto it = mOptions.find(key);
+    return it != mOptions.end() && it->second->count() > 0;
+}
+
 render::MethodPtr MethodOptions::create() const
 {
     const render::MethodInfo& info = render::methodInfo(method);

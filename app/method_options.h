@@ -29,6 +29,8 @@ struct MethodOptions {
     render::MethodPtr create() const;
     /// @brief True when --method or a parameter was given on the command line.
     bool given() const;
+    /// @brief True when the option of parameter @a key was given on the command line.
+    bool givenParameter(const std::string& key) const;
 
 private:
     std::map<std::string, CLI::Option*> mOptions;

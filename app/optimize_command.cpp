@@ -18,7 +18,6 @@
 #include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
 
-#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -202,12 +201,7 @@ Command addOptimizeCommand(CLI::App& app)
         if (isSeries) json["series"] = seriesStats;
         if (result.readable) {
             json["readability"] = readableSettingJson(*result.readable);
-            const std::string& parameter = result.readable->method->info().readabilityParameter;
-            char text[160];
-            std::snprintf(text, sizeof text, "readability step: %s %.4g, estimated coherence %.4f on %zu sampled pairs",
-                          parameter.c_str(), result.readable->method->values().at(parameter).at(0),
-                          result.readable->coherence.value(), result.readable->coherence.pairs);
-            core::logInfo(text);
+            core::logInfo("readability step: " + readableSettingLine(*result.readable));
         }
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +

@@ -13,6 +13,7 @@
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/readability.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
@@ -20,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 
 namespace ivis::app {
 
@@ -42,6 +44,7 @@ Command addRenderCommand(CLI::App& app)
         int fps = 5;
         bool noVideo = false;
         bool measure = false;
+        double minCoherence = 0.99;
         std::vector<CLI::Option*> seriesFlags;
     };
     auto options = std::make_shared<Options>();
@@ -63,6 +66,14 @@ Command addRenderCommand(CLI::App& app)
                       "Also measure what the picture shows (METHOD.md: surface visibility on the 200^3 grid, "
                       "paper-literal, front-only, with a scalar the hot-spot reveal) into --stats-json and the log; "
                       "traces the method again with the picture's height in rays per side");
+    command
+        ->add_option("--min-coherence", options->minCoherence,
+                     "Readable rule: when the method's rule for drawing rays (inversevis-wrap: --stable-shift) is "
+                     "given neither as an option nor by --view, the loosest rule (up to 8 times the default) whose "
+                     "picture keeps an estimated mapping coherence of at least this (beyond the paper; a series: "
+                     "chosen on its first step); 0: the default rule")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     command->add_option("--tear-map", options->tearMap,
                         "Also write a PNG of the picture in grey with its tears in red: the indirect pixels whose "
                         "neighbour's surface point lies further than the coherence measure's 0.1 (one picture only)");
@@ -90,6 +101,10 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
+        // The readable rule is chosen when the method has one and neither an option nor --view gives it.
+        const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
+        const bool chooseRule =
+            options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         for (const std::string& path :
              {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut,
               options->tearMap})
@@ -139,10 +154,12 @@ Command addRenderCommand(CLI::App& app)
             request.lastStep = frameRange.lastStep;
             request.fps = options->fps;
             request.measure = options->measure;
+            request.minCoherence = chooseRule ? options->minCoherence : 0.0;
             const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
             if (!options->viewOut.empty()) {
                 render::RenderOptions look = options->view.renderOptions();
                 look.shading.scale = request.scale.value_or(look.shading.scale);
+                look.method = request.method;
                 writeViewFile(viewOfPicture(core::readCameraJson(stats.at("camera").get<std::string>()), look,
                                             options->mesh.load, series.load(0).normalization),
                               options->viewOut);
@@ -164,8 +181,17 @@ Command addRenderCommand(CLI::App& app)
         const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions.resolution);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
-        const core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,
-                                                                renderOptions.width, renderOptions.height);
+        core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,
+                                                          renderOptions.width, renderOptions.height);
+        std::optional<optimize::ReadableSetting> readable;
+        if (chooseRule) {
+            readable = optimize::loosestReadable(scene, camera, renderOptions.method, renderOptions.height,
+                                                 options->minCoherence);
+            core::logInfo(readableSettingLine(*readable));
+            renderOptions.method = readable->method;
+            camera = options->view.pictureCamera(scene, requested, *renderOptions.method, renderOptions.width,
+                                                 renderOptions.height);
+        }
         const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
 
         core::writePng(result.figure, options->output, renderOptions.shading.transparentBackground);
@@ -206,6 +232,7 @@ Command addRenderCommand(CLI::App& app)
                                       {"camera", cameraPath}};
         const nlohmann::json method = render::methodToJson(*renderOptions.method);
         for (const auto& [key, value] : method.items()) stats[key] = value;
+        if (readable) stats["readability"] = readableSettingJson(*readable);
         if (options->measure) {
             stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
                                                     renderOptions.shading.scale.range, coherence);

@@ -10,10 +10,12 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/readability.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
 #include <cstdio>
+#include <optional>
 
 namespace ivis::app {
 namespace {
@@ -57,7 +59,7 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
                                                 "pattern); " + source + " is one mesh");
 }
 
-nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
+nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, SeriesRenderRequest& request,
                             core::ProgressBar* progress)
 {
     const std::size_t count = series.steps().size();
@@ -70,10 +72,25 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     if (first >= count)
         throw InputError("--frames " + std::to_string(first) + ":" + std::to_string(request.lastStep) + ": the series has " +
                          std::to_string(count) + " steps (0 to " + std::to_string(count - 1) + ")");
+    // The readable rule is chosen on step 0, so that every job of a render draws alike.
+    std::optional<optimize::ReadableSetting> readable;
+    auto chooseReadableRule = [&] {
+        const render::RenderOptions options = view.renderOptions(current.field());
+        const core::Camera at =
+            view.pictureCamera(current.scene(), request.camera, *request.method, options.width, options.height);
+        readable = optimize::loosestReadable(current.scene(), at, request.method, options.height, request.minCoherence);
+        core::logInfo(readableSettingLine(*readable));
+        request.method = readable->method;
+    };
+    if (request.minCoherence > 0.0 && first > 0) {
+        current.show(series.load(0), progress);
+        chooseReadableRule();
+    }
     for (std::size_t k = first; k <= last; ++k) {
         const core::SeriesStep& step = series.steps()[k];
         if (progress) progress->setContext("frame " + std::to_string(k + 1) + "/" + std::to_string(count));
         const std::string volume = current.show(series.load(k), progress);
+        if (k == 0 && request.minCoherence > 0.0) chooseReadableRule();
         render::RenderOptions options = view.renderOptions(current.field());
         options.method = request.method;
         if (request.scale) options.shading.scale = *request.scale;
@@ -167,6 +184,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                             {"frames", frames}};
     const nlohmann::json method = render::methodToJson(*request.method);
     for (const auto& [key, value] : method.items()) stats[key] = value;
+    if (readable) stats["readability"] = readableSettingJson(*readable);
     core::logInfo("wrote " + std::to_string(last - first + 1) + " frames " + framePath(request.png, first, count) + " .. " +
                   framePath(request.png, last, count) + " (" + std::to_string(width) + "x" +
                   std::to_string(height) + ", " + request.method->name() + ", " + view.describeFraming(camera) + ", " +

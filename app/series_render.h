@@ -35,6 +35,9 @@ struct SeriesRenderRequest {
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
     int fps = 5;              ///< the video's frames per second
     bool measure = false;     ///< each frame's METHOD.md measures in its statistics (pictureMeasuresJson)
+    /// Above 0: the method's readable rule (optimize::loosestReadable at this coherence) is chosen
+    /// on the series' first step (step 0, also for a job's part) and replaces the method's.
+    double minCoherence = 0.0;
     std::size_t firstStep = 0;                     ///< the steps rendered: firstStep..lastStep (a job's part)
     std::size_t lastStep = ~std::size_t(0);        ///< inclusive; past the end = to the last step
 };
@@ -51,11 +54,12 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and
 ///         per frame its step, time, label, files, volume ("kept" or the cache outcome), range,
 ///         counts and mapping coherence (and with
-///         SeriesRenderRequest::measure its measures)
+///         SeriesRenderRequest::measure its measures), and the readable rule when one was chosen
 /// @throw InputError when a step cannot be loaded or an output written (no frame is then written);
 ///        Cancelled when interrupted
 /// @param progress optional progress line, labelled with the frame ("frame 3/40")
-nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, const SeriesRenderRequest& request,
+/// @param request its method becomes the one drawn, with the readable rule when one is chosen
+nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, SeriesRenderRequest& request,
                             core::ProgressBar* progress = nullptr);
 
 }  // namespace ivis::app

@@ -73,6 +73,12 @@ struct ViewOptions {
     ///        given, and its name titles the colour bar).
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
+    /// @brief True when the method's parameter @a key is given: by its option, or by the --view
+    ///        file's method (unless --method or a parameter overrides it).
+    bool givesParameter(const std::string& key) const
+    {
+        return method.givenParameter(key) || (view() && !method.given());
+    }
 
 private:
     /// True when option @a name was given on the command line.
