@@ -1,8 +1,11 @@
 #include "view_optimiser.h"
 
+#include "../json_output.h"
+
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
+#include <ivis/optimize/readability.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
@@ -87,6 +90,7 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
             settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
             settings.optimization.finalistEvaluator(scene, settings.resolution, settings.importanceRange).get());
         const optimize::VisitedView& best = annealing.bestView();
+        const std::string readable = annealing.readable ? ", " + readableSettingLine(*annealing.readable) : "";
         OptimiserResult result;
         result.state.camera = best.camera;
         result.state.method = best.method;
@@ -101,7 +105,31 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
                       angles.x, angles.y, best.thetaDeg, best.phiDeg, describeParams(*best.method).c_str(),
                       settings.optimization.energy.c_str(), result.energyBefore, result.energyAfter,
                       annealing.visited.size(), result.evaluations, result.seconds);
-        result.summary = text;
+        result.summary = text + readable;
+        return result;
+    };
+}
+
+ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings)
+{
+    return [settings](const render::RenderScene& scene, const ViewState& start, const std::atomic<bool>& /*cancel*/) {
+        const auto begin = std::chrono::steady_clock::now();
+        const core::Camera camera =
+            settings.framed ? render::frameView(scene, start.camera, *start.method, 1.0) : start.camera;
+        // From the rule's default, as render chooses it: the rule shown may be too loose for this view.
+        render::ParameterValues values = start.method->values();
+        const std::string& key = start.method->info().readabilityParameter;
+        if (const render::ParameterSpec* spec = start.method->info().parameter(key)) values[key] = spec->defaults;
+        const optimize::ReadableSetting readable =
+            optimize::loosestReadable(scene, camera, render::makeMethod(start.method->name(), values),
+                                      optimize::kCoherenceResolution, settings.optimization.minCoherence);
+        OptimiserResult result;
+        result.state = {start.camera, readable.method};
+        result.evaluations = 1;
+        result.seconds = secondsSince(begin);
+        char text[64];
+        std::snprintf(text, sizeof text, " (%.1f s)", result.seconds);
+        result.summary = readableSettingLine(readable) + text;
         return result;
     };
 }

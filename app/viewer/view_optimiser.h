@@ -1,7 +1,8 @@
 /// @file view_optimiser.h
-/// @brief How the viewer's "optimise" buttons call the CPU optimisers in a background thread: a
-///        function object from the scene and the current view to new parameters, and the two
-///        implementations on optimize::optimizeParameters and optimize::annealViewpoint.
+/// @brief How the viewer's "optimise" and "readable rule" buttons call the CPU optimisers in a
+///        background thread: a function object from the scene and the current view to new
+///        parameters, and the implementations on optimize::optimizeParameters,
+///        optimize::annealViewpoint and optimize::loosestReadable.
 #pragma once
 
 #include "../optimization_options.h"
@@ -56,5 +57,11 @@ ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 /// @brief "optimise view": optimize::annealViewpoint from the current camera's angles on the radius
 ///        2.5 sphere, the parameters optimised at every proposal; returns the best view.
 ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings);
+
+/// @brief "readable rule": optimize::loosestReadable of the current method with its readability
+///        parameter at its default, at the current camera (framed square, as the other optimisers
+///        measure), for a 1000 x 1000 picture (optimize::kCoherenceResolution) and the settings'
+///        minimum coherence: the rule render would choose for that picture.
+ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings);
 
 }  // namespace ivis::app

@@ -11,6 +11,7 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/framing.h>
+#include <ivis/render/method_json.h>
 #include <ivis/render/surface_point.h>
 
 #include <epoxy/gl.h>
@@ -178,8 +179,11 @@ bool ViewerApp::pollLoader()
     std::printf("inversevis-view: %s\n", mVolumeText.c_str());
     std::fflush(stdout);
     mDirty = true;
-    if (mOptions.optimise == "parameters") startOptimiser(false);
-    if (mOptions.optimise == "view") startOptimiser(true);
+    if (mOptions.optimise == "parameters") startOptimiser(Job::Parameters);
+    if (mOptions.optimise == "view") startOptimiser(Job::View);
+    // An interactive window draws the rule render would choose (--screenshot and --benchmark the given one).
+    if (mOptions.optimise.empty() && mOptions.screenshot.empty() && !mOptions.benchmark && choosesReadableRule())
+        startOptimiser(Job::ReadableRule);
     return true;
 }
 
@@ -345,16 +349,25 @@ int ViewerApp::runBenchmark()
     return 0;
 }
 
-void ViewerApp::startOptimiser(bool view)
+bool ViewerApp::choosesReadableRule() const
+{
+    const std::string& key = mMethod->info().readabilityParameter;
+    return mOptions.optimization.minCoherence > 0.0 && !key.empty() && !mOptions.view.givesParameter(key);
+}
+
+void ViewerApp::startOptimiser(Job job)
 {
     if (!mLoaded || mJob.valid()) return;
     mCancelJob = false;
     mOptimiser.importanceRange = mShading.scale.range;
     mOptimiser.framed = mOrbit.framed;
-    const ViewOptimiser optimiser = view ? viewpointOptimiser(mOptimiser) : parameterOptimiser(mOptimiser);
-    mJobName = view ? "optimise view" : "optimise " + mMethod->name();
+    const ViewOptimiser optimiser = job == Job::View         ? viewpointOptimiser(mOptimiser)
+                                    : job == Job::Parameters ? parameterOptimiser(mOptimiser)
+                                                             : readableRuleOptimiser(mOptimiser);
+    mJobName = job == Job::View ? "optimise view" : job == Job::Parameters ? "optimise " + mMethod->name() : "readable rule";
     mStatus = mJobName + ": running on the CPU...";
     mJobStart = now();
+    mJobMethod = mMethod;
     ViewState state{mOrbit.camera(), mMethod};
     const render::RenderScene* scene = mLoaded->scene.get();
     mJob = std::async(std::launch::async, [optimiser, scene, state, this] { return optimiser(*scene, state, mCancelJob); });
@@ -368,8 +381,10 @@ void ViewerApp::pollOptimiser(double time)
         mStatus = result.summary;
         std::printf("inversevis-view: %s\n", mStatus.c_str());
         std::fflush(stdout);
-        // The optimised parameters ease to the result unless the method was switched meanwhile.
-        const bool sameMethod = render::sameFixedParameters(*result.state.method, *mMethod);
+        // Unless the method was changed meanwhile, it takes the result's other parameters (the
+        // readable rule) now and its optimised ones ease to the result's.
+        const bool sameMethod = mMethod == mJobMethod;
+        if (sameMethod) mMethod = render::withOptimisedParameters(*result.state.method, render::optimisedParameters(*mMethod));
         mAnimatedMethod = mMethod->name();
         const OrbitCamera to = OrbitCamera::fromCamera(result.state.camera, false);
         mAnimation = CameraAnimation(mOrbit, sameMethod ? render::optimisedParameters(*mMethod) : std::vector<double>{},
@@ -467,18 +482,25 @@ void ViewerApp::drawPanel()
     optimiserWidgets(mOptimiser, mField->hasScalar());
     const bool hasParameters = !render::optimisedParameters(*mMethod).empty();
     ImGui::BeginDisabled(busy || !hasParameters);
-    if (ImGui::Button(optimiseLabel(*mMethod).c_str())) startOptimiser(false);
+    if (ImGui::Button(optimiseLabel(*mMethod).c_str())) startOptimiser(Job::Parameters);
     ImGui::EndDisabled();
     tooltip("CPU, in the background: optimize::optimizeParameters, gradient ascent of the method's optimised "
             "parameters with golden-section line searches on the true energy, at this view; they then ease to the "
             "result");
     ImGui::SameLine();
     ImGui::BeginDisabled(busy);
-    if (ImGui::Button("optimise view")) startOptimiser(true);
+    if (ImGui::Button("optimise view")) startOptimiser(Job::View);
     ImGui::EndDisabled();
     tooltip("CPU, in the background: optimize::annealViewpoint, simulated annealing of the camera on the radius-2.5 "
             "sphere from this view, the parameters optimised at every proposal; the camera then eases to the best "
             "view. Closing the window stops it.");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(busy || mMethod->info().readabilityParameter.empty());
+    if (ImGui::Button("readable rule")) startOptimiser(Job::ReadableRule);
+    ImGui::EndDisabled();
+    tooltip("CPU, in the background: optimize::loosestReadable, the loosest rule for drawing rays (inversevis-wrap: "
+            "stable_shift, from its default up to 8 times that) whose 1000 x 1000 picture from this view keeps the "
+            "mapping coherence --min-coherence (0.99), as render chooses it; done at start when the rule is not given");
     if (mJob.valid()) {
         ImGui::SameLine();
         ImGui::Text("running %.0f s", now() - mJobStart);
@@ -536,7 +558,11 @@ int ViewerApp::runInteractive()
             mAnimation.at(time, mOrbit, parameters);
             if (!parameters.empty() && mMethod->name() == mAnimatedMethod)  // unless switched meanwhile
                 mMethod = render::withOptimisedParameters(*mMethod, parameters);
-            if (!mAnimation.active(time)) mAnimation.stop();
+            if (!mAnimation.active(time)) {
+                mAnimation.stop();
+                std::printf("inversevis-view: drawing %s\n", render::methodToJson(*mMethod).dump().c_str());
+                std::fflush(stdout);
+            }
             mDirty = true;
         }
 

@@ -75,8 +75,12 @@ private:
     int runInteractive();
     void drawPanel();
     void handleInput();
-    /// Runs the viewpoint (@a view) or the parameter optimiser in the background.
-    void startOptimiser(bool view);
+    /// The CPU jobs the panel's buttons start.
+    enum class Job { Parameters, View, ReadableRule };
+    /// Runs @a job in the background.
+    void startOptimiser(Job job);
+    /// True when the method's rule for drawing rays is chosen, not given (--stable-shift, --view).
+    bool choosesReadableRule() const;
     void pollOptimiser(double now);
 
     ViewerOptions mOptions;
@@ -106,6 +110,7 @@ private:
     std::string mVolumeText;
 
     std::future<OptimiserResult> mJob;
+    render::MethodPtr mJobMethod;  ///< the method the job started from
     std::atomic<bool> mCancelJob{false};
     std::string mJobName;
     double mJobStart = 0.0;

@@ -15,6 +15,7 @@
 #include <ivis/vdb/volume_cache.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -274,7 +275,9 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
+    // --min-coherence 0: the rule the viewer's --screenshot draws (it chooses none).
     const CliResult cpu = runCli("render '" + pvd + "' --res 256x256 --volume-res 100 --no-legend --no-outline --no-video "
+                                 "--min-coherence 0 "
                                  "--cache-dir '" + dir.path() + "' -o '" +
                                  dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
     ASSERT_EQ(cpu.status, 0) << cpu.err;
@@ -417,6 +420,72 @@ namespace {
 
 // A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
 // same picture in the viewer as in `render --view`.
+/// The parameters of the viewer's "inversevis-view: drawing {...}" line (the last one), or null.
+nlohmann::json drawnParameters(const std::string& output)
+{
+    const std::string tag = "inversevis-view: drawing ";
+    const std::size_t at = output.rfind(tag);
+    if (at == std::string::npos) return nullptr;
+    const std::size_t begin = at + tag.size();
+    return nlohmann::json::parse(output.substr(begin, output.find('\n', begin) - begin));
+}
+
+/// The number after "readable rule: stable_shift " in @a output, or -1.
+double readableShift(const std::string& output)
+{
+    const std::string tag = "readable rule: stable_shift ";
+    const std::size_t at = output.find(tag);
+    return at == std::string::npos ? -1.0 : std::stod(output.substr(at + tag.size()));
+}
+
+// The interactive window draws the wrap with the readable rule `render` would choose for a 1000 x
+// 1000 picture, found on the CPU once the volume is loaded; a rule given is drawn as given.
+TEST(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string common = "scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --cache-dir '" +
+                               dir.path() + "' --ui-screenshot '" + dir.file("window.png") + "'";
+    const RunResult chosen = runViewer(common, true, dir);
+    ASSERT_EQ(chosen.status, 0) << chosen.output;
+    const double shift = readableShift(chosen.output);
+    EXPECT_GT(shift, 0.0051) << chosen.output;
+    const nlohmann::json drawn = drawnParameters(chosen.output);
+    ASSERT_FALSE(drawn.is_null()) << chosen.output;
+    EXPECT_NEAR(drawn.at("stable_shift").get<double>(), shift, 1e-4) << "the picture is drawn with the chosen rule";
+
+    const RunResult given = runViewer(common + " --stable-shift 0.005", true, dir);
+    ASSERT_EQ(given.status, 0) << given.output;
+    EXPECT_EQ(given.output.find("readable rule"), std::string::npos) << given.output;
+#endif
+}
+
+// "optimise view" leaves the picture drawn with every parameter of the best view: the optimised
+// speed and the rule its readability step chose (the rule used to be dropped, and the speed with it).
+TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --optimize view "
+                                    "--steps 1 --finalists 0 --opt-res 24 --cache-dir '" + dir.path() +
+                                        "' --ui-screenshot '" + dir.file("window.png") + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    ASSERT_NE(run.output.find("annealed view:"), std::string::npos) << run.output;
+    const double shift = readableShift(run.output);
+    EXPECT_GT(shift, 0.0051) << run.output;
+    const nlohmann::json drawn = drawnParameters(run.output);
+    ASSERT_FALSE(drawn.is_null()) << run.output;
+    EXPECT_NEAR(drawn.at("stable_shift").get<double>(), shift, 1e-4);
+#endif
+}
+
 TEST(Viewer, ViewFileShowsTheCpuPicture)
 {
 #ifndef IVIS_VIEW_PATH
