@@ -40,10 +40,14 @@ glm::mat4 clipFromWorld(const core::CameraFrame& frame)
     const double centre = glm::dot(glm::dvec3(0.0) - eye, f), margin = 2.0;
     const double aspect = double(frame.width()) / double(frame.height());
     glm::dmat4 projection(0.0);
+    // The image window is centred at windowCentre on the image plane (core::CameraFrame::ray).
+    const glm::dvec2 shift = camera.windowCentre;
     if (camera.orthographic) {
         const double hh = camera.orthoHalfHeight, n = centre - margin, fa = centre + margin;
         projection[0][0] = 1.0 / (hh * aspect);
         projection[1][1] = 1.0 / hh;
+        projection[3][0] = -shift.x / (hh * aspect);
+        projection[3][1] = -shift.y / hh;
         projection[2][2] = -2.0 / (fa - n);
         projection[3][2] = -(fa + n) / (fa - n);
         projection[3][3] = 1.0;
@@ -52,6 +56,8 @@ glm::mat4 clipFromWorld(const core::CameraFrame& frame)
         const double n = std::max(1e-3, centre - margin), fa = std::max(n + 1e-3, centre + margin);
         projection[0][0] = 1.0 / (hh * aspect);
         projection[1][1] = 1.0 / hh;
+        projection[2][0] = shift.x / (hh * aspect);  // x_ndc = (x / -z - shift.x) / (hh aspect)
+        projection[2][1] = shift.y / hh;
         projection[2][2] = -(fa + n) / (fa - n);
         projection[2][3] = -1.0;
         projection[3][2] = -2.0 * fa * n / (fa - n);
@@ -160,6 +166,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uHalfHeight", float(frame.camera.orthographic ? frame.camera.orthoHalfHeight
                                                          : std::tan(0.5 * frame.camera.fovYDeg * M_PI / 180.0)));
     p.set("uAspect", float(double(frame.width) / double(frame.height)));
+    p.set("uWindowCentre", glm::vec2(frame.camera.windowCentre));
     p.set("uRight", toFloat(camera.right()));
     p.set("uUp", toFloat(camera.upVector()));
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);

@@ -18,6 +18,7 @@ OrbitCamera OrbitCamera::fromCamera(const core::Camera& camera, bool keepExact)
     orbit.fovYDeg = camera.fovYDeg;
     orbit.orthographic = camera.orthographic;
     orbit.orthoHalfHeight = camera.orthoHalfHeight;
+    orbit.windowCentre = camera.windowCentre;
     if (keepExact) orbit.fixed = camera;
     return orbit;
 }
@@ -30,6 +31,7 @@ core::Camera OrbitCamera::camera() const
     camera.target = target;
     camera.orthographic = orthographic;
     camera.orthoHalfHeight = orthoHalfHeight;
+    camera.windowCentre = windowCentre;
     return camera;
 }
 
@@ -95,6 +97,7 @@ void CameraAnimation::at(double now, OrbitCamera& camera, std::vector<double>& p
     camera.distance = mFrom.distance + w * (mTo.distance - mFrom.distance);
     camera.target = mFrom.target + w * (mTo.target - mFrom.target);
     camera.orthoHalfHeight = mFrom.orthoHalfHeight + w * (mTo.orthoHalfHeight - mFrom.orthoHalfHeight);
+    camera.windowCentre = mFrom.windowCentre + w * (mTo.windowCentre - mFrom.windowCentre);
     parameters = mParametersFrom;
     for (std::size_t i = 0; i < parameters.size() && i < mParametersTo.size(); ++i)
         parameters[i] += w * (mParametersTo[i] - mParametersFrom[i]);

@@ -1,7 +1,8 @@
 /// @file orbit_camera.h
 /// @brief The viewer's camera: an eye on a sphere around a target (the CLI's --theta/--phi
 ///        convention), turned, zoomed and panned with the mouse, and eased toward a new view; its
-///        field of view framed for the picture (the viewer fits it each frame) until a zoom or pan.
+///        field of view and window centre framed for the picture (the viewer fits them each frame)
+///        until a zoom or pan.
 #pragma once
 
 #include <ivis/core/camera.h>
@@ -22,9 +23,11 @@ struct OrbitCamera {
     double fovYDeg = core::kDefaultFovYDeg;
     bool orthographic = false;
     double orthoHalfHeight = 1.6;
+    glm::dvec2 windowCentre{0.0};  ///< the image's centre on the image plane (core::Camera::windowCentre)
     /// A camera read from a file, shown exactly (its own up vector) until the user moves.
     std::optional<core::Camera> fixed;
-    /// The field of view (orthographic: the half height) is fitted to each frame's picture.
+    /// The field of view (orthographic: the half height) and the window centre are fitted to
+    /// each frame's picture.
     bool framed = false;
 
     /// @brief Orbit state of @a camera (kept exactly as @a fixed when @a keepExact).

@@ -224,6 +224,7 @@ void ViewerApp::frameOrbit(int width, int height)
                     : render::fitCamera(camera, render::offsetMeshExtent(mField->mesh, camera, 0.0), aspect);
         mOrbit.fovYDeg = framed.fovYDeg;
         mOrbit.orthoHalfHeight = framed.orthoHalfHeight;
+        mOrbit.windowCentre = framed.windowCentre;
     } catch (const ValueError& e) {
         mOrbit.framed = false;
         mStatus = std::string("framing off: ") + e.what();

@@ -42,6 +42,8 @@ void Camera::validate() const
         throw ValueError("field of view " + std::to_string(fovYDeg) + " is out of range (0 to 180 degrees)");
     if (orthographic && !(orthoHalfHeight > 0.0 && std::isfinite(orthoHalfHeight)))
         throw ValueError("orthographic half height must be positive");
+    if (!(std::isfinite(windowCentre.x) && std::isfinite(windowCentre.y)))
+        throw ValueError("camera window centre must be finite");
 }
 
 CameraFrame::CameraFrame(const Camera& camera, int width, int height) : mCamera(camera), mWidth(width), mHeight(height)
@@ -58,7 +60,8 @@ CameraFrame::CameraFrame(const Camera& camera, int width, int height) : mCamera(
 
 CameraRay CameraFrame::ray(double x, double y) const
 {
-    return rayThrough({(2.0 * x / mWidth - 1.0) * mHalfHeight * mAspect, (1.0 - 2.0 * y / mHeight) * mHalfHeight});
+    return rayThrough(mCamera.windowCentre +
+                      glm::dvec2((2.0 * x / mWidth - 1.0) * mHalfHeight * mAspect, (1.0 - 2.0 * y / mHeight) * mHalfHeight));
 }
 
 CameraRay CameraFrame::rayThrough(const glm::dvec2& point) const
@@ -76,7 +79,7 @@ glm::dvec2 CameraFrame::imagePlane(const glm::dvec3& world) const
 
 glm::dvec2 CameraFrame::project(const glm::dvec3& world) const
 {
-    const glm::dvec2 s = imagePlane(world);
+    const glm::dvec2 s = imagePlane(world) - mCamera.windowCentre;
     return {(s.x / (mHalfHeight * mAspect) + 1.0) * 0.5 * mWidth, (1.0 - s.y / mHalfHeight) * 0.5 * mHeight};
 }
 

@@ -29,6 +29,7 @@ nlohmann::json cameraToJson(const Camera& camera)
             {"fov_y_deg", camera.fovYDeg},
             {"orthographic", camera.orthographic},
             {"ortho_half_height", camera.orthoHalfHeight},
+            {"window_centre", {camera.windowCentre.x, camera.windowCentre.y}},
             {"theta_deg", angles.x},
             {"phi_deg", angles.y}};
 }
@@ -43,6 +44,11 @@ Camera cameraFromJson(const nlohmann::json& json)
     camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
     camera.orthographic = json.value("orthographic", camera.orthographic);
     camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
+    if (json.contains("window_centre")) {
+        const auto& c = json.at("window_centre");
+        if (!c.is_array() || c.size() != 2) throw std::invalid_argument("'window_centre' must be [x, y]");
+        camera.windowCentre = {c[0].get<double>(), c[1].get<double>()};
+    }
     camera.validate();
     return camera;
 }

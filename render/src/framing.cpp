@@ -21,14 +21,17 @@ core::Camera fitCamera(const core::Camera& camera, const PictureExtent& extent, 
                       std::max(extent.fixed.x, extent.fixed.y));
         throw ValueError(text);
     }
-    const double needed = std::max(extent.imagePlane.x / room.x, extent.imagePlane.y / room.y);
+    // The image centred on the picture's scaling part; the fixed part lies round it on every side.
+    const glm::dvec2 centre = 0.5 * (extent.lo + extent.hi), half = 0.5 * (extent.hi - extent.lo);
+    const double needed = std::max(half.x / room.x, half.y / room.y);
     const double widest = widestFramedHalfHeight(camera);
-    const bool fit = needed <= widest;  // false for +infinity and NaN too
+    const bool fit = needed <= widest && std::isfinite(centre.x) && std::isfinite(centre.y);  // false for NaN too
     if (fits) *fits = fit;
     const double halfHeight = fit ? std::max(needed, 1e-3 * widest) : widest;
     core::Camera framed = camera;
     if (camera.orthographic) framed.orthoHalfHeight = halfHeight;
     else framed.fovYDeg = 2.0 * std::atan(halfHeight) * 180.0 / M_PI;
+    framed.windowCentre = fit ? centre : glm::dvec2(0.0);
     return framed;
 }
 

@@ -33,14 +33,13 @@ bool anyLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::iv
         [](bool a, bool b) { return a || b; });
 }
 
-/// The outermost line of @a axis, counted from either border, with a landed cell at @a stride:
-/// lines from @a first inward in steps of @a step (and their mirror images); -1 if none lands.
-int outermostLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::ivec2& cells, int axis, int first,
-                    int step, int stride)
+/// The outermost line of @a axis, counted from its first border (or from its last when @a fromEnd),
+/// with a landed cell at @a stride: lines from @a first inward in steps of @a step; -1 if none lands.
+int outermostLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::ivec2& cells, int axis, bool fromEnd,
+                    int first, int step, int stride)
 {
-    for (int outer = first; outer < (cells[axis] + 1) / 2; outer += step)
-        if (anyLanded(scene, rays, cells, axis, outer, stride) || anyLanded(scene, rays, cells, axis, cells[axis] - 1 - outer, stride))
-            return outer;
+    for (int outer = first; outer < cells[axis]; outer += step)
+        if (anyLanded(scene, rays, cells, axis, fromEnd ? cells[axis] - 1 - outer : outer, stride)) return outer;
     return -1;
 }
 
@@ -49,31 +48,40 @@ int outermostLanded(const RenderScene& scene, const CurvedRayMap& rays, const gl
 PictureExtent landedExtent(const RenderScene& scene, const core::Camera& camera, const CurvedRayMethod& method,
                            const PictureExtent& bound)
 {
-    const glm::dvec2 reach = bound.imagePlane;
-    if (!(std::isfinite(reach.x) && std::isfinite(reach.y) && reach.x > 0.0 && reach.y > 0.0)) return bound;
+    const glm::dvec2 size = bound.hi - bound.lo;
+    if (!(std::isfinite(size.x) && std::isfinite(size.y) && size.x > 0.0 && size.y > 0.0)) return bound;
 
-    // Square cells covering [-reach, reach] on both axes: the probe camera's image is that rectangle.
-    const double cell = 2.0 * std::max(reach.x, reach.y) / kLandedExtentProbes;
-    const glm::ivec2 cells(std::max(1, int(std::ceil(2.0 * reach.x / cell))), std::max(1, int(std::ceil(2.0 * reach.y / cell))));
+    // Square cells covering the bound: the probe camera's image is that rectangle (or a little more).
+    const double cell = std::max(size.x, size.y) / kLandedExtentProbes;
+    const glm::ivec2 cells(std::max(1, int(std::ceil(size.x / cell))), std::max(1, int(std::ceil(size.y / cell))));
     core::Camera probe = camera;
     const double halfHeight = 0.5 * cells.y * cell;
     if (camera.orthographic) probe.orthoHalfHeight = halfHeight;
     else probe.fovYDeg = 2.0 * std::atan(halfHeight) * 180.0 / M_PI;
+    probe.windowCentre = 0.5 * (bound.lo + bound.hi);
     const core::CameraFrame frame(probe, cells.x, cells.y);
     const CurvedRayMap rays(scene, frame, method);
 
-    // Per axis, the outermost pair of lines (columns, then rows) holding a landed cell, swept from
-    // the border inward so that the rings inside are never traced: first on a coarse lattice, then
-    // cell by cell from one coarse line further out (from the border if the coarse lattice missed
-    // every landing); its reach plus one cell.
-    glm::dvec2 landed(0.0);
-    for (int axis = 0; axis < 2; ++axis) {
-        const int coarse = outermostLanded(scene, rays, cells, axis, kCoarseStride / 2, kCoarseStride, kCoarseStride);
-        const int outer = outermostLanded(scene, rays, cells, axis, std::max(0, coarse - kCoarseStride), 1, 1);
-        if (outer < 0) continue;
-        landed[axis] = std::min((0.5 * cells[axis] - outer) * cell + cell, reach[axis]);
-    }
-    return PictureExtent{landed, bound.fixed}.united(offsetMeshExtent(scene.mesh(), camera, 0.0));
+    // Per side (columns from the left and the right, rows from the top and the bottom), the
+    // outermost line holding a landed cell, swept from the border inward so that the rings inside
+    // are never traced: first on a coarse lattice, then cell by cell from one coarse line further
+    // out (from the border if the coarse lattice missed every landing); its reach plus one cell.
+    const glm::dvec2 corner = probe.windowCentre - 0.5 * glm::dvec2(cells) * cell;  // left, bottom
+    PictureExtent landed = PictureExtent::empty();
+    for (int axis = 0; axis < 2; ++axis)
+        for (bool fromEnd : {false, true}) {
+            const int coarse =
+                outermostLanded(scene, rays, cells, axis, fromEnd, kCoarseStride / 2, kCoarseStride, kCoarseStride);
+            const int outer = outermostLanded(scene, rays, cells, axis, fromEnd, std::max(0, coarse - kCoarseStride), 1, 1);
+            if (outer < 0) continue;
+            // Columns count from the left, rows from the top: the first border is low on x, high on y.
+            const bool high = (axis == 0) == fromEnd;
+            const double edge = corner[axis] + (high ? cells[axis] - outer : outer) * cell;
+            if (high) landed.hi[axis] = std::min(edge + cell, bound.hi[axis]);
+            else landed.lo[axis] = std::max(edge - cell, bound.lo[axis]);
+        }
+    landed.fixed = bound.fixed;
+    return landed.united(offsetMeshExtent(scene.mesh(), camera, 0.0));
 }
 
 }  // namespace ivis::render

@@ -52,8 +52,7 @@ std::unique_ptr<IndirectMap> MirrorMethod::indirectMap(const RenderScene& scene,
 
 PictureExtent MirrorMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
-    const PictureExtent footprint{mirrorFootprint(camera, mParams, scene.bvh(), core::bounds(scene.mesh())), glm::dvec2(0.0)};
-    return Method::pictureExtent(scene, camera).united(footprint);
+    return Method::pictureExtent(scene, camera).united(mirrorFootprint(camera, mParams, scene.bvh(), core::bounds(scene.mesh())));
 }
 
 const MethodInfo& mirrorMethodInfo()

@@ -44,7 +44,7 @@ RingLayout layoutRings(const core::CameraFrame& frame, const core::TriangleMesh&
 PictureExtent ringExtent(const core::Camera& camera, const core::TriangleMesh& mesh, const RingParams& params)
 {
     const Silhouette s = silhouette(core::CameraFrame(camera, 1, 1), mesh, params.centre);
-    return {glm::abs(s.centre) + s.radius, glm::dvec2(params.silhouetteGap + params.ringWidth)};
+    return {s.centre - s.radius, s.centre + s.radius, glm::dvec2(params.silhouetteGap + params.ringWidth)};
 }
 
 bool ringRayDirection(const RingLayout& layout, const core::CameraFrame& frame, const glm::dvec2& pixel,

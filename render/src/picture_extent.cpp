@@ -19,8 +19,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// Largest tangent k of a plane X = k Z through the eye (Z the depth, X the coordinate @a u along
 /// one image axis) that touches the ball of radius @a offset around (u, depth): tan(theta + beta)
-/// with tan(theta) = u / depth and sin(beta) = offset / r; +infinity once theta + beta reaches 90
-/// degrees or the eye is inside the ball.
+/// with tan(theta) = u / depth and sin(beta) = offset / r (negative for a ball wholly on the other
+/// side); +infinity once theta + beta reaches 90 degrees or the eye is inside the ball.
 double tangentReach(double u, double depth, double offset)
 {
     const double r2 = u * u + depth * depth, s2 = r2 - offset * offset;
@@ -32,9 +32,11 @@ double tangentReach(double u, double depth, double offset)
 
 }  // namespace
 
+PictureExtent PictureExtent::empty() { return {glm::dvec2(kInfinity), glm::dvec2(-kInfinity), glm::dvec2(0.0)}; }
+
 PictureExtent PictureExtent::united(const PictureExtent& other) const
 {
-    return {glm::max(imagePlane, other.imagePlane), glm::max(fixed, other.fixed)};
+    return {glm::min(lo, other.lo), glm::max(hi, other.hi), glm::max(fixed, other.fixed)};
 }
 
 double widestFramedHalfHeight(const core::Camera& camera)
@@ -48,25 +50,26 @@ PictureExtent offsetMeshExtent(const core::TriangleMesh& mesh, const core::Camer
     const core::CameraFrame frame(camera, 1, 1);
     const glm::dvec3 eye = camera.eye;
     const auto& positions = mesh.positions;
-    const glm::dvec2 reach = tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, positions.size(), 4096), glm::dvec2(0.0),
-        [&](const tbb::blocked_range<std::size_t>& range, glm::dvec2 far) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, positions.size(), 4096), PictureExtent::empty(),
+        [&](const tbb::blocked_range<std::size_t>& range, PictureExtent extent) {
             for (std::size_t i = range.begin(); i != range.end(); ++i) {
                 const glm::dvec3 d = glm::dvec3(positions[i]) - eye;
                 const glm::dvec2 u(glm::dot(d, frame.right()), glm::dot(d, frame.upVector()));
                 if (camera.orthographic) {
-                    far = glm::max(far, glm::abs(u) + offset);
+                    extent.lo = glm::min(extent.lo, u - offset);
+                    extent.hi = glm::max(extent.hi, u + offset);
                     continue;
                 }
                 const double depth = glm::dot(d, frame.forward());
-                for (int axis = 0; axis < 2; ++axis)
-                    far[axis] = std::max({far[axis], tangentReach(u[axis], depth, offset),
-                                          tangentReach(-u[axis], depth, offset)});
+                for (int axis = 0; axis < 2; ++axis) {
+                    extent.hi[axis] = std::max(extent.hi[axis], tangentReach(u[axis], depth, offset));
+                    extent.lo[axis] = std::min(extent.lo[axis], -tangentReach(-u[axis], depth, offset));
+                }
             }
-            return far;
+            return extent;
         },
-        [](const glm::dvec2& a, const glm::dvec2& b) { return glm::max(a, b); });
-    return {reach, glm::dvec2(0.0)};
+        [](const PictureExtent& a, const PictureExtent& b) { return a.united(b); });
 }
 
 }  // namespace ivis::render

@@ -92,7 +92,7 @@ bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray,
     return true;
 }
 
-glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
+PictureExtent mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
                            const core::Bounds3& meshBounds)
 {
     const core::CameraFrame frame(camera, 1, 1);
@@ -110,7 +110,7 @@ glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& param
         MirrorHit hit;
         return mayLand(p, hit);
     });
-    if (candidates.empty()) return glm::dvec2(0.0);
+    if (candidates.empty()) return PictureExtent::empty();
     const double coarseCell = 2.0 * widest / kCoarse;
     const glm::dvec2 lo = glm::max(candidates.lo - coarseCell, glm::dvec2(-widest));
     const glm::dvec2 hi = glm::min(candidates.hi + coarseCell, glm::dvec2(widest));
@@ -118,10 +118,16 @@ glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& param
         MirrorHit hit;
         return mayLand(p, hit) && bvh.intersect(hit.point, hit.normal).hit();
     });
-    if (footprint.empty()) return glm::dvec2(0.0);
-    const glm::dvec2 reach = glm::max(glm::abs(footprint.lo), glm::abs(footprint.hi)) + (hi - lo) / double(kFine);
+    if (footprint.empty()) return PictureExtent::empty();
+    const glm::dvec2 fineCell = (hi - lo) / double(kFine);
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    return {reach.x < widest ? reach.x : kInfinity, reach.y < widest ? reach.y : kInfinity};
+    PictureExtent extent;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double low = footprint.lo[axis] - fineCell[axis], high = footprint.hi[axis] + fineCell[axis];
+        extent.lo[axis] = low > -widest ? low : -kInfinity;
+        extent.hi[axis] = high < widest ? high : kInfinity;
+    }
+    return extent;
 }
 
 }  // namespace ivis::render

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -33,13 +34,14 @@ TEST(Framing, SphereGetsTheAnalyticFieldOfViewPlusTheMargin)
 {
     const core::Camera camera = core::Camera::fromAngles(70, 30, core::kCameraDistance, 20.0);
     for (double radius : {0.3, 1.0, 1.4}) {
-        const PictureExtent extent{glm::dvec2(sphereReach(radius)), glm::dvec2(0.0)};
+        const PictureExtent extent{glm::dvec2(-sphereReach(radius)), glm::dvec2(sphereReach(radius)), glm::dvec2(0.0)};
         bool fits = false;
         const core::Camera square = fitCamera(camera, extent, 1.0, &fits);
         EXPECT_TRUE(fits);
         EXPECT_NEAR(square.fovYDeg, 2.0 * std::atan(sphereReach(radius) / (1.0 - kFramingMargin)) * kDegrees, 1e-9);
         EXPECT_EQ(square.eye, camera.eye) << "only the field of view changes";
         EXPECT_EQ(square.target, camera.target);
+        EXPECT_EQ(square.windowCentre, glm::dvec2(0.0)) << "a picture round the view axis stays centred on it";
         EXPECT_NEAR(fitCamera(camera, extent, 2.0).fovYDeg, square.fovYDeg, 1e-9) << "wide: the height limits";
         EXPECT_NEAR(fitCamera(camera, extent, 0.5).fovYDeg,
                     2.0 * std::atan(sphereReach(radius) / (0.5 - kFramingMargin)) * kDegrees, 1e-9);
@@ -60,23 +62,54 @@ TEST(Framing, SphereGetsTheAnalyticFieldOfViewPlusTheMargin)
 TEST(Framing, FixedPartOrthographicAndUnframablePictures)
 {
     const core::Camera camera = core::Camera::fromAngles(90, 0);
-    const PictureExtent rings{glm::dvec2(0.4, 0.3), glm::dvec2(0.32)};
+    const PictureExtent rings{glm::dvec2(-0.4, -0.3), glm::dvec2(0.4, 0.3), glm::dvec2(0.32)};
     EXPECT_NEAR(std::tan(0.5 * fitCamera(camera, rings, 1.0).fovYDeg / kDegrees), 0.4 / (1.0 - kFramingMargin - 0.32), 1e-12);
-    EXPECT_THROW(fitCamera(camera, {glm::dvec2(0.4), glm::dvec2(1.0 - kFramingMargin)}, 1.0), ValueError);
+    EXPECT_THROW(fitCamera(camera, {glm::dvec2(-0.4), glm::dvec2(0.4), glm::dvec2(1.0 - kFramingMargin)}, 1.0), ValueError);
     EXPECT_THROW(fitCamera(camera, rings, 0.0), ValueError);
 
     core::Camera ortho = camera;
     ortho.orthographic = true;
-    const core::Camera fitted = fitCamera(ortho, {glm::dvec2(1.2, 0.7), glm::dvec2(0.0)}, 1.5);
+    const core::Camera fitted = fitCamera(ortho, {glm::dvec2(-1.2, -0.7), glm::dvec2(1.2, 0.7), glm::dvec2(0.0)}, 1.5);
     EXPECT_NEAR(fitted.orthoHalfHeight, std::max(1.2 / (1.5 - kFramingMargin), 0.7 / (1.0 - kFramingMargin)), 1e-12);
     EXPECT_EQ(fitted.fovYDeg, camera.fovYDeg);
 
     bool fits = true;
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_NEAR(fitCamera(camera, {glm::dvec2(inf, 0.1), glm::dvec2(0.0)}, 1.0, &fits).fovYDeg, kMaxFramedFovYDeg, 1e-9);
+    const core::Camera unbounded = fitCamera(camera, {glm::dvec2(-0.1), glm::dvec2(inf, 0.1), glm::dvec2(0.0)}, 1.0, &fits);
+    EXPECT_NEAR(unbounded.fovYDeg, kMaxFramedFovYDeg, 1e-9);
+    EXPECT_EQ(unbounded.windowCentre, glm::dvec2(0.0));
     EXPECT_FALSE(fits);
-    EXPECT_NEAR(fitCamera(camera, {glm::dvec2(50.0), glm::dvec2(0.0)}, 1.0, &fits).fovYDeg, kMaxFramedFovYDeg, 1e-9);
+    EXPECT_NEAR(fitCamera(camera, {glm::dvec2(-50.0), glm::dvec2(50.0), glm::dvec2(0.0)}, 1.0, &fits).fovYDeg,
+                kMaxFramedFovYDeg, 1e-9);
     EXPECT_FALSE(fits);
+}
+
+// A picture lying to one side of the view axis is centred by the window, not by widening the view:
+// the window centre is the middle of its reach, the field of view its half span; the image's
+// border then runs through the picture's edges (plus the margin), on both sides.
+TEST(Framing, OffAxisPictureIsCentredByTheWindow)
+{
+    for (const bool orthographic : {false, true}) {
+        core::Camera camera = core::Camera::fromAngles(60, -20);
+        camera.orthographic = orthographic;
+        const PictureExtent extent{glm::dvec2(0.1, -0.5), glm::dvec2(0.7, 0.3), glm::dvec2(0.0)};
+        const core::Camera framed = fitCamera(camera, extent, 1.0);
+        EXPECT_NEAR(framed.windowCentre.x, 0.4, 1e-12);
+        EXPECT_NEAR(framed.windowCentre.y, -0.1, 1e-12);
+        const core::CameraFrame frame(framed, 100, 100);
+        EXPECT_NEAR(frame.imagePlaneHalfHeight(), 0.4 / (1.0 - kFramingMargin), 1e-12) << "the larger half span";
+        // The image's corners on the image plane: the picture's reach grown by the margin.
+        const glm::dvec2 topLeft = frame.imagePlane(frame.ray(0.0, 0.0).origin + frame.ray(0.0, 0.0).direction);
+        const glm::dvec2 bottomRight = frame.imagePlane(frame.ray(100.0, 100.0).origin + frame.ray(100.0, 100.0).direction);
+        const double margin = kFramingMargin * frame.imagePlaneHalfHeight();
+        EXPECT_NEAR(topLeft.x, 0.4 - frame.imagePlaneHalfHeight(), 1e-9) << "the looser axis: room either side";
+        EXPECT_NEAR(bottomRight.y, -0.5 - margin, 1e-9) << "the tighter axis: the margin below";
+        EXPECT_NEAR(topLeft.y, 0.3 + margin, 1e-9) << "and above";
+        EXPECT_NEAR(0.5 * (topLeft.x + bottomRight.x), 0.4, 1e-9);
+        EXPECT_NEAR(frame.project(camera.eye + glm::normalize(camera.target - camera.eye)).x,
+                    50.0 - 0.4 / frame.imagePlaneHalfHeight() * 50.0, 1e-6)
+            << "the view axis lies left of the image centre";
+    }
 }
 
 /// The 20 seeded random views of the acceptance test, uniform over the sphere.
@@ -98,9 +131,9 @@ int toBorder(int x, int y, int size) { return std::min({x, y, size - 1 - x, size
 // The acceptance test of issue 12: on the generated vessel tree from 20 random views, at 200 x 200,
 // no pixel of the outermost rows and columns is indirect, and none launches an indirect ray (the
 // hull or the rings reach it; the mirror launches everywhere and inversevis-wrap is framed to its
-// landings, so only their landings count). The picture is not small either: what the method may
-// show (the object, the hull or the rings, the mirror's and the wrap rings' landings) comes within
-// 12 pixels of the border (the margin is 5).
+// landings, so only their landings count). The picture is not small or off-centre either: what the
+// method may show (the object, the hull or the rings, the mirror's and the wrap rings' landings)
+// comes within 12 pixels of both borders of one axis (the margin is 5).
 TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
 {
     const test::SceneFixture& tree = test::vesselScene();
@@ -125,7 +158,9 @@ TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
             std::unique_ptr<CurvedRayMap> curved;
             if (method->curved()) curved = std::make_unique<CurvedRayMap>(scene, frame, *method->curved());
             auto sampler = scene.distance().sampler();
-            int shown = kSize;  // nearest approach to the border of what the method may show (below 13)
+            // Nearest approach to each side (left, right, top, bottom) of what the method may show,
+            // looked for within 13 pixels of the border.
+            std::array<int, 4> side{kSize, kSize, kSize, kSize};
             for (int y = 0; y < kSize; ++y)
                 for (int x = 0; x < kSize; ++x) {
                     const int border = toBorder(x, y, kSize);
@@ -136,16 +171,20 @@ TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
                         EXPECT_TRUE(framedToLandings || !launched)
                             << name << " view " << v << " pixel " << x << "," << y;
                     }
-                    if (border >= std::min(shown, 13)) continue;
+                    if (border >= 13) continue;
                     CurvedRayStart start;
                     const bool inPicture = r != Region::Background ||
                                            (!framedToLandings && (curved ? curved->start(x + 0.5, y + 0.5, sampler, start)
                                                                          : map->map(x + 0.5, y + 0.5, sampler).launched));
-                    if (inPicture) shown = border;
+                    if (!inPicture) continue;
+                    side = {std::min(side[0], x), std::min(side[1], kSize - 1 - x), std::min(side[2], y),
+                            std::min(side[3], kSize - 1 - y)};
                 }
+            // Centred: on one axis the picture comes near both borders (the margin is 5 pixels).
+            const int shown = std::min(std::max(side[0], side[1]), std::max(side[2], side[3]));
             nearest = std::min(nearest, shown);
             farthest = std::max(farthest, shown);
-            EXPECT_LE(shown, 12) << name << " view " << v << ": the picture is smaller than the frame allows";
+            EXPECT_LE(shown, 12) << name << " view " << v << ": the picture is smaller or less centred than the frame allows";
         }
         std::cout << "[ framing  ] " << name << ": over 20 views the picture comes within " << nearest << " to "
                   << farthest << " pixels of the border of 200 x 200\n";

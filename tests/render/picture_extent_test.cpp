@@ -1,5 +1,6 @@
-// offsetMeshExtent against its definition: the image-plane reach of the mesh grown by a ball, from
-// the analytic tangent cone of one ball and from brute-force samples on every vertex's ball.
+// offsetMeshExtent against its definition: the image-plane reach of the mesh grown by a ball on
+// either side of the view axis, from the analytic tangent cone of one ball and from brute-force
+// samples on every vertex's ball.
 #include "test_support.h"
 
 #include <ivis/core/errors.h>
@@ -26,17 +27,31 @@ core::TriangleMesh pointMesh(const glm::vec3& p)
     return mesh;
 }
 
-/// Largest |x| and |y| on the image plane over @a count points on the sphere of radius @a offset
-/// around every vertex (brute force).
-glm::dvec2 sampledReach(const core::TriangleMesh& mesh, const core::Camera& camera, double offset, int count)
+/// Least and greatest x and y on the image plane over @a count points on the sphere of radius
+/// @a offset around every vertex (brute force).
+PictureExtent sampledExtent(const core::TriangleMesh& mesh, const core::Camera& camera, double offset, int count)
 {
     const core::CameraFrame frame(camera, 1, 1);
     const std::vector<glm::vec3> directions = test::fibonacciDirections(count);
-    glm::dvec2 reach(0.0);
+    PictureExtent extent = PictureExtent::empty();
     for (const glm::vec3& p : mesh.positions)
-        for (const glm::vec3& d : directions)
-            reach = glm::max(reach, glm::abs(frame.imagePlane(glm::dvec3(p) + offset * glm::dvec3(d))));
-    return reach;
+        for (const glm::vec3& d : directions) {
+            const glm::dvec2 s = frame.imagePlane(glm::dvec3(p) + offset * glm::dvec3(d));
+            extent.lo = glm::min(extent.lo, s);
+            extent.hi = glm::max(extent.hi, s);
+        }
+    return extent;
+}
+
+/// Expects @a sampled within [@a below, @a above] of @a exact on each side (the samples lie inside).
+void expectSampledWithin(const PictureExtent& exact, const PictureExtent& sampled, double below, double above)
+{
+    for (int axis = 0; axis < 2; ++axis) {
+        EXPECT_LE(sampled.hi[axis], exact.hi[axis] + above) << "axis " << axis;
+        EXPECT_GE(sampled.hi[axis], exact.hi[axis] - below) << "axis " << axis;
+        EXPECT_GE(sampled.lo[axis], exact.lo[axis] - above) << "axis " << axis;
+        EXPECT_LE(sampled.lo[axis], exact.lo[axis] + below) << "axis " << axis;
+    }
 }
 
 // A ball of radius R at the target, seen from distance 2.5: the tangent cone's half-angle is
@@ -49,8 +64,10 @@ TEST(PictureExtent, BallAtTheTargetReachesTheTangentConesAngle)
         for (double radius : {0.0, 0.4, 1.0, 1.4, 2.2}) {
             const PictureExtent extent = offsetMeshExtent(mesh, camera, radius);
             const double expected = std::tan(std::asin(radius / 2.5));
-            EXPECT_NEAR(extent.imagePlane.x, expected, 1e-6) << radius;
-            EXPECT_NEAR(extent.imagePlane.y, expected, 1e-6) << radius;
+            EXPECT_NEAR(extent.hi.x, expected, 1e-6) << radius;
+            EXPECT_NEAR(extent.hi.y, expected, 1e-6) << radius;
+            EXPECT_NEAR(extent.lo.x, -expected, 1e-6) << radius;
+            EXPECT_NEAR(extent.lo.y, -expected, 1e-6) << radius;
             EXPECT_EQ(extent.fixed, glm::dvec2(0.0));
         }
 }
@@ -69,11 +86,8 @@ TEST(PictureExtent, BallOffTheAxisMatchesSampledPointsOnItsSphere)
         camera.orthographic = trial % 4 == 3;
         const core::TriangleMesh mesh = pointMesh(centre);
         const PictureExtent extent = offsetMeshExtent(mesh, camera, radius);
-        const glm::dvec2 sampled = sampledReach(mesh, camera, radius, 20000);
-        for (int axis = 0; axis < 2; ++axis) {
-            EXPECT_LE(sampled[axis], extent.imagePlane[axis] + 1e-9) << "trial " << trial;
-            EXPECT_GE(sampled[axis], extent.imagePlane[axis] - 2e-3) << "trial " << trial;
-        }
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        expectSampledWithin(extent, sampledExtent(mesh, camera, radius, 20000), 2e-3, 1e-9);
     }
 }
 
@@ -86,12 +100,9 @@ TEST(PictureExtent, MeshGrownByTheHullOffsetMatchesBruteForce)
                                        core::Camera::fromAngles(130, 200), core::Camera::fromAngles(5, -20)})
         for (double offset : {0.0, 0.4}) {
             const PictureExtent extent = offsetMeshExtent(mesh, camera, offset);
-            const glm::dvec2 sampled = sampledReach(mesh, camera, offset, offset > 0.0 ? 200 : 1);
-            for (int axis = 0; axis < 2; ++axis) {
-                EXPECT_LE(sampled[axis], extent.imagePlane[axis] + 1e-9);
-                // 200 directions lie within about 8 degrees of any direction: cos(8 deg) of the offset.
-                EXPECT_GE(sampled[axis], extent.imagePlane[axis] - (offset > 0.0 ? 0.01 * offset + 1e-9 : 1e-9));
-            }
+            // 200 directions lie within about 8 degrees of any direction: cos(8 deg) of the offset.
+            expectSampledWithin(extent, sampledExtent(mesh, camera, offset, offset > 0.0 ? 200 : 1),
+                                offset > 0.0 ? 0.01 * offset + 1e-9 : 1e-9, 1e-9);
         }
 }
 
@@ -100,22 +111,29 @@ TEST(PictureExtent, MeshGrownByTheHullOffsetMatchesBruteForce)
 TEST(PictureExtent, BallReachingTheEyesPlaneIsUnbounded)
 {
     const core::Camera camera = core::Camera::fromAngles(90, 0);  // eye (0, 0, 2.5) looking down -z
-    EXPECT_TRUE(std::isinf(offsetMeshExtent(pointMesh(glm::vec3(0.0f, 0.0f, 2.0f)), camera, 0.6).imagePlane.x));
+    EXPECT_TRUE(std::isinf(offsetMeshExtent(pointMesh(glm::vec3(0.0f, 0.0f, 2.0f)), camera, 0.6).hi.x));
+    // Beside the eye on its right, across its plane: unbounded to the right and up and down, not to the left.
     const PictureExtent crossing = offsetMeshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.4f)), camera, 0.2);
-    EXPECT_TRUE(std::isinf(crossing.imagePlane.x));
-    EXPECT_TRUE(std::isinf(crossing.imagePlane.y));
+    EXPECT_TRUE(std::isinf(crossing.hi.x));
+    EXPECT_TRUE(std::isinf(crossing.hi.y));
+    EXPECT_TRUE(std::isinf(crossing.lo.y));
+    EXPECT_NEAR(crossing.lo.x, std::tan(std::atan(1.0 / 0.1) - std::asin(0.2 / std::sqrt(1.01))), 1e-5);  // float positions
     const PictureExtent near = offsetMeshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.29f)), camera, 0.2);
-    EXPECT_TRUE(std::isfinite(near.imagePlane.x));
-    EXPECT_GT(near.imagePlane.x, 50.0);
+    EXPECT_TRUE(std::isfinite(near.hi.x));
+    EXPECT_GT(near.hi.x, 50.0);
     EXPECT_THROW(offsetMeshExtent(pointMesh(glm::vec3(0.0f)), camera, -0.1), ValueError);
 }
 
-TEST(PictureExtent, UnitedTakesTheFartherReachOnEachAxis)
+TEST(PictureExtent, UnitedTakesTheFartherReachOnEachSide)
 {
-    const PictureExtent a{{0.2, 0.9}, {0.1, 0.0}}, b{{0.5, 0.3}, {0.0, 0.2}};
+    const PictureExtent a{{-0.2, 0.1}, {0.4, 0.9}, {0.1, 0.0}}, b{{-0.5, -0.3}, {0.1, 1.2}, {0.0, 0.2}};
     const PictureExtent u = a.united(b);
-    EXPECT_EQ(u.imagePlane, glm::dvec2(0.5, 0.9));
+    EXPECT_EQ(u.lo, glm::dvec2(-0.5, -0.3));
+    EXPECT_EQ(u.hi, glm::dvec2(0.4, 1.2));
     EXPECT_EQ(u.fixed, glm::dvec2(0.1, 0.2));
+    const PictureExtent same = a.united(PictureExtent::empty());
+    EXPECT_EQ(same.lo, a.lo);
+    EXPECT_EQ(same.hi, a.hi);
 }
 
 }  // namespace

@@ -179,25 +179,28 @@ TEST(QuadraticMirror, BowlNormalsTiltTowardTheAxis)
                 1e-5);
 }
 
-/// Brute force of mirrorFootprint: the image-plane reach of the pixel centres of a @a size^2 picture
-/// at the widest framed field of view whose mirror ray lands (the method's own sphere tracing).
-glm::dvec2 landedReach(const RenderScene& scene, const core::Camera& camera, const MethodPtr& mirror, int size)
+/// Brute force of mirrorFootprint: the image-plane extent of the pixel centres of a @a size^2
+/// picture at the widest framed field of view whose mirror ray lands (the method's own sphere tracing).
+PictureExtent landedReach(const RenderScene& scene, const core::Camera& camera, const MethodPtr& mirror, int size)
 {
     core::Camera widest = camera;
     widest.fovYDeg = kMaxFramedFovYDeg;
     const core::CameraFrame frame(widest, size, size);
     const std::unique_ptr<IndirectMap> map = mirror->indirectMap(scene, frame);
     auto sampler = scene.distance().sampler();
-    glm::dvec2 reach(0.0);
+    PictureExtent reach = PictureExtent::empty();
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x)
-            if (map->map(x + 0.5, y + 0.5, sampler).region == Region::Indirect)
-                reach = glm::max(reach, glm::abs(frame.imagePlane(frame.ray(x + 0.5, y + 0.5).origin +
-                                                                  frame.ray(x + 0.5, y + 0.5).direction)));
+            if (map->map(x + 0.5, y + 0.5, sampler).region == Region::Indirect) {
+                const core::CameraRay ray = frame.ray(x + 0.5, y + 0.5);
+                const glm::dvec2 s = frame.imagePlane(ray.origin + ray.direction);
+                reach.lo = glm::min(reach.lo, s);
+                reach.hi = glm::max(reach.hi, s);
+            }
     return reach;
 }
 
-// The footprint's reach is that of the pixels whose mirror ray lands, found by brute force at
+// The footprint's reach on each side is that of the pixels whose mirror ray lands, found by brute force at
 // 500 x 500 over the widest framed image (pixel 0.015 on the image plane): within three such
 // pixels either way (the footprint adds one fine cell; a landing also counts a ray that passes
 // within half a voxel of the surface, which the footprint's ray casts do not).
@@ -214,11 +217,13 @@ TEST(QuadraticMirror, FootprintReachesAsFarAsTheLandingRays)
                 const MethodPtr mirror = makeMethod("mirror", {{"mirror_w", w}});
                 const auto& params = dynamic_cast<const MirrorMethod&>(*mirror).params();
                 const RenderScene& scene = *fixture->scene;
-                const glm::dvec2 footprint = mirrorFootprint(camera, params, scene.bvh(), core::bounds(scene.mesh()));
-                const glm::dvec2 brute = landedReach(scene, camera, mirror, kSize);
-                ASSERT_GT(brute.x, 0.1) << name;
-                for (int axis = 0; axis < 2; ++axis)
-                    EXPECT_NEAR(footprint[axis], brute[axis], 3.0 * pixel) << name << " w1 " << w[0] << " axis " << axis;
+                const PictureExtent footprint = mirrorFootprint(camera, params, scene.bvh(), core::bounds(scene.mesh()));
+                const PictureExtent brute = landedReach(scene, camera, mirror, kSize);
+                ASSERT_GT(brute.hi.x - brute.lo.x, 0.1) << name;
+                for (int axis = 0; axis < 2; ++axis) {
+                    EXPECT_NEAR(footprint.lo[axis], brute.lo[axis], 3.0 * pixel) << name << " w1 " << w[0] << " axis " << axis;
+                    EXPECT_NEAR(footprint.hi[axis], brute.hi[axis], 3.0 * pixel) << name << " w1 " << w[0] << " axis " << axis;
+                }
             }
 }
 

@@ -28,13 +28,18 @@ struct Camera {
     double fovYDeg = kDefaultFovYDeg;  ///< vertical field of view (perspective)
     bool orthographic = false;
     double orthoHalfHeight = 1.6;      ///< half the view height in world units (orthographic)
+    /// The image's centre on the image plane (CameraFrame::imagePlane units), as VTK's window
+    /// centre: framing shifts it to centre a picture that lies to one side of the view axis, which
+    /// stays on the target.
+    glm::dvec2 windowCentre{0.0};
 
     /// @brief Eye on the sphere of @a radius around the origin at polar @a thetaDeg, azimuth @a phiDeg.
     static Camera fromAngles(double thetaDeg, double phiDeg, double radius = kCameraDistance,
                              double fovYDeg = kDefaultFovYDeg);
     /// @brief Polar and azimuth angles (degrees) of the eye around the target.
     glm::dvec2 angles() const;
-    /// @brief Throws ValueError unless eye != target, up is not parallel to the view, 0 < fov < 180.
+    /// @brief Throws ValueError unless eye != target, up is not parallel to the view, 0 < fov < 180,
+    ///        the window centre is finite.
     void validate() const;
 };
 
@@ -58,7 +63,8 @@ public:
     ///        view axis: at unit distance from the eye (perspective: the tangents of its angles) or
     ///        in world units (orthographic). Independent of the field of view and the image size.
     glm::dvec2 imagePlane(const glm::dvec3& world) const;
-    /// @brief The camera ray through image-plane point @a point (as imagePlane() measures it).
+    /// @brief The camera ray through image-plane point @a point (as imagePlane() measures it;
+    ///        the image centre is at Camera::windowCentre).
     CameraRay rayThrough(const glm::dvec2& point) const;
     /// @brief Half the image height on the image plane: tan(fov / 2) or orthoHalfHeight.
     double imagePlaneHalfHeight() const { return mHalfHeight; }
@@ -82,7 +88,8 @@ private:
 };
 
 /// @brief Reads a camera JSON file {"eye":[x,y,z],"target":[...],"up":[...],"fov_y_deg":f,
-///        "orthographic":b,"ortho_half_height":f}; missing keys keep their defaults.
+///        "orthographic":b,"ortho_half_height":f,"window_centre":[x,y]}; missing keys keep their
+///        defaults.
 /// @throw InputError naming the file for unreadable JSON or bad values
 Camera readCameraJson(const std::string& path);
 

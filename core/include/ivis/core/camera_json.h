@@ -1,7 +1,8 @@
 /// @file camera_json.h
 /// @brief A camera as JSON: {"eye":[x,y,z],"target":[...],"up":[...],"fov_y_deg":f,
-///        "orthographic":b,"ortho_half_height":f} (plus "theta_deg"/"phi_deg" for reference), the
-///        format of --camera and --camera-out files and of a view file's "camera".
+///        "orthographic":b,"ortho_half_height":f,"window_centre":[x,y]} (plus "theta_deg"/"phi_deg"
+///        for reference), the format of --camera and --camera-out files and of a view file's
+///        "camera".
 #pragma once
 
 #include <ivis/core/camera.h>

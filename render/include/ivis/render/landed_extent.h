@@ -16,8 +16,8 @@ inline constexpr int kLandedExtentProbes = 256;
 
 /// @brief The extent of the mesh united with that of the pixels whose curved rays of @a method
 ///        land, seen from @a camera: probed on square cells (kLandedExtentProbes along the longer
-///        side) over @a bound, which must hold every pixel the method may draw; per axis the
-///        outermost landed cell's outer edge plus one cell, never beyond @a bound.
+///        side) over @a bound, which must hold every pixel the method may draw; per side of each
+///        axis the outermost landed cell's outer edge plus one cell, never beyond @a bound.
 /// @return @a bound itself when it is not finite (it cannot be framed anyway)
 PictureExtent landedExtent(const RenderScene& scene, const core::Camera& camera, const CurvedRayMethod& method,
                            const PictureExtent& bound);

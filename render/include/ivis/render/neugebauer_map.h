@@ -36,8 +36,8 @@ struct RingLayout {
 ///        plus the gap; the back disc sits in the upper left corner.
 RingLayout layoutRings(const core::CameraFrame& frame, const core::TriangleMesh& mesh, const RingParams& params);
 
-/// @brief How far the rings seen from @a camera reach: the projected centre's offset plus the
-///        silhouette radius on the image plane, and the gap plus the ring width as a fixed part
+/// @brief How far the rings seen from @a camera reach: the disc of the silhouette radius round the
+///        projected centre on the image plane, and the gap plus the ring width as a fixed part
 ///        (the back-side disc always sits in its corner).
 PictureExtent ringExtent(const core::Camera& camera, const core::TriangleMesh& mesh, const RingParams& params);
 

@@ -7,6 +7,7 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/triangle_bvh.h>
+#include <ivis/render/picture_extent.h>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -40,9 +41,9 @@ bool intersectMirror(const core::CameraFrame& frame, const core::CameraRay& ray,
 ///        (widestFramedHalfHeight()) by a cheap test (the normal ray meets @a meshBounds) and then
 ///        on a 128^2 grid over those candidates by the exact one, plus one fine cell.
 /// @param meshBounds bounds of the mesh of @a bvh
-/// @return largest |x| and |y| over the footprint: 0 when empty, +infinity when it reaches the
-///         edge of the widest framed image
-glm::dvec2 mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
+/// @return the footprint's extent (PictureExtent::empty() when empty), infinite on a side where it
+///         reaches the edge of the widest framed image
+PictureExtent mirrorFootprint(const core::Camera& camera, const MirrorParams& params, const core::TriangleBvh& bvh,
                            const core::Bounds3& meshBounds);
 
 }  // namespace ivis::render
