@@ -124,6 +124,31 @@ TEST(Camera, ProjectInvertsRayForBothProjections)
     }
 }
 
+// A window centre shifts the image on the image plane: the same world point moves by the shift in
+// image half-heights, project still inverts ray, and the view axis leaves the image centre.
+TEST(Camera, WindowCentreShiftsTheImageOnTheImagePlane)
+{
+    for (bool orthographic : {false, true}) {
+        Camera camera = Camera::fromAngles(70.0, 25.0, kCameraDistance, 50.0);
+        camera.orthographic = orthographic;
+        const CameraFrame centred(camera, 80, 60);
+        camera.windowCentre = {0.2, -0.1};
+        const CameraFrame shifted(camera, 80, 60);
+        const glm::dvec3 point(0.3, -0.4, 0.2);
+        const double pixelsPerUnit = 30.0 / shifted.imagePlaneHalfHeight();
+        EXPECT_NEAR(shifted.project(point).x, centred.project(point).x - 0.2 * pixelsPerUnit, 1e-9);
+        EXPECT_NEAR(shifted.project(point).y, centred.project(point).y - 0.1 * pixelsPerUnit, 1e-9);
+        EXPECT_EQ(shifted.imagePlane(point), centred.imagePlane(point)) << "the image plane itself stays";
+        for (double x : {0.0, 13.5, 80.0})
+            for (double y : {0.0, 41.25, 60.0}) {
+                const CameraRay ray = shifted.ray(x, y);
+                const glm::dvec2 pixel = shifted.project(ray.origin + 1.7 * ray.direction);
+                EXPECT_NEAR(pixel.x, x, 1e-9);
+                EXPECT_NEAR(pixel.y, y, 1e-9);
+            }
+    }
+}
+
 TEST(Camera, AnglesInvertFromAngles)
 {
     for (double theta = 5.0; theta < 180.0; theta += 17.5)
@@ -155,6 +180,7 @@ TEST(Camera, JsonRoundTrip)
         camera.fovYDeg = 41.3;
         camera.orthographic = orthographic;
         camera.orthoHalfHeight = 0.95;
+        camera.windowCentre = {0.0123456789, -0.75};
         const std::string path = dir.file(orthographic ? "ortho.json" : "persp.json");
         writeCameraJson(camera, path);
         const Camera read = readCameraJson(path);
@@ -164,6 +190,7 @@ TEST(Camera, JsonRoundTrip)
         EXPECT_EQ(read.fovYDeg, camera.fovYDeg);
         EXPECT_EQ(read.orthographic, camera.orthographic);
         EXPECT_EQ(read.orthoHalfHeight, camera.orthoHalfHeight);
+        EXPECT_EQ(read.windowCentre, camera.windowCentre);
     }
     // Missing keys keep their defaults.
     test::writeFile(dir.file("partial.json"), "{\"eye\": [1, 2, 3]}");
@@ -201,6 +228,12 @@ TEST(Camera, BadJsonThrowsInputErrorNamingThePath)
     expectBadCameraFile(dir.file("eye_is_target.json"));
     test::writeFile(dir.file("bad_fov.json"), "{\"fov_y_deg\": 180}");
     expectBadCameraFile(dir.file("bad_fov.json"));
+    test::writeFile(dir.file("short_window.json"), "{\"window_centre\": [0.1]}");
+    expectBadCameraFile(dir.file("short_window.json"));
+    test::writeFile(dir.file("text_window.json"), "{\"window_centre\": [\"left\", 0]}");
+    expectBadCameraFile(dir.file("text_window.json"));
+    test::writeFile(dir.file("huge_window.json"), "{\"window_centre\": [1e400, 0]}");
+    expectBadCameraFile(dir.file("huge_window.json"));
     expectBadCameraFile(dir.file("missing.json"));
 }
 
