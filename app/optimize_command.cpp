@@ -201,7 +201,7 @@ Command addOptimizeCommand(CLI::App& app)
         if (isSeries) json["series"] = seriesStats;
         if (result.readable) {
             json["readability"] = readableSettingJson(*result.readable);
-            core::logInfo("readability step: " + readableSettingLine(*result.readable));
+            core::logInfo(readableSettingLine(*result.readable));
         }
         if (!options->json.empty()) writeJsonFile(json, options->json);
         core::logInfo(best.method->name() + ": best view theta " +

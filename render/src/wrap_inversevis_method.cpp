@@ -52,7 +52,7 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     const float length = glm::length(gradient);
     const glm::vec3 outward = length > 0.0f ? gradient / length : glm::vec3(0.0f);
     start.velocityPerAlpha = glm::normalize(glm::normalize(start.velocityPerAlpha) + mLaunch.tilt * start.ring * outward);
-    start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);  // launchSensitivity differentiates this
+    start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);
 
     // Where rays fly smoothly, the landing moves along a smooth curve as the launch speed changes,
     // however fast; where they fly chaotically, a slightly slower and a slightly faster launch
@@ -75,15 +75,6 @@ glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int 
     return start.alpha * start.velocityPerAlpha;
 }
 
-bool WrapInverseVisMethod::launchSensitivity(const CurvedRayStart& start, int /*launch*/,
-                                             LaunchSensitivity& sensitivity) const
-{
-    // alpha = speed * t (2 - t) moves with the speed by t (2 - t).
-    sensitivity.direction = start.velocityPerAlpha;
-    sensitivity.perParameter = {double(start.ring * (2.0f - start.ring))};
-    return true;
-}
-
 PictureExtent WrapInverseVisMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
     return landedExtent(scene, camera, *this, CurvedRayMethod::pictureExtent(scene, camera));
@@ -98,15 +89,13 @@ const MethodInfo& wrapInverseVisMethodInfo()
                  "silhouette in rings as wide as each part is thick (beyond the paper)";
         const WrapLaunch defaults;
         i.parameters = {
-            {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha, true},
+            {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha},
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
             {"stable_shift", "largest bend (normalised units) of the landings of alpha - 0.01, alpha, alpha + 0.01; rays that bend more fly chaotically and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f}};
         for (const ParameterSpec& spec : curvedRaySpecs()) i.parameters.push_back(spec);
-        i.scannedParameter = "wrap_speed";
         i.readabilityParameter = "stable_shift";
-        i.tangentLinearGradient = true;
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;
             launch.speed = v.at("wrap_speed")[0];

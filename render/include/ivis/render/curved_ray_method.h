@@ -70,9 +70,14 @@ public:
     }
     /// @brief How often a ray that does not land is launched again.
     virtual int relaunches() const { return 0; }
-    /// @brief The sensitivity of launch @a launch's velocity to the optimised parameters.
+    /// @brief The sensitivity of launch @a launch's velocity to the optimised parameters; the
+    ///        default: none (a method without optimised launch parameters).
     /// @return false where the launch does not move with them (e.g. a clamped alpha)
-    virtual bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const = 0;
+    virtual bool launchSensitivity(const CurvedRayStart& /*start*/, int /*launch*/,
+                                   LaunchSensitivity& /*sensitivity*/) const
+    {
+        return false;
+    }
 
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     /// @brief The hull {phi = hull_offset}: the mesh grown by the hull offset (offsetMeshExtent).

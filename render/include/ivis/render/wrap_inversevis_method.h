@@ -19,8 +19,9 @@ struct WrapLaunch {
     float stableShift = 0.005f;  ///< largest |P(alpha - d) + P(alpha + d) - 2 P(alpha)|, d = 0.01 (else not drawn)
 };
 
-/// @brief Description of `inversevis-wrap`: wrap_speed (optimised), wrap_tilt, ring_scale,
-///        stable_shift, hull_offset, step, max_steps.
+/// @brief Description of `inversevis-wrap`: wrap_speed, wrap_tilt, ring_scale, stable_shift (the
+///        readability parameter), hull_offset, step, max_steps; none is optimised by the ascent
+///        (each ray's speed and stability are set when it is aimed, docs/optimisation.md).
 const MethodInfo& wrapInverseVisMethodInfo();
 
 /// @brief Curved rays from the closest approach, launched by WrapLaunch.
@@ -35,7 +36,6 @@ public:
     ///        outside the ring or where the landing is unstable.
     bool aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const override;
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
-    bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const override;
     /// @brief The object and the pixels whose rays land (landedExtent within the hull): the rings
     ///        are narrower than the hull round thin parts and where their outer rays are not drawn.
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
