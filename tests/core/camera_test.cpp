@@ -1,5 +1,5 @@
 // Camera: the documented angle convention (including the poles), ray/project as inverses for both
-// projections, angles() as the inverse of fromAngles, and the JSON files.
+// projections, the window centre's shift, angles() as the inverse of fromAngles, and the JSON files.
 #include <ivis/core/camera.h>
 #include <ivis/core/errors.h>
 
@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace ivis::core {
 namespace {
@@ -214,26 +216,21 @@ void expectBadCameraFile(const std::string& path)
 TEST(Camera, BadJsonThrowsInputErrorNamingThePath)
 {
     test::TempDir dir;
-    test::writeFile(dir.file("truncated.json"), "{\"eye\": [0, 0, 2.5], \"target\": [0, 0");
-    expectBadCameraFile(dir.file("truncated.json"));
-    test::writeFile(dir.file("garbage.json"), "this is not json");
-    expectBadCameraFile(dir.file("garbage.json"));
-    test::writeFile(dir.file("array.json"), "[1, 2, 3]");
-    expectBadCameraFile(dir.file("array.json"));
-    test::writeFile(dir.file("short_vector.json"), "{\"eye\": [0, 0]}");
-    expectBadCameraFile(dir.file("short_vector.json"));
-    test::writeFile(dir.file("string_value.json"), "{\"fov_y_deg\": \"wide\"}");
-    expectBadCameraFile(dir.file("string_value.json"));
-    test::writeFile(dir.file("eye_is_target.json"), "{\"eye\": [0, 0, 0], \"target\": [0, 0, 0]}");
-    expectBadCameraFile(dir.file("eye_is_target.json"));
-    test::writeFile(dir.file("bad_fov.json"), "{\"fov_y_deg\": 180}");
-    expectBadCameraFile(dir.file("bad_fov.json"));
-    test::writeFile(dir.file("short_window.json"), "{\"window_centre\": [0.1]}");
-    expectBadCameraFile(dir.file("short_window.json"));
-    test::writeFile(dir.file("text_window.json"), "{\"window_centre\": [\"left\", 0]}");
-    expectBadCameraFile(dir.file("text_window.json"));
-    test::writeFile(dir.file("huge_window.json"), "{\"window_centre\": [1e400, 0]}");
-    expectBadCameraFile(dir.file("huge_window.json"));
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"truncated.json", "{\"eye\": [0, 0, 2.5], \"target\": [0, 0"},
+        {"garbage.json", "this is not json"},
+        {"array.json", "[1, 2, 3]"},
+        {"short_vector.json", "{\"eye\": [0, 0]}"},
+        {"string_value.json", "{\"fov_y_deg\": \"wide\"}"},
+        {"eye_is_target.json", "{\"eye\": [0, 0, 0], \"target\": [0, 0, 0]}"},
+        {"bad_fov.json", "{\"fov_y_deg\": 180}"},
+        {"short_window.json", "{\"window_centre\": [0.1]}"},
+        {"text_window.json", "{\"window_centre\": [\"left\", 0]}"},
+        {"huge_window.json", "{\"window_centre\": [1e400, 0]}"}};
+    for (const auto& [name, text] : files) {
+        test::writeFile(dir.file(name), text);
+        expectBadCameraFile(dir.file(name));
+    }
     expectBadCameraFile(dir.file("missing.json"));
 }
 
