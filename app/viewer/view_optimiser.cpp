@@ -117,12 +117,11 @@ ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings)
         const core::Camera camera =
             settings.framed ? render::frameView(scene, start.camera, *start.method, 1.0) : start.camera;
         // From the rule's default, as render chooses it: the rule shown may be too loose for this view.
-        render::ParameterValues values = start.method->values();
         const std::string& key = start.method->info().readabilityParameter;
-        if (const render::ParameterSpec* spec = start.method->info().parameter(key)) values[key] = spec->defaults;
-        const optimize::ReadableSetting readable =
-            optimize::loosestReadable(scene, camera, render::makeMethod(start.method->name(), values),
-                                      optimize::kCoherenceResolution, settings.optimization.minCoherence);
+        const render::ParameterSpec* spec = start.method->info().parameter(key);
+        const render::MethodPtr fromDefault = spec ? render::withValues(*start.method, {{key, spec->defaults}}) : start.method;
+        const optimize::ReadableSetting readable = optimize::loosestReadable(
+            scene, camera, fromDefault, optimize::kCoherenceResolution, settings.optimization.minCoherence);
         OptimiserResult result;
         result.state = {start.camera, readable.method};
         result.evaluations = 1;

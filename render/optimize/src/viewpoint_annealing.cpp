@@ -81,7 +81,8 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         view.camera = cameraAt(view.thetaDeg, view.phiDeg, *ascent.method);
         view.value = ascent.value;
         if (onFull && view.camera.fovYDeg == ascentCamera.fovYDeg &&
-            view.camera.orthoHalfHeight == ascentCamera.orthoHalfHeight && view.camera.windowCentre == ascentCamera.windowCentre)
+            view.camera.orthoHalfHeight == ascentCamera.orthoHalfHeight &&
+            view.camera.windowCentre == ascentCamera.windowCentre)
             return;
         view.value = evaluator.evaluate(view.camera, ascent.method);
         ++result.evaluations;
