@@ -2,6 +2,7 @@
 
 #include <ivis/core/atomic_file.h>
 #include <ivis/optimize/sampling_bound.h>
+#include <ivis/optimize/unseen_map.h>
 #include <ivis/render/method_json.h>
 
 #include <cstdio>
@@ -55,7 +56,8 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
 
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
                                    const render::MethodPtr& method, int resolution,
-                                   const core::ScalarRange& importanceRange, double coherence)
+                                   const core::ScalarRange& importanceRange, double coherence,
+                                   core::Image* unseen)
 {
     optimize::EnergyOptions options;
     options.kind = optimize::EnergyKind::Visibility;
@@ -70,6 +72,7 @@ nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core:
     measures["surface_pixels"] = surfacePixels;
     measures["even_bound"] =
         surfacePixels > 0 ? optimize::evenSamplingBound(scene.mesh(), *evaluator.surfaceVoxels(), surfacePixels) : 0.0;
+    if (unseen) *unseen = optimize::unseenMap(scene, camera, *evaluator.surfaceVoxels(), value.seenVoxels, resolution);
     return measures;
 }
 

@@ -31,9 +31,12 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
 ///        @a camera with @a resolution rays per side, its landings counted on METHOD.md's 200^3 grid;
 ///        with a scalar, the reveal of the importance over @a importanceRange; and surface_pixels
 ///        (direct and indirect) with even_bound, what as many points spread evenly would measure.
+///        With @a unseen, also the unseen map of the same tracing (optimize/unseen_map.h), its
+///        panels @a resolution pixels square.
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
                                    const render::MethodPtr& method, int resolution,
-                                   const core::ScalarRange& importanceRange, double coherence);
+                                   const core::ScalarRange& importanceRange, double coherence,
+                                   core::Image* unseen = nullptr);
 
 /// @brief One line of pictureMeasuresJson's figures for the log ("surface visibility 0.941 (front 0.285), ...").
 std::string measuresLine(const nlohmann::json& measures);

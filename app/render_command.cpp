@@ -37,6 +37,7 @@ Command addRenderCommand(CLI::App& app)
         std::string legendOnly;
         std::string viewOut;
         std::string tearMap;
+        std::string unseenMap;
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
@@ -77,6 +78,10 @@ Command addRenderCommand(CLI::App& app)
     command->add_option("--tear-map", options->tearMap,
                         "Also write a PNG of the picture in grey with its tears in red: the indirect pixels whose "
                         "neighbour's surface point lies further than the coherence measure's 0.1 (one picture only)");
+    command->add_option("--unseen-map", options->unseenMap,
+                        "Also write a PNG of the surface seen from the picture's side and from the opposite side, red "
+                        "where no pixel of the picture shows it (the surface voxels --measure counts as unseen; "
+                        "measures the picture; one picture only)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
@@ -107,7 +112,7 @@ Command addRenderCommand(CLI::App& app)
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         for (const std::string& path :
              {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut,
-              options->tearMap})
+              options->tearMap, options->unseenMap})
             if (!path.empty()) checkOutputFolder(path);
         if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
         if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
@@ -128,6 +133,8 @@ Command addRenderCommand(CLI::App& app)
         if (core::isSeries(options->sources, options->mesh.load)) {
             if (!options->tearMap.empty())
                 throw InputError("--tear-map: a series has one picture per step; render the step alone");
+            if (!options->unseenMap.empty())
+                throw InputError("--unseen-map: a series has one picture per step; render the step alone");
             core::SurfaceSeries series(options->sources, options->mesh.load);
             SeriesRenderRequest request;
             request.method = options->view.renderOptions().method;
@@ -233,10 +240,13 @@ Command addRenderCommand(CLI::App& app)
         const nlohmann::json method = render::methodToJson(*renderOptions.method);
         for (const auto& [key, value] : method.items()) stats[key] = value;
         if (readable) stats["readability"] = readableSettingJson(*readable);
-        if (options->measure) {
+        if (options->measure || !options->unseenMap.empty()) {
+            core::Image unseen;
             stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
-                                                    renderOptions.shading.scale.range, coherence);
+                                                    renderOptions.shading.scale.range, coherence,
+                                                    options->unseenMap.empty() ? nullptr : &unseen);
             core::logInfo(measuresLine(stats["measures"]));
+            if (!options->unseenMap.empty()) core::writePng(unseen, options->unseenMap, false);
         }
         if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +

@@ -454,6 +454,9 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
     expectBadInput(test::runCli(common + " --tear-map " + quoted(output("tears.png")) + " -o " + quoted(output("bad.png"))),
                    {"--tear-map: a series has one picture per step"});
     EXPECT_FALSE(std::filesystem::exists(output("tears.png")));
+    expectBadInput(test::runCli(common + " --unseen-map " + quoted(output("unseen.png")) + " -o " + quoted(output("bad.png"))),
+                   {"--unseen-map: a series has one picture per step"});
+    EXPECT_FALSE(std::filesystem::exists(output("unseen.png")));
 }
 
 }  // namespace

@@ -530,6 +530,30 @@ TEST_F(Cli, RenderTearMapMarksTheTornPixelsInRed)
     EXPECT_GT(red, 0u);
 }
 
+// render --unseen-map draws what --measure counts: the surface from both sides, red where unseen;
+// the front method leaves the sphere's back unseen and shows its front.
+TEST_F(Cli, RenderUnseenMapShowsTheSurfaceThePictureMisses)
+{
+    const CliResult result = runCli(render("scene:sphere", "--method front --stats-json " +
+                                                             quoted(output("s.json")) + " --unseen-map " +
+                                                             quoted(output("unseen.png"))));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_TRUE(nlohmann::json::parse(std::ifstream(output("s.json"))).contains("measures")) << "it measures the picture";
+    const core::Image map = core::readPng(output("unseen.png"));
+    ASSERT_EQ(map.width(), 64) << "two panels as high as the picture";
+    ASSERT_EQ(map.height(), 32);
+    int red[2] = {0, 0}, surface[2] = {0, 0};
+    for (int y = 0; y < map.height(); ++y)
+        for (int x = 0; x < map.width(); ++x) {
+            const glm::vec4 c = map.at(x, y);
+            if (c == glm::vec4(1.0f)) continue;
+            ++surface[x / 32];
+            if (c.g < 0.1f && c.r > 0.3f) ++red[x / 32];
+        }
+    EXPECT_LT(red[0], surface[0] / 4) << "the front is seen";
+    EXPECT_GT(red[1], surface[1] * 3 / 4) << "the back is not";
+}
+
 // render --measure measures a picture as optimize measures its best view: rendering optimize's view
 // file gives the very figures optimize reported, and the even-spread bound of as many points.
 TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ivis::optimize {
 
@@ -112,6 +113,7 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
         value.front = mSurface->fractionSeen(total.directKeys);
         if (mLiteral) value.paperLiteral = mLiteral->fractionVisited(total.allKeys);
         if (mReveal) value.reveal = mReveal->measure(total.directKeys, total.allKeys);
+        value.seenVoxels = std::move(total.allKeys);
     } else {
         const double pixelArea = 4.0 / (double(n) * n);  // NDC [-1,1]^2
         value.energy = (mOptions.gamma * total.direct + total.indirect) * pixelArea;

@@ -16,7 +16,9 @@
 #include <ivis/render/render_scene.h>
 
 #include <memory>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace ivis::optimize {
 
@@ -51,6 +53,7 @@ struct EnergyValue {
     double meanImportance = 0.0;  ///< mean s over pixels that show the surface (scalar kind)
     std::size_t pixelsDirect = 0;
     std::size_t pixelsIndirect = 0;
+    std::vector<std::uint64_t> seenVoxels;  ///< visibility kind: the voxels the pixels' points fall in (sorted, once each)
 };
 
 /// @brief Measures views of one scene.
