@@ -129,20 +129,31 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float tolerance = 0.25f * sampler.field().voxelSize();
     float best = hullOffset, tBest = tEnter;
-    for (float t = tEnter; t < tExit;) {
-        const float phi = sampler.phi(origin + t * direction);
-        if (phi < best) best = phi, tBest = t;
-        // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
-        t += std::max(phi - best, tolerance);
-    }
+    // A coarse march first: its best sample bounds the minimum from above, so the fine march
+    // skips by phi - best from the start instead of creeping down the slope toward it.
+    for (float step : {16.0f * tolerance, tolerance})
+        for (float t = tEnter; t < tExit;) {
+            const float phi = sampler.phi(origin + t * direction);
+            if (phi < best) best = phi, tBest = t;
+            t += std::max(phi - best, step);
+        }
     if (!(best < hullOffset)) return false;
     // Golden-section search for the minimum around the best sample.
     float lo = std::max(tEnter, tBest - 2.0f * tolerance), hi = std::min(tExit, tBest + 2.0f * tolerance);
+    // Each step keeps one inner point of the last (it lies at the golden ratio of the new interval).
     const float ratio = 0.6180340f;
+    float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+    float phiA = sampler.phi(origin + a * direction), phiB = sampler.phi(origin + b * direction);
     while (hi - lo > 1e-5f) {
-        const float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-        if (sampler.phi(origin + a * direction) < sampler.phi(origin + b * direction)) hi = b;
-        else lo = a;
+        if (phiA < phiB) {
+            hi = b, b = a, phiB = phiA;
+            a = hi - ratio * (hi - lo);
+            phiA = sampler.phi(origin + a * direction);
+        } else {
+            lo = a, a = b, phiA = phiB;
+            b = lo + ratio * (hi - lo);
+            phiB = sampler.phi(origin + b * direction);
+        }
     }
     const float t = 0.5f * (lo + hi);
     seed = origin + t * direction;

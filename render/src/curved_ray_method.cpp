@@ -111,7 +111,12 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
     Lane lanes[kLanes];
     int live = 0;
     std::size_t next = 0;
-    for (; live < kLanes && next < count; ++live) launch(lanes[live], next++, 0);
+    // Moves next past the rays their method traced while aiming them, recording those as they are.
+    auto moreToTrace = [&] {
+        for (; next < count && starts[next].traced; ++next) traces[next] = {*starts[next].traced, 0};
+        return next < count;
+    };
+    for (; live < kLanes && moreToTrace(); ++live) launch(lanes[live], next++, 0);
     while (live > 0) {
         for (int k = 0; k < live;) {
             Lane& lane = lanes[k];
@@ -132,7 +137,7 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
                 launch(lane, lane.ray, lane.launch + 1);
             } else {
                 traces[lane.ray] = {end, lane.launch};
-                if (next < count) {
+                if (moreToTrace()) {
                     launch(lane, next++, 0);
                 } else {
                     lanes[k] = lanes[--live];  // slot k now holds the last lane: step it next

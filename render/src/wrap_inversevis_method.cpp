@@ -57,16 +57,17 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     // Where rays fly smoothly, the landing moves along a smooth curve as the launch speed changes,
     // however fast; where they fly chaotically, a slightly slower and a slightly faster launch
     // land far off that curve.
-    auto landingAt = [&](float alpha, glm::vec3& position) {
-        const CurvedRayEnd end = traceCurvedRay(sampler, start.seed, alpha * start.velocityPerAlpha, rayParams(), rays.epsilon());
-        position = end.position;
-        return end.landed;
+    auto traceAt = [&](float alpha) {
+        return traceCurvedRay(sampler, start.seed, alpha * start.velocityPerAlpha, rayParams(), rays.epsilon());
     };
-    glm::vec3 slower, here, faster;
-    if (!(landingAt(start.alpha, here) && landingAt(start.alpha - kSpeedProbe, slower) &&
-          landingAt(start.alpha + kSpeedProbe, faster)))
-        return false;
-    start.bend = glm::length(slower + faster - 2.0f * here);
+    const CurvedRayEnd here = traceAt(start.alpha);
+    if (!here.landed) return false;
+    const CurvedRayEnd slower = traceAt(start.alpha - kSpeedProbe);
+    if (!slower.landed) return false;
+    const CurvedRayEnd faster = traceAt(start.alpha + kSpeedProbe);
+    if (!faster.landed) return false;
+    start.bend = glm::length(slower.position + faster.position - 2.0f * here.position);
+    start.traced = here;  // the ray drawn: launchVelocity(start, 0) from the seed, as traced here
     return start.bend <= mLaunch.stableShift;
 }
 

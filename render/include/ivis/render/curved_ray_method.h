@@ -7,6 +7,7 @@
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/method.h>
 
+#include <optional>
 #include <vector>
 
 namespace ivis::render {
@@ -21,6 +22,9 @@ struct CurvedRayStart {
     float bend = 0.0f;             ///< how far the landing strays from a smooth function of the launch, where
                                    ///< the method measures it (the wrap's stability rule); rays bending more
                                    ///< than its readability parameter are not drawn (MethodInfo::readabilityParameter)
+    /// The end of the first launch's ray where aim() traced it already (the wrap's stability
+    /// rule does), set only where that end is final: CurvedRayMap::traceMany() takes it as it is.
+    std::optional<CurvedRayEnd> traced;
 };
 
 /// @brief Where on its view ray a curved ray starts.
@@ -108,7 +112,8 @@ public:
     CurvedRayTrace trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
     /// @brief trace() of each of @a count starts into @a traces: kLanes rays step in turn, a lane
     ///        taking the next ray when its own ends, so that the samples of different rays overlap
-    ///        in memory latency (about 1.4 times the steps per second of one ray after another).
+    ///        in memory latency (about 1.4 times the steps per second of one ray after another);
+    ///        a start that carries its traced end (CurvedRayStart::traced) is not traced again.
     void traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
                    CurvedRayTrace* traces) const;
     /// @brief Rays traceMany() steps together.
