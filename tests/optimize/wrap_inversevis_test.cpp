@@ -1,5 +1,6 @@
 // inversevis-wrap against the faithful model on the measures of METHOD.md (the unit sphere seen
-// from a known view), and its rings staying beside the part they surround (the vessel tree).
+// from a known view), its rings staying beside the part they surround (the vessel tree), and the
+// ray it draws being exactly the one its stability rule traced.
 #include "render/scene_fixture.h"
 
 #include <ivis/optimize/coherence.h>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace ivis::optimize {
 namespace {
@@ -75,6 +77,39 @@ TEST(WrapInverseVis, EachRingLandsOnThePartItSurrounds)
     // plus a few local radii (half the part's circumference is pi radii) of where its view ray
     // passed closest. Measured: 96.6% within pi radii, 99.7% within 6.
     EXPECT_GE(landingBesideSeed("inversevis-wrap", 6.0f), 0.99);
+}
+
+TEST(WrapInverseVis, DrawsTheRayItsStabilityRuleTraced)
+{
+    // The rule traces the ray it draws; traceMany takes that end instead of tracing it again, and
+    // must give exactly what tracing it again gives.
+    const auto& fixture = test::vesselScene();
+    const render::RenderScene& scene = *fixture.scene;
+    const core::CameraFrame frame(core::Camera::fromAngles(70.0, 30.0), 120, 120);
+    const render::MethodPtr method = render::makeMethod("inversevis-wrap");
+    const render::CurvedRayMap rays(scene, frame, *method->curved());
+    auto sampler = scene.distance().sampler();
+    std::vector<render::CurvedRayStart> starts;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 120; ++x) {
+            render::CurvedRayStart start;
+            if (rays.start(x + 0.5, y + 0.5, sampler, start)) starts.push_back(start);
+        }
+    ASSERT_GT(starts.size(), 1000u);
+    std::vector<render::CurvedRayStart> untraced = starts;
+    for (render::CurvedRayStart& start : untraced) {
+        ASSERT_TRUE(start.traced.has_value());
+        start.traced.reset();
+    }
+    std::vector<render::CurvedRayTrace> kept(starts.size()), again(starts.size());
+    rays.traceMany(starts.data(), starts.size(), sampler, kept.data());
+    rays.traceMany(untraced.data(), untraced.size(), sampler, again.data());
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        EXPECT_EQ(kept[i].end.position, again[i].end.position) << i;
+        EXPECT_EQ(kept[i].end.velocity, again[i].end.velocity) << i;
+        EXPECT_EQ(kept[i].end.steps, again[i].end.steps) << i;
+        EXPECT_TRUE(kept[i].end.landed && again[i].end.landed) << "only stable landings are drawn";
+    }
 }
 
 }  // namespace
