@@ -135,6 +135,7 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
         for (float t = tEnter; t < tExit;) {
             const float phi = sampler.phi(origin + t * direction);
             if (phi < best) best = phi, tBest = t;
+            // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
             t += std::max(phi - best, step);
         }
     if (!(best < hullOffset)) return false;

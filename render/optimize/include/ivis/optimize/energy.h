@@ -15,8 +15,8 @@
 #include <ivis/render/method.h>
 #include <ivis/render/render_scene.h>
 
-#include <memory>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
