@@ -15,21 +15,37 @@ bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float dista
     if (!boxInterval(origin, direction, tEnter, tExit)) return false;
     float tolerance = 0.25 * uVoxel;
     float best = uHullOffset, tBest = tEnter;
-    for (int i = 0; i < uMaxHullSteps && tEnter < tExit; ++i) {
-        float phi = phiAt(origin + tEnter * direction);
-        if (phi < best) {
-            best = phi;
-            tBest = tEnter;
+    for (int pass = 0; pass < 2; ++pass) {  // coarse, then fine from the coarse best
+        float step = pass == 0 ? 16.0 * tolerance : tolerance;
+        float t = tEnter;
+        for (int i = 0; i < uMaxHullSteps && t < tExit; ++i) {
+            float phi = phiAt(origin + t * direction);
+            if (phi < best) {
+                best = phi;
+                tBest = t;
+            }
+            t += max(phi - best, step);
         }
-        tEnter += max(phi - best, tolerance);
     }
     if (!(best < uHullOffset)) return false;
-    float lo = tBest - 2.0 * tolerance, hi = tBest + 2.0 * tolerance;
+    float lo = max(tEnter, tBest - 2.0 * tolerance), hi = min(tExit, tBest + 2.0 * tolerance);
     const float ratio = 0.6180340;
+    float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+    float phiA = phiAt(origin + a * direction), phiB = phiAt(origin + b * direction);
     for (int k = 0; k < 64 && hi - lo > 1e-5; ++k) {
-        float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-        if (phiAt(origin + a * direction) < phiAt(origin + b * direction)) hi = b;
-        else lo = a;
+        if (phiA < phiB) {
+            hi = b;
+            b = a;
+            phiB = phiA;
+            a = hi - ratio * (hi - lo);
+            phiA = phiAt(origin + a * direction);
+        } else {
+            lo = a;
+            a = b;
+            phiA = phiB;
+            b = lo + ratio * (hi - lo);
+            phiB = phiAt(origin + b * direction);
+        }
     }
     seed = origin + 0.5 * (lo + hi) * direction;
     distance = phiAt(seed);

@@ -42,15 +42,20 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
 {
     const RenderScene& scene = rays.scene();
     const float distance = start.ring * rayParams().hullOffset;
-    const float radius = localRadiusNear(scene, start.seed, 1.01 * distance + scene.distance().voxelSize());
-    if (radius < 0.0f) return false;
-    start.ring = distance / std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
-    if (!(start.ring < 1.0f)) return false;
-
     glm::vec3 gradient;
     sampler.phiAndGradient(start.seed, gradient);
     const float length = glm::length(gradient);
     const glm::vec3 outward = length > 0.0f ? gradient / length : glm::vec3(0.0f);
+    // The radius where phi and its gradient lead down from the seed (as the viewer's shader finds
+    // it): a search within two voxels of that foot, not within phi of the seed, which meets many
+    // more triangles; where the foot lies off the surface, the search from the seed.
+    const float voxel = scene.distance().voxelSize();
+    float radius = localRadiusNear(scene, start.seed - distance * outward, 2.0 * voxel);
+    if (radius < 0.0f) radius = localRadiusNear(scene, start.seed, 1.01 * distance + voxel);
+    if (radius < 0.0f) return false;
+    start.ring = distance / std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
+    if (!(start.ring < 1.0f)) return false;
+
     start.velocityPerAlpha = glm::normalize(glm::normalize(start.velocityPerAlpha) + mLaunch.tilt * start.ring * outward);
     start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);
 
