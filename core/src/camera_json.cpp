@@ -10,12 +10,17 @@
 namespace ivis::core {
 namespace {
 
-glm::dvec3 readVector(const nlohmann::json& json, const char* key, const glm::dvec3& fallback)
+/// The N-component vector under @a key ([x, y] or [x, y, z]), or @a fallback when there is none.
+template <glm::length_t N>
+glm::vec<N, double> readVector(const nlohmann::json& json, const char* key, const glm::vec<N, double>& fallback)
 {
     if (!json.contains(key)) return fallback;
     const auto& v = json.at(key);
-    if (!v.is_array() || v.size() != 3) throw std::invalid_argument(std::string("'") + key + "' must be [x, y, z]");
-    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+    if (!v.is_array() || v.size() != N)
+        throw std::invalid_argument(std::string("'") + key + "' must be " + (N == 2 ? "[x, y]" : "[x, y, z]"));
+    glm::vec<N, double> vector;
+    for (glm::length_t i = 0; i < N; ++i) vector[i] = v[i].get<double>();
+    return vector;
 }
 
 }  // namespace
@@ -44,11 +49,7 @@ Camera cameraFromJson(const nlohmann::json& json)
     camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
     camera.orthographic = json.value("orthographic", camera.orthographic);
     camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
-    if (json.contains("window_centre")) {
-        const auto& c = json.at("window_centre");
-        if (!c.is_array() || c.size() != 2) throw std::invalid_argument("'window_centre' must be [x, y]");
-        camera.windowCentre = {c[0].get<double>(), c[1].get<double>()};
-    }
+    camera.windowCentre = readVector(json, "window_centre", camera.windowCentre);
     camera.validate();
     return camera;
 }

@@ -418,8 +418,6 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
 namespace ivis::test {
 namespace {
 
-// A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
-// same picture in the viewer as in `render --view`.
 /// The parameters of the viewer's "inversevis-view: drawing {...}" line (the last one), or null.
 nlohmann::json drawnParameters(const std::string& output)
 {
@@ -486,6 +484,8 @@ TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
 #endif
 }
 
+// A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
+// same picture in the viewer as in `render --view`.
 TEST(Viewer, ViewFileShowsTheCpuPicture)
 {
 #ifndef IVIS_VIEW_PATH
