@@ -132,8 +132,10 @@ Command addEvaluateCommand(CLI::App& app)
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
+        std::vector<render::MethodPtr> methods;
+        for (const std::string& m : options->methods) methods.push_back(render::makeMethod(m));
+        options->mesh.fitReachTo(methods);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
-        for (const std::string& m : options->methods) checkMethodFitsVolume(*render::makeMethod(m), volumeOptions);
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
         const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
         for (const std::string& path : {options->json, options->markdown})
@@ -185,7 +187,7 @@ Command addEvaluateCommand(CLI::App& app)
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const auto finalistEvaluator = options->optimization.finalistEvaluator(scene, resolution, range);
                     const optimize::AnnealingOptions annealing = options->optimization.annealingOptions(
-                        90.0, 0.0, options->fovYDeg, options->displayResolution);
+                        std::nullopt, options->fovYDeg, options->displayResolution);
                     const optimize::AnnealingResult run =
                         optimize::annealViewpoint(evaluator, start, annealing, options->optimization.ascentOptions(),
                                                   ascentEvaluator.get(), &progress, finalistEvaluator.get());

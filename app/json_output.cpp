@@ -19,6 +19,7 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
                            {"energy", view.value.energy},
                            {"front_energy", view.value.front},
                            {"accepted", view.accepted},
+                           {"polish", view.polish},
                            {"params", render::methodToJson(*view.method)}};
     if (view.finalValue) json["finalist_energy"] = view.finalValue->energy;
     return json;

@@ -1,7 +1,10 @@
 #include "mesh_options.h"
 
+#include "method_options.h"
+
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
+#include <ivis/render/method_registry.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -39,8 +42,10 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
                            std::to_string(vdb::kMaxResolution) + ")")
         ->capture_default_str();
     command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")->capture_default_str();
-    command.add_option("--reach", volume.farFieldReach, "Exterior distance the far field covers (normalised)")
-        ->capture_default_str();
+    reachOption = command.add_option("--reach", volume.farFieldReach,
+                                     "Exterior distance the far field covers (normalised; default 0.6, or more when the "
+                                     "method's rays need it: inversevis-wrap's hull offset + 0.4, another curved-ray "
+                                     "method's + 0.6)");
     command.add_option("--distance", distance, "Distance sign: auto (unsigned for open meshes), signed, unsigned")
         ->check(CLI::IsMember({"auto", "signed", "unsigned"}))
         ->capture_default_str();
@@ -61,6 +66,13 @@ vdb::VolumeOptions MeshOptions::volumeOptions() const
                                             : vdb::DistanceSign::Auto;
     vdb::validate(options);
     return options;
+}
+
+void MeshOptions::fitReachTo(const std::vector<render::MethodPtr>& methods)
+{
+    if (!reachOption || reachOption->count() == 0) volume.farFieldReach = render::reachNeededBy(methods, volume.farFieldReach);
+    const vdb::VolumeOptions options = volumeOptions();
+    for (const render::MethodPtr& method : methods) checkMethodFitsVolume(*method, options);
 }
 
 std::string cacheFolder(const std::string& cacheDir)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ivis/core/surface_source.h>
+#include <ivis/render/method.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@ struct MeshOptions {
     core::SurfaceLoadOptions load;
     vdb::VolumeOptions volume;
     std::string distance = "auto";  ///< auto | signed | unsigned
+    CLI::Option* reachOption = nullptr;  ///< --reach, once registered
 
     /// @brief Registers MESH, --scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes and the volume's
     ///        options (--volume-res, --band, --reach, --distance).
@@ -30,6 +32,9 @@ struct MeshOptions {
     void useViewScalar(const std::string& scalarName, int hotSpots);
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
+    /// @brief Unless --reach was given, raises the far field's reach to the most that @a methods'
+    ///        rays need (Method::reachNeeded); then checks that each fits (checkMethodFitsVolume).
+    void fitReachTo(const std::vector<render::MethodPtr>& methods);
 };
 
 /// @brief Help of every --cache-dir option.

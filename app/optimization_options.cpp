@@ -17,6 +17,11 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
     command.add_option("--steps", steps, "Annealing proposals after the start view")->capture_default_str();
     command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")->capture_default_str();
+    command.add_option("--polish", polishDeg,
+                       "After the proposals, a compass search round the best view: its 4 neighbours this many "
+                       "degrees away in theta and phi, the step halved each of 3 rounds (0: none)")
+        ->check(CLI::Range(0.0, 90.0))
+        ->capture_default_str();
     command.add_option("--gradient", gradient, "auto, analytic (curved-ray methods, scalar energy) or forward differences")
         ->check(CLI::IsMember({"auto", "analytic", "forward"}))
         ->capture_default_str();
@@ -67,7 +72,7 @@ optimize::EnergyOptions OptimizationOptions::measureOptions(int resolution, cons
     return options;
 }
 
-optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg, double phiDeg,
+optimize::AnnealingOptions OptimizationOptions::annealingOptions(std::optional<glm::dvec2> startAngles,
                                                                  std::optional<double> fovYDeg,
                                                                  int pictureResolution) const
 {
@@ -76,8 +81,12 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(double thetaDeg
     options.cooling = cooling;
     options.seed = seed;
     options.finalists = finalists;
-    options.startThetaDeg = thetaDeg;
-    options.startPhiDeg = phiDeg;
+    options.polishDeg = polishDeg;
+    options.startAtBestAxisView = !startAngles;
+    if (startAngles) {
+        options.startThetaDeg = startAngles->x;
+        options.startPhiDeg = startAngles->y;
+    }
     options.fovYDeg = fovYDeg;
     options.readableResolution = minCoherence > 0.0 ? pictureResolution : 0;
     options.minCoherence = minCoherence;

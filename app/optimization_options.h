@@ -6,6 +6,7 @@
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <CLI/CLI.hpp>
+#include <glm/vec2.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -28,11 +29,12 @@ struct OptimizationOptions {
     int ascentResolution = 0;           ///< rays per side of the per-view ascent; 0: the optimisation's
     int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
+    double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 300;       ///< rays per side of that measurement
     double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
-    ///        --cooling, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
+    ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
     ///        --finalist-res, --min-coherence.
     void addTo(CLI::App& command);
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
@@ -43,10 +45,10 @@ struct OptimizationOptions {
     /// @brief The reported measure at @a resolution rays per side: the visibility grid is
     ///        --visibility-res (the paper's 200), whatever the optimisation used.
     optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
-    /// @brief Annealing options starting at (theta, phi) with the fixed field of view @a fovYDeg
-    ///        (none: each view framed for its method); the readability step keeps the coherence of
-    ///        a picture of @a pictureResolution pixels per side.
-    optimize::AnnealingOptions annealingOptions(double thetaDeg, double phiDeg, std::optional<double> fovYDeg,
+    /// @brief Annealing options starting at @a startAngles (theta, phi; none: at the best axis view)
+    ///        with the fixed field of view @a fovYDeg (none: each view framed for its method); the
+    ///        readability step keeps the coherence of a picture of @a pictureResolution pixels per side.
+    optimize::AnnealingOptions annealingOptions(std::optional<glm::dvec2> startAngles, std::optional<double> fovYDeg,
                                                 int pictureResolution) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).
     optimize::AscentOptions ascentOptions() const;

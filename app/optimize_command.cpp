@@ -77,13 +77,14 @@ Command addOptimizeCommand(CLI::App& app)
              {options->output, options->json, options->plot, options->exr, options->cameraOut, options->viewOut})
             if (!path.empty()) checkOutputFolder(path);
         if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
+        options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
         if (start.orthographic)
             throw InputError("--ortho: the viewpoint optimisation places perspective cameras on the radius-2.5 sphere");
-        const glm::dvec2 startAngles =
-            options->view.cameraFile.empty() ? glm::dvec2(options->view.theta, options->view.phi) : start.angles();
-        checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
+        // Without a camera given the annealing starts at the best of the six axis views.
+        std::optional<glm::dvec2> startAngles;
+        if (options->view.givesCamera()) startAngles = start.angles();
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         // A series is optimised on the mean importance of its steps (optimize/series_importance.h),
@@ -117,7 +118,7 @@ Command addOptimizeCommand(CLI::App& app)
             options->optimization.ascentEvaluator(scene, options->optResolution, importanceRange);
         const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
-            options->optimization.annealingOptions(startAngles.x, startAngles.y,
+            options->optimization.annealingOptions(startAngles,
                                                    options->view.framed() ? std::nullopt : std::optional(start.fovYDeg),
                                                    renderOptions.height),
             options->optimization.ascentOptions(), ascentEvaluator.get(), &progress,

@@ -124,9 +124,9 @@ Command addRenderCommand(CLI::App& app)
                                  "view follows the job's first step)");
         }
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
+        options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
-        checkMethodFitsVolume(*options->view.renderOptions().method, volumeOptions);
         const std::string folder = cacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));

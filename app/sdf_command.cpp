@@ -4,6 +4,7 @@
 
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <nlohmann/json.hpp>
@@ -34,6 +35,8 @@ Command addSdfCommand(CLI::App& app)
     return {command, [options] {
         const auto start = std::chrono::steady_clock::now();
         if (!options->output.empty()) checkOutputFolder(options->output);
+        if (options->mesh.reachOption->count() == 0)  // the volume `render` uses (its default method's reach)
+            options->mesh.volume.farFieldReach = render::reachNeededBy({render::defaultMethod()}, options->mesh.volume.farFieldReach);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()

@@ -79,6 +79,8 @@ struct ViewOptions {
     {
         return method.givenParameter(key) || (view() && !method.given());
     }
+    /// @brief True when a camera is given: --camera, --view, --theta or --phi.
+    bool givesCamera() const { return !cameraFile.empty() || !viewFile.empty() || given("--theta") || given("--phi"); }
 
 private:
     /// True when option @a name was given on the command line.

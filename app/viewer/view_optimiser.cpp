@@ -84,7 +84,7 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
             settings.optimization.ascentEvaluator(scene, settings.resolution, settings.importanceRange);
         const optimize::AnnealingResult annealing = optimize::annealViewpoint(
             evaluator, start.method,
-            settings.optimization.annealingOptions(angles.x, angles.y,
+            settings.optimization.annealingOptions(angles,
                                                    settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg),
                                                    optimize::kCoherenceResolution),
             settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,

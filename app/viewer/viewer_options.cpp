@@ -40,7 +40,7 @@ void ViewerOptions::addTo(CLI::App& app)
         ->capture_default_str();
 }
 
-void ViewerOptions::validate() const
+void ViewerOptions::validate()
 {
     if (width < 16 || height < 16 || width > 8192 || height > 8192)
         throw ValueError("--width/--height " + std::to_string(width) + "x" + std::to_string(height) +
@@ -53,7 +53,7 @@ void ViewerOptions::validate() const
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
-    checkMethodFitsVolume(*view.renderOptions().method, mesh.volumeOptions());
+    mesh.fitReachTo({view.renderOptions().method});
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
         throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");
 }

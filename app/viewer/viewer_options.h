@@ -41,8 +41,9 @@ struct ViewerOptions {
     /// @brief After parsing: the mesh source is the first of the sources.
     void takeSources() { mesh.source = sources.front(); }
     /// @brief Throws InputError / ValueError for values CLI11 does not check (sizes, frames, budget,
-    ///        the method's parameters and the hull offset against the volume's reach).
-    void validate() const;
+    ///        the method's parameters and the hull offset against the volume's reach); fits the
+    ///        volume's reach to the method (MeshOptions::fitReachTo), as `render` does.
+    void validate();
     /// @brief True when the program renders without a user (screenshot or benchmark).
     bool headless() const { return !screenshot.empty() || benchmark; }
 };

@@ -13,6 +13,9 @@
 namespace ivis::app {
 namespace {
 
+/// The most of the volume's reach a distance parameter (the hull offset) may take in the panel.
+constexpr float kReachShare = 0.98f;
+
 /// The key with '_' shown as a space ("alpha_profile" -> "alpha profile").
 std::string labelOf(const std::string& key)
 {
@@ -25,7 +28,7 @@ std::string labelOf(const std::string& key)
 bool parameterWidget(const render::ParameterSpec& spec, std::vector<float>& values, float reach)
 {
     const std::string label = labelOf(spec.key);
-    const float hi = spec.belowReach ? std::min(spec.hi, 0.98f * reach) : spec.hi;
+    const float hi = spec.belowReach ? std::min(spec.hi, kReachShare * reach) : spec.hi;
     const float speed = std::max(1e-4f, (std::min(hi, 10.0f) - std::max(spec.lo, -10.0f)) / 500.0f);
     bool changed = false;
     if (spec.integer) {
@@ -61,10 +64,15 @@ bool methodWidgets(render::MethodPtr& method, float reach)
     if (ImGui::BeginCombo("method", method->name().c_str())) {
         for (const render::MethodInfo* info : render::methodRegistry())
             if (ImGui::Selectable(info->name.c_str(), info->name == method->name()) && info->name != method->name()) {
-                // The new method keeps the values of the parameters it shares (e.g. the hull offset).
+                // The new method keeps the values the user set of the parameters it shares (e.g. the
+                // hull offset); the others take its own defaults (the wrap's hull is wider), within
+                // the loaded volume's reach.
                 render::ParameterValues shared;
                 for (const auto& [key, values] : method->values())
-                    if (info->parameter(key)) shared[key] = values;
+                    if (info->parameter(key) && values != method->info().parameter(key)->defaults) shared[key] = values;
+                for (const render::ParameterSpec& spec : info->parameters)
+                    if (spec.belowReach && !shared.count(spec.key) && spec.defaults[0] > kReachShare * reach)
+                        shared[spec.key] = {kReachShare * reach};
                 method = render::makeMethod(info->name, shared);
                 changed = true;
             }

@@ -134,4 +134,11 @@ std::string describeOptimisedParameters(const Method& method)
     return text;
 }
 
+double reachNeededBy(const std::vector<MethodPtr>& methods, double atLeast)
+{
+    double reach = atLeast;
+    for (const MethodPtr& method : methods) reach = std::max(reach, std::round(double(method->reachNeeded()) * 1e4) / 1e4);
+    return reach;
+}
+
 }  // namespace ivis::render

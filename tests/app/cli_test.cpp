@@ -193,12 +193,15 @@ TEST_F(Cli, ParameterOfAnotherMethodIsRejected)
     expectRejected(render(mesh, "--ring-width 0.2"), {"--ring-width does not apply to the method inversevis-wrap"});
 }
 
-TEST_F(Cli, HullOffsetBeyondTheReachNamesBoth)
+TEST_F(Cli, HullOffsetBeyondAGivenReachNamesBothAndTheDefaultReachFollowsTheHull)
 {
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
-    expectRejected(render(mesh, "--hull-offset 0.7"), {"--hull-offset 0.7", "--reach 0.6"});
     expectRejected(render(mesh, "--hull-offset 0.7 --reach 0.7"), {"--hull-offset 0.7", "--reach 0.7"});
+    expectRejected(render(mesh, "--method inversevis --hull-offset 0.7 --reach 0.6"), {"--hull-offset 0.7", "--reach 0.6"});
     EXPECT_EQ(runCli(render(mesh, "--hull-offset 0.7 --reach 0.8")).status, 0);
+    // Without --reach the far field reaches as far as the method's rays need.
+    EXPECT_EQ(runCli(render(mesh, "--hull-offset 1.5")).status, 0);
+    EXPECT_EQ(runCli(render(mesh, "--method inversevis --hull-offset 1.3")).status, 0);
 }
 
 TEST_F(Cli, OptimizeStartsFromTheGivenCameraAndRejectsOrthographic)
@@ -210,8 +213,10 @@ TEST_F(Cli, OptimizeStartsFromTheGivenCameraAndRejectsOrthographic)
     const CliResult result = runCli(common + " --camera " + quoted(camera) + " --json " + quoted(output("b.json")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("b.json")));
-    EXPECT_NEAR(report.at("theta").get<double>(), 60.0, 1e-6);
-    EXPECT_NEAR(report.at("phi").get<double>(), 0.0, 1e-6);
+    const nlohmann::json& first = report.at("visited").at(0);
+    EXPECT_NEAR(first.at("theta").get<double>(), 60.0, 1e-6);
+    EXPECT_NEAR(first.at("phi").get<double>(), 0.0, 1e-6);
+    EXPECT_EQ(report.at("visited").size(), 13u) << "the given view, no proposal, the compass search's 12 round it";
     fs::remove_all(output(""));
     fs::create_directories(output(""));
     expectRejected(common + " --ortho", {"--ortho"});
@@ -393,7 +398,10 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
                                     " --plot " + quoted(output("views.png")) + " --exr " + quoted(output("best.exr")));
     ASSERT_EQ(result.status, 0) << result.err;
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("best.json")));
-    ASSERT_EQ(report.at("visited").size(), 4u);  // the start view and 3 proposals
+    ASSERT_EQ(report.at("visited").size(), 21u);  // the six axis views, 3 proposals, the compass search's 12
+    int polish = 0;
+    for (const auto& view : report.at("visited")) polish += view.at("polish").get<bool>() ? 1 : 0;
+    EXPECT_EQ(polish, 12);
     // The best view is the finalist (one of the 3 of highest energy) of highest finalist energy.
     const nlohmann::json* best = nullptr;
     int finalists = 0;

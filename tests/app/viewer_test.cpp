@@ -120,6 +120,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     const core::SurfaceField field = core::loadSurface(source, load);
     vdb::VolumeOptions volumeOptions;
     volumeOptions.resolution = volumeResolution;
+    volumeOptions.farFieldReach = render::reachNeededBy({render::makeMethod(method)}, volumeOptions.farFieldReach);
     // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
     const std::string cache = dir.file(core::sourceStem(source) + "." + core::toHex(core::meshHash(field.mesh)) + ".res" +
                                        std::to_string(volumeOptions.resolution) + ".vdb");

@@ -242,6 +242,71 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
     EXPECT_EQ(a.bestView().value.energy, best);
 }
 
+TEST(ViewpointAnnealing, StartsAtTheBestOfTheSixAxisViews)
+{
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
+    AnnealingOptions options;
+    options.steps = 3;
+    options.startAtBestAxisView = true;
+    const MethodPtr start = makeMethod("neugebauer");
+    const AnnealingResult run = annealViewpoint(evaluator, start, options);
+    ASSERT_EQ(run.visited.size(), 9u);
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < 6; ++i) {
+        const VisitedView& view = run.visited[i];
+        EXPECT_EQ(view.thetaDeg, kAxisViews[i][0]);
+        EXPECT_EQ(view.phiDeg, kAxisViews[i][1]);
+        const core::Camera camera = render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *start, 1.0);
+        EXPECT_EQ(view.value.energy, evaluator.evaluate(camera, start).energy) << "axis view " << i;
+        if (view.value.energy > run.visited[best].value.energy) best = i;
+    }
+    EXPECT_NE(best, 2u) << "the test needs a best axis view other than the fixed start (90, 0)";
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(run.visited[i].accepted, i == best) << "axis view " << i;
+    // The first proposal is a neighbour of the best axis view (within 60 degrees in theta).
+    const VisitedView& first = run.visited[6];
+    if (run.visited[best].thetaDeg == 90.0) {
+        EXPECT_LE(std::abs(first.thetaDeg - 90.0), 60.0 + 1e-9);
+    }
+}
+
+TEST(ViewpointAnnealing, CompassSearchVisitsTheBestViewsNeighboursAtHalvingSteps)
+{
+    const auto& fixture = test::vesselScene();
+    const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
+    AnnealingOptions options;
+    options.steps = 4;
+    const MethodPtr start = makeMethod("neugebauer");
+    const AnnealingResult plain = annealViewpoint(evaluator, start, options);
+    options.polishDeg = 16.0;
+    const AnnealingResult run = annealViewpoint(evaluator, start, options);
+    ASSERT_EQ(run.visited.size(), plain.visited.size() + 12);
+    for (std::size_t i = 0; i < plain.visited.size(); ++i) {
+        EXPECT_EQ(run.visited[i].value.energy, plain.visited[i].value.energy) << "the annealing itself is unchanged";
+        EXPECT_FALSE(run.visited[i].polish);
+    }
+    double step = 16.0;
+    for (std::size_t round = 0; round < 3; ++round, step *= 0.5) {
+        const std::size_t first = plain.visited.size() + 4 * round;
+        // The centre: the best of every view before this round.
+        std::size_t centre = 0;
+        for (std::size_t i = 0; i < first; ++i)
+            if (run.visited[i].value.energy > run.visited[centre].value.energy) centre = i;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const VisitedView& view = run.visited[first + k];
+            EXPECT_TRUE(view.polish);
+            const double dTheta = std::abs(view.thetaDeg - run.visited[centre].thetaDeg);
+            const double dPhi = std::abs(std::remainder(view.phiDeg - run.visited[centre].phiDeg, 360.0));
+            EXPECT_NEAR(dTheta + dPhi, step, 1e-9) << "round " << round << ", neighbour " << k;
+            EXPECT_TRUE(dTheta == 0.0 || dPhi < 1e-9) << "one angle moves at a time";
+        }
+    }
+    double best = 0.0;
+    for (const VisitedView& view : run.visited) best = std::max(best, view.value.energy);
+    EXPECT_EQ(run.bestView().value.energy, best);
+    EXPECT_GE(best, plain.bestView().value.energy);
+}
+
 TEST(ViewpointAnnealing, AcceptsAWorseProposalWithProbabilityExpOfTenGainOverT)
 {
     std::mt19937_64 random(7);

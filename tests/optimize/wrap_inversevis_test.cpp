@@ -75,8 +75,9 @@ TEST(WrapInverseVis, EachRingLandsOnThePartItSurrounds)
 {
     // The back side of each branch appears beside it: a ray lands within the height of its seed
     // plus a few local radii (half the part's circumference is pi radii) of where its view ray
-    // passed closest. Measured: 96.6% within pi radii, 99.7% within 6.
-    EXPECT_GE(landingBesideSeed("inversevis-wrap", 6.0f), 0.99);
+    // passed closest. Measured with rings of 12 radii: 89.3% within pi radii, 97.9% within 6,
+    // 99.4% within 8, 99.9% within 10 (with rings of 4: 96.6% within pi, 99.7% within 6).
+    EXPECT_GE(landingBesideSeed("inversevis-wrap", 8.0f), 0.99);
 }
 
 TEST(WrapInverseVis, DrawsTheRayItsStabilityRuleTraced)

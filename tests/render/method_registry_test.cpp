@@ -1,6 +1,8 @@
 // The method registry: every description is consistent, values are checked against it, and
-// methods survive the round trips through JSON and the optimised-parameter vector.
+// methods survive the round trips through JSON and the optimised-parameter vector, and each
+// method's defaults fit the distance field's reach it asks for.
 #include <ivis/core/errors.h>
+#include <ivis/render/curved_ray.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/method_registry.h>
 
@@ -37,6 +39,21 @@ TEST(MethodRegistry, NamesAndParameterKeysAreUniqueAndDefaultsWithinBounds)
         EXPECT_EQ(launchesWithOptimised, info->tangentLinearGradient) << info->name;
     }
     EXPECT_EQ(methodNames().size(), names.size());
+}
+
+TEST(MethodRegistry, EveryMethodsDefaultsFitTheReachItAsksFor)
+{
+    EXPECT_EQ(makeMethod("front")->reachNeeded(), 0.0f) << "straight rays need no exterior distance";
+    EXPECT_FLOAT_EQ(makeMethod("inversevis")->reachNeeded(), 1.0f) << "the paper's hull 0.4 and its rays' swing";
+    EXPECT_FLOAT_EQ(makeMethod("inversevis-wrap")->reachNeeded(), 1.0f) << "its hull 0.6 and its rays' flight";
+    EXPECT_FLOAT_EQ(makeMethod("inversevis-wrap", {{"hull_offset", {0.3f}}})->reachNeeded(), 0.7f);
+    for (const MethodInfo* info : methodRegistry()) {
+        const MethodPtr method = makeMethod(info->name);
+        for (const ParameterSpec& spec : info->parameters)
+            if (spec.belowReach) {
+                EXPECT_LT(method->values().at(spec.key)[0], escapeDistance(method->reachNeeded())) << info->name;
+            }
+    }
 }
 
 TEST(MethodRegistry, ValuesAreCheckedAgainstTheDescription)

@@ -100,9 +100,16 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     };
 
     if (interrupter) interrupter->start("viewpoint annealing");
-    VisitedView current = visit(options.startThetaDeg, options.startPhiDeg, start);
-    current.accepted = true;
-    result.visited.push_back(current);
+    if (options.startAtBestAxisView) {
+        for (const auto& angles : kAxisViews) {
+            result.visited.push_back(visit(angles[0], angles[1], start));
+            if (result.visited.back().value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
+        }
+    } else {
+        result.visited.push_back(visit(options.startThetaDeg, options.startPhiDeg, start));
+    }
+    result.visited[result.best].accepted = true;
+    VisitedView current = result.bestView();
     double temperature = options.startTemperature;
     for (int step = 0; step < options.steps; ++step) {
         double theta = current.thetaDeg + options.neighbourhoodDeg * symmetricUniform(random);
@@ -118,6 +125,19 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         temperature *= options.cooling;
         if (interrupter && interrupter->wasInterrupted(100 * (step + 1) / std::max(1, options.steps)))
             throw Cancelled("viewpoint annealing cancelled");
+    }
+    double polishStep = options.polishDeg;
+    for (int round = 0; polishStep > 0.0 && round < options.polishRounds; ++round, polishStep *= 0.5) {
+        const VisitedView centre = result.bestView();
+        for (const auto& [dTheta, dPhi] : {std::pair{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}) {
+            double theta = centre.thetaDeg + polishStep * dTheta;
+            double phi = centre.phiDeg + polishStep * dPhi;
+            wrapAngles(theta, phi);
+            VisitedView view = visit(theta, phi, centre.method);
+            view.polish = true;
+            result.visited.push_back(view);
+            if (view.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
+        }
     }
     if (finalistEvaluator && options.finalists > 1) chooseAmongFinalists(result, options.finalists, *finalistEvaluator);
     if (ascentEvaluator) {  // the winner's parameters, ascended on the full energy

@@ -87,6 +87,9 @@ public:
     /// @brief The hull {phi = hull_offset}: the mesh grown by the hull offset (offsetMeshExtent).
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     const CurvedRayMethod* curved() const override { return this; }
+    /// @brief The hull offset and 0.6 beyond it (the paper's hull 0.4: 1.0, inversevis-wrap's reach):
+    ///        one volume then serves every method at its defaults (docs/volume.md).
+    float reachNeeded() const override { return mRay.hullOffset + 0.6f; }
 
 private:
     CurvedRayParams mRay;

@@ -111,6 +111,9 @@ public:
     virtual bool indirectRaysArriveFromOutside() const { return true; }
     /// @brief This method as a curved-ray method, or null when its indirect rays are not curved.
     virtual const CurvedRayMethod* curved() const { return nullptr; }
+    /// @brief How far from the surface (normalised) the distance field must reach for this method's
+    ///        rays; 0 when they need no exterior distance.
+    virtual float reachNeeded() const { return 0.0f; }
 
     /// @brief The command-line name.
     const std::string& name() const { return info().name; }

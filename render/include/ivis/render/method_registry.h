@@ -42,6 +42,11 @@ MethodPtr withOptimisedParameters(const Method& method, const std::vector<double
 /// @brief True when @a a and @a b are the same method with equal parameters that are not optimised.
 bool sameFixedParameters(const Method& a, const Method& b);
 
+/// @brief The far field's reach that @a methods' rays need (Method::reachNeeded), at least
+///        @a atLeast, kept to four decimals (0.4f + 0.2f is not 0.6): equal needs give equal
+///        volumes, which the volume cache tells apart by their reach.
+double reachNeededBy(const std::vector<MethodPtr>& methods, double atLeast);
+
 /// @brief The optimised parameters as text, e.g. "alpha 0.500" (for logs and the viewer).
 std::string describeOptimisedParameters(const Method& method);
 

@@ -13,7 +13,7 @@ namespace ivis::render {
 
 /// @brief Launch of the wrap rays across the ring coordinate t in [0, 1).
 struct WrapLaunch {
-    float ringScale = 4.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
+    float ringScale = 12.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
     float speed = 2.5f;      ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
     float tilt = 0.5f;       ///< launch direction: view direction + tilt * t * grad phi (normalised)
     float stableShift = 0.005f;  ///< largest |P(alpha - d) + P(alpha + d) - 2 P(alpha)|, d = 0.01 (else not drawn)
@@ -39,6 +39,9 @@ public:
     /// @brief The object and the pixels whose rays land (landedExtent within the hull): the rings
     ///        are narrower than the hull round thin parts and where their outer rays are not drawn.
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
+    /// @brief The hull offset and 0.4 beyond it: the fast outer rays of a ring fly out before they
+    ///        fall back (docs/optimisation.md, "Wider rings").
+    float reachNeeded() const override { return rayParams().hullOffset + 0.4f; }
     /// @brief The launch rule.
     const WrapLaunch& launch() const { return mLaunch; }
 

@@ -28,12 +28,18 @@ struct AnnealingOptions {
     double acceptanceScale = 10.0;   ///< the 10 in exp(10 dE / T)
     double startThetaDeg = 90.0;
     double startPhiDeg = 0.0;
+    bool startAtBestAxisView = false;  ///< start at the best of kAxisViews instead (the start angles unused)
     std::optional<double> fovYDeg;  ///< a fixed vertical field of view; empty: each view framed
     std::uint64_t seed = 1;
     int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
+    double polishDeg = 0.0;  ///< after the proposals, a compass search round the best view: steps of this, halved each round; 0: none
+    int polishRounds = 3;    ///< the compass search's rounds (4 views each)
     int readableResolution = 0;  ///< pixels per side of the picture the readability step keeps coherent (loosestReadable); 0: no step
     double minCoherence = 0.99;  ///< the coherence that step keeps
 };
+
+/// @brief The six views along the coordinate axes, (theta, phi) in degrees: from +y, -y, +z, +x, -z, -x.
+inline constexpr double kAxisViews[6][2] = {{0.0, 0.0}, {180.0, 0.0}, {90.0, 0.0}, {90.0, 90.0}, {90.0, 180.0}, {90.0, -90.0}};
 
 /// @brief One evaluated camera position.
 struct VisitedView {
@@ -43,10 +49,12 @@ struct VisitedView {
     EnergyValue value;
     render::MethodPtr method;  ///< the method with the parameters optimised at this view
     bool accepted = false;
+    bool polish = false;  ///< a view of the compass search after the proposals (AnnealingOptions::polishDeg)
     std::optional<EnergyValue> finalValue;  ///< its energy on the finalist evaluator (finalists only)
 };
 
-/// @brief Every visited view (the start first) and the best one.
+/// @brief Every visited view (the start first; with startAtBestAxisView the six axis views first,
+///        in kAxisViews' order, the best of them the start) and the best one.
 struct AnnealingResult {
     std::vector<VisitedView> visited;
     std::size_t best = 0;  ///< index into visited
@@ -65,7 +73,13 @@ struct AnnealingResult {
 /// @param draw a uniform number in [0, 1]
 bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw);
 
-/// @brief Runs the annealing from the start view with the method of @a start.
+/// @brief Runs the annealing from the start view with the method of @a start (with
+///        AnnealingOptions::startAtBestAxisView, from the axis view of highest energy: a search of
+///        30 proposals explores one region of the sphere, and which one its start decides); then,
+///        with AnnealingOptions::polishDeg, a compass search round the best view: its four
+///        neighbours polishDeg away in theta and in phi, the best of all so far the next centre, the
+///        step halved each round (random proposals 60 degrees wide rarely land within a few degrees
+///        of a peak).
 /// @param interrupter optional progress (percent of the proposals) and cancel
 /// @param ascentEvaluator when given (typically fewer rays), each view's parameters are ascended
 ///        on it and only then measured on @a evaluator, and the best view's parameters are
