@@ -68,9 +68,14 @@ vdb::VolumeOptions MeshOptions::volumeOptions() const
     return options;
 }
 
-void MeshOptions::fitReachTo(const std::vector<render::MethodPtr>& methods)
+void MeshOptions::raiseReachFor(const std::vector<render::MethodPtr>& methods)
 {
     if (!reachOption || reachOption->count() == 0) volume.farFieldReach = render::reachNeededBy(methods, volume.farFieldReach);
+}
+
+void MeshOptions::fitReachTo(const std::vector<render::MethodPtr>& methods)
+{
+    raiseReachFor(methods);
     const vdb::VolumeOptions options = volumeOptions();
     for (const render::MethodPtr& method : methods) checkMethodFitsVolume(*method, options);
 }

@@ -33,7 +33,9 @@ struct MeshOptions {
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
     /// @brief Unless --reach was given, raises the far field's reach to the most that @a methods'
-    ///        rays need (Method::reachNeeded); then checks that each fits (checkMethodFitsVolume).
+    ///        rays need (render::reachNeededBy).
+    void raiseReachFor(const std::vector<render::MethodPtr>& methods);
+    /// @brief raiseReachFor(@a methods), then checks that each fits (checkMethodFitsVolume).
     void fitReachTo(const std::vector<render::MethodPtr>& methods);
 };
 

@@ -35,8 +35,7 @@ Command addSdfCommand(CLI::App& app)
     return {command, [options] {
         const auto start = std::chrono::steady_clock::now();
         if (!options->output.empty()) checkOutputFolder(options->output);
-        if (options->mesh.reachOption->count() == 0)  // the volume `render` uses (its default method's reach)
-            options->mesh.volume.farFieldReach = render::reachNeededBy({render::defaultMethod()}, options->mesh.volume.farFieldReach);
+        options->mesh.raiseReachFor({render::defaultMethod()});  // the volume `render` uses by default
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
