@@ -2,7 +2,8 @@
 /// @brief Simulated annealing of the camera on the sphere of radius 2.5 (METHOD.md, "Viewpoint
 ///        optimisation"): neighbours within +-60 degrees in polar and azimuth angle, acceptance
 ///        exp(10 (E_new - E_old) / T), T_k = T0 * cooling^k; the method's parameters are optimised
-///        at every proposal before its energy is measured.
+///        at every proposal before its energy is measured. Beyond the paper (AnnealingOptions): a
+///        start at the best axis view, a compass search round the best view, finalists.
 ///        Each view is framed for its method (render::frameView, a square image) unless the field
 ///        of view is fixed: the ascent runs at the view framed for the parameters it starts from,
 ///        and the view's energy is that of the view framed for the parameters it ends with (they
