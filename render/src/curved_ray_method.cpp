@@ -7,9 +7,8 @@
 
 namespace ivis::render {
 
-std::vector<ParameterSpec> curvedRaySpecs()
+std::vector<ParameterSpec> curvedRaySpecs(const CurvedRayParams& defaults)
 {
-    const CurvedRayParams defaults;
     return {{"hull_offset", "hull distance phi0 (normalised units; below the volume's --reach)", {defaults.hullOffset},
              0.01f, 1.9f, false, false, true},
             {"step", "symplectic Euler step h", {defaults.stepSize}, 0.001f, 1.0f},

@@ -14,8 +14,14 @@ namespace {
 /// through it, within WrapLaunch::stableShift.
 constexpr float kSpeedProbe = 0.01f;
 
-/// The wrap's hull: wider than the paper's 0.4, so that a thick part's rings reach further round it.
-constexpr float kWrapHullOffset = 0.6f;
+/// The wrap's ray parameters by default: a hull wider than the paper's 0.4, so that a thick
+/// part's rings reach further round it.
+CurvedRayParams wrapRayDefaults()
+{
+    CurvedRayParams params;
+    params.hullOffset = 0.6f;
+    return params;
+}
 
 /// The local radius at the surface point closest to @a p, searched within @a bound; negative if none.
 float localRadiusNear(const RenderScene& scene, const glm::vec3& p, double bound)
@@ -103,10 +109,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
             {"stable_shift", "largest bend (normalised units) of the landings of alpha - 0.01, alpha, alpha + 0.01; rays that bend more fly chaotically and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f}};
-        for (ParameterSpec spec : curvedRaySpecs()) {
-            if (spec.key == "hull_offset") spec.defaults = {kWrapHullOffset};
-            i.parameters.push_back(spec);
-        }
+        for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;

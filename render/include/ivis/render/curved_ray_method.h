@@ -46,8 +46,9 @@ struct CurvedRayTrace {
     int launch = 0;
 };
 
-/// @brief The descriptions of hull_offset, step and max_steps, shared by the curved-ray methods.
-std::vector<ParameterSpec> curvedRaySpecs();
+/// @brief The descriptions of hull_offset, step and max_steps, shared by the curved-ray methods,
+///        with a method's own @a defaults (the wrap's hull is wider than the paper's).
+std::vector<ParameterSpec> curvedRaySpecs(const CurvedRayParams& defaults = {});
 /// @brief Ray parameters from values keyed as curvedRaySpecs().
 CurvedRayParams curvedRayParamsFrom(const ParameterValues& values);
 /// @brief Values of the ray parameters, keyed as curvedRaySpecs().
