@@ -46,9 +46,9 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->check(CLI::Range(4, 8192))
         ->capture_default_str();
     command.add_option("--min-coherence", minCoherence,
-                       "Readability step: at the best view, loosen the method's rule for drawing rays "
-                       "(inversevis-wrap: --stable-shift, up to 8 times) as far as the picture keeps an estimated "
-                       "mapping coherence of at least this (beyond the paper); 0: keep the rule as given")
+                       "Readability step: at the best view, the loosest rule for drawing rays (inversevis-wrap: "
+                       "--stable-shift, from an eighth of it to 8 times it) whose picture keeps an estimated mapping "
+                       "coherence of at least this (beyond the paper); 0: keep the rule as given")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
 }

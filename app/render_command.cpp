@@ -70,9 +70,9 @@ Command addRenderCommand(CLI::App& app)
     command
         ->add_option("--min-coherence", options->minCoherence,
                      "Readable rule: when the method's rule for drawing rays (inversevis-wrap: --stable-shift) is "
-                     "given neither as an option nor by --view, the loosest rule (up to 8 times the default) whose "
-                     "picture keeps an estimated mapping coherence of at least this (beyond the paper; a series: "
-                     "chosen on its first step); 0: the default rule")
+                     "given neither as an option nor by --view, the loosest rule (from an eighth of the default to "
+                     "8 times it) whose picture keeps an estimated mapping coherence of at least this (beyond the "
+                     "paper; a series: chosen on its first step); 0: the default rule")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
     command->add_option("--tear-map", options->tearMap,

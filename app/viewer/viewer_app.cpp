@@ -500,7 +500,7 @@ void ViewerApp::drawPanel()
     if (ImGui::Button("readable rule")) startOptimiser(Job::ReadableRule);
     ImGui::EndDisabled();
     tooltip("CPU, in the background: optimize::loosestReadable, the loosest rule for drawing rays (inversevis-wrap: "
-            "stable_shift, from its default up to 8 times that) whose 1000 x 1000 picture from this view keeps the "
+            "stable_shift, from an eighth of its default to 8 times it) whose 1000 x 1000 picture from this view keeps the "
             "mapping coherence --min-coherence (0.99), as render chooses it; done at start when the rule is not given");
     if (mJob.valid()) {
         ImGui::SameLine();

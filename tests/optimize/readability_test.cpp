@@ -1,5 +1,5 @@
 // The readability step: the loosest setting of a method's drawing rule whose picture stays
-// coherent, chosen on the ladder v, 1.5v, 2v, 3v, 4v, 6v, 8v; and the annealing applying it to its best view.
+// coherent, chosen on the ladder v/8 ... 8v in steps of sqrt(2); and the annealing applying it to its best view.
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>
@@ -57,38 +57,71 @@ TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
     EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, size, 1, {}), ValueError);
 }
 
+TEST(Readability, TheLadderRunsFromAnEighthToEightTimesTheOwnValueInStepsOfRootTwo)
+{
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    const float own = stableShift(*wrap);
+    const std::vector<float> ladder = readabilityLadder(*wrap);
+    ASSERT_EQ(ladder.size(), 13u);
+    EXPECT_FLOAT_EQ(ladder.front(), own / 8.0f);
+    EXPECT_EQ(ladder[6], own) << "the method's own value is the middle rung";
+    EXPECT_FLOAT_EQ(ladder.back(), 8.0f * own);
+    for (std::size_t k = 1; k < ladder.size(); ++k) EXPECT_NEAR(ladder[k] / ladder[k - 1], std::sqrt(2.0f), 1e-5f) << k;
+    // Within the parameter's bounds: a method near its upper bound gets fewer, clamped rungs.
+    const float hi = wrap->info().parameter("stable_shift")->hi;
+    const std::vector<float> high = readabilityLadder(*render::withValues(*wrap, {{"stable_shift", {hi / 2.0f}}}));
+    EXPECT_EQ(high.back(), hi);
+    EXPECT_EQ(high.size(), 9u) << "hi/2 * sqrt(2) and hi, then nothing looser";
+    EXPECT_TRUE(readabilityLadder(*render::makeMethod("inversevis")).empty());
+}
+
 TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
 {
     const auto& fixture = test::vesselScene();
     const render::RenderScene& scene = *fixture.scene;
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
-    const float own = stableShift(*wrap);
-    const std::vector<float> ladder = {own, 1.5f * own, 2.0f * own, 3.0f * own, 4.0f * own, 6.0f * own, 8.0f * own};
+    const std::vector<float> ladder = readabilityLadder(*wrap);
+    const std::size_t own = 6;
     const std::vector<Coherence> coherence =
         coherenceAtSettings(scene, camera, *wrap, kResolution, kResolution / 200, ladder);
+    // Every rung from the tightest up to the chosen one holds the bound, the next one does not.
+    auto expectChosenRung = [&](const ReadableSetting& chosen, double minCoherence) {
+        const auto rung = std::find(ladder.begin(), ladder.end(), stableShift(*chosen.method));
+        ASSERT_NE(rung, ladder.end()) << "a rung of the ladder";
+        const std::size_t k = std::size_t(rung - ladder.begin());
+        for (std::size_t i = 1; i <= k; ++i) EXPECT_GE(coherenceLowerBound(coherence[i]), minCoherence) << ladder[i];
+        if (k + 1 < ladder.size()) {
+            EXPECT_LT(coherenceLowerBound(coherence[k + 1]), minCoherence) << ladder[k + 1];
+        }
+        EXPECT_EQ(chosen.coherence.pairs, coherence[k].pairs);
+        EXPECT_EQ(chosen.coherence.coherent, coherence[k].coherent);
+    };
 
     // Any coherence will do: the loosest rung.
-    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1e-6).method), 8.0f * own);
-    // At 0.99: every rung up to the chosen one holds the bound, the next one does not.
+    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1e-6).method), ladder.back());
+    // At 0.99.
     const ReadableSetting chosen = loosestReadable(scene, camera, wrap, kResolution, 0.99);
-    const auto rung = std::find(ladder.begin(), ladder.end(), stableShift(*chosen.method));
-    ASSERT_NE(rung, ladder.end()) << "a rung of the ladder";
-    const std::size_t k = std::size_t(rung - ladder.begin());
-    for (std::size_t i = 1; i <= k; ++i) EXPECT_GE(coherenceLowerBound(coherence[i]), 0.99) << ladder[i];
-    if (k + 1 < ladder.size()) {
-        EXPECT_LT(coherenceLowerBound(coherence[k + 1]), 0.99) << ladder[k + 1];
-    }
-    EXPECT_EQ(chosen.coherence.pairs, coherence[k].pairs);
-    EXPECT_EQ(chosen.coherence.coherent, coherence[k].coherent);
-    // Looser draws more: the chosen picture shows at least as much of the surface.
+    expectChosenRung(chosen, 0.99);
+    // Looser draws more: the chosen picture shows at least as much of the surface as the tightest.
     EnergyOptions options;
     options.resolution = 200;
     const EnergyEvaluator evaluator(scene, options);
-    EXPECT_GE(evaluator.evaluate(camera, chosen.method).energy, evaluator.evaluate(camera, wrap).energy);
-    // Perfect coherence is more than the tree's picture has at 1.5 v: the method's own value stays.
+    const render::MethodPtr tightest = render::withValues(*wrap, {{"stable_shift", {ladder.front()}}});
+    EXPECT_GE(evaluator.evaluate(camera, chosen.method).energy, evaluator.evaluate(camera, tightest).energy);
+    // Where the method's own rule leaves the picture less coherent than asked, a tighter rule.
+    const double between = 0.5 * (coherenceLowerBound(coherence[0]) + coherenceLowerBound(coherence[own]));
+    ASSERT_GT(coherenceLowerBound(coherence[0]), coherenceLowerBound(coherence[own])) << "the tree's own rule tears";
+    const ReadableSetting tighter = loosestReadable(scene, camera, wrap, kResolution, between);
+    EXPECT_LT(stableShift(*tighter.method), ladder[own]);
+    expectChosenRung(tighter, between);
+    // Perfect coherence is more than the tree's picture has one rung up: the tightest rung.
     ASSERT_LT(coherenceLowerBound(coherence[1]), 1.0);
-    EXPECT_EQ(loosestReadable(scene, camera, wrap, kResolution, 1.0).method, wrap);
+    EXPECT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1.0).method), ladder.front());
+    // The method's own value chosen (here the loosest, the parameter's upper bound): the method itself.
+    const render::MethodPtr loosest =
+        render::withValues(*wrap, {{"stable_shift", {wrap->info().parameter("stable_shift")->hi}}});
+    EXPECT_EQ(loosestReadable(scene, camera, loosest, kResolution, 1e-6).method, loosest);
 
     // A method without a readability parameter is left as it is; bad arguments are refused.
     const render::MethodPtr faithful = render::makeMethod("inversevis");

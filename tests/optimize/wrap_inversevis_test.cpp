@@ -75,9 +75,10 @@ TEST(WrapInverseVis, EachRingLandsOnThePartItSurrounds)
 {
     // The back side of each branch appears beside it: a ray lands within the height of its seed
     // plus a few local radii (half the part's circumference is pi radii) of where its view ray
-    // passed closest. Measured with rings of 12 radii: 89.3% within pi radii, 97.9% within 6,
-    // 99.4% within 8, 99.9% within 10 (with rings of 4: 96.6% within pi, 99.7% within 6).
-    EXPECT_GE(landingBesideSeed("inversevis-wrap", 8.0f), 0.99);
+    // passed closest. Measured with rings of 12 radii and the default rule 0.04: 84.7% within pi
+    // radii, 95.7% within 6, 98.3% within 8, 99.6% within 10, 99.97% within 12 (with the rule
+    // 0.005: 99.4% within 8; with rings of 4: 96.6% within pi, 99.7% within 6).
+    EXPECT_GE(landingBesideSeed("inversevis-wrap", 10.0f), 0.99);
 }
 
 TEST(WrapInverseVis, DrawsTheRayItsStabilityRuleTraced)

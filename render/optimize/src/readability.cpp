@@ -13,8 +13,9 @@
 namespace ivis::optimize {
 namespace {
 
-/// The rungs of the ladder above the method's own value, as multiples of it.
-constexpr float kLoosening[] = {1.5f, 2.0f, 3.0f, 4.0f, 6.0f, 8.0f};
+/// The ladder's rungs run from an eighth of the method's own value to eight times it, each
+/// sqrt(2) times the one before: 13 rungs, the own value the middle one.
+constexpr int kRungsEachSide = 6;
 /// Sampled rows and columns across the picture (about 3 * 200^2 pixels at any resolution).
 constexpr int kSampledLines = 200;
 
@@ -74,6 +75,20 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
     return result;
 }
 
+std::vector<float> readabilityLadder(const render::Method& method)
+{
+    const std::string& parameter = method.info().readabilityParameter;
+    if (parameter.empty()) return {};
+    const render::ParameterSpec& spec = *method.info().parameter(parameter);
+    const float own = method.values().at(parameter).at(0);
+    std::vector<float> ladder;
+    for (int k = -kRungsEachSide; k <= kRungsEachSide; ++k) {
+        const float value = k == 0 ? own : std::clamp(own * std::exp2(0.5f * float(k)), spec.lo, spec.hi);
+        if (ladder.empty() || value > ladder.back()) ladder.push_back(value);
+    }
+    return ladder;
+}
+
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, int resolution, double minCoherence)
 {
@@ -81,18 +96,12 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
     if (!(minCoherence > 0.0 && minCoherence <= 1.0)) throw ValueError("the minimum coherence must lie in (0, 1]");
     const std::string& parameter = method->info().readabilityParameter;
     if (parameter.empty()) return {method, {}};
-    const float hi = method->info().parameter(parameter)->hi;
-    const float own = method->values().at(parameter).at(0);
-    std::vector<float> ladder = {own};
-    for (const float factor : kLoosening) {
-        const float value = std::min(own * factor, hi);
-        if (value > ladder.back()) ladder.push_back(value);
-    }
+    const std::vector<float> ladder = readabilityLadder(*method);
     const std::vector<Coherence> coherence =
         coherenceAtSettings(scene, camera, *method, resolution, std::max(1, resolution / kSampledLines), ladder);
     std::size_t chosen = 0;
     while (chosen + 1 < ladder.size() && coherenceLowerBound(coherence[chosen + 1]) >= minCoherence) ++chosen;
-    if (chosen == 0) return {method, coherence[0]};
+    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen]};
     return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen]};
 }
 

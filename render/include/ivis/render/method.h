@@ -65,8 +65,8 @@ struct MethodInfo {
     /// (AscentOptions::scanSamples); empty: none.
     std::string scannedParameter;
     /// A one-component parameter that trades completeness for coherence, larger values drawing
-    /// more rays (the wrap's stable_shift): the optimisation's readability step loosens it as far
-    /// as the picture stays coherent (optimize/readability.h); empty: none.
+    /// more rays (the wrap's stable_shift): the optimisation's readability step sets it to the
+    /// loosest value whose picture stays coherent (optimize/readability.h); empty: none.
     std::string readabilityParameter;
     /// Creates the method from complete, validated values.
     std::function<std::shared_ptr<const Method>(const ParameterValues&)> create;

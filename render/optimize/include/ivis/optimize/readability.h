@@ -34,12 +34,17 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
                                            const render::Method& method, int resolution, int stride,
                                            const std::vector<float>& values);
 
-/// @brief Of @a method's readability parameter at its own value v and the rungs 1.5v, 2v, 3v, 4v,
-///        6v, 8v (at most the parameter's upper bound), the loosest reached before a rung whose
-///        picture from @a camera at @a resolution^2 pixels has a coherence lower bound below
-///        @a minCoherence (v itself when 1.5v falls short), estimated on the pairs of every
-///        (resolution / 200)-th row and column. A method without such a parameter is returned as it
-///        is, nothing measured.
+/// @brief The settings the readability step chooses among, tightest first: @a method's readability
+///        parameter at its own value v times 2^(k/2), k = -6..6 (v/8 to 8v), within the parameter's
+///        bounds; empty for a method without such a parameter.
+std::vector<float> readabilityLadder(const render::Method& method);
+
+/// @brief Of readabilityLadder(@a method), the loosest rung reached from the tightest before a rung
+///        whose picture from @a camera at @a resolution^2 pixels has a coherence lower bound below
+///        @a minCoherence (the tightest when the next one falls short), estimated on the pairs of
+///        every (resolution / 200)-th row and column: the method's own rule is loosened where its
+///        picture has room in coherence and tightened where it has none. A method without such a
+///        parameter is returned as it is, nothing measured; a method at the chosen value itself.
 /// @throw ValueError for a resolution below 1 or a minimum coherence outside (0, 1]
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, int resolution, double minCoherence);
