@@ -98,15 +98,17 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         measured(view, optimised, camera, !ascentEvaluator);
         return view;
     };
+    // Records @a view as visited, the best one when it beats every view before it.
+    auto keep = [&](const VisitedView& view) {
+        result.visited.push_back(view);
+        if (view.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
+    };
 
     if (interrupter) interrupter->start("viewpoint annealing");
     if (options.startAtBestAxisView) {
-        for (const auto& angles : kAxisViews) {
-            result.visited.push_back(visit(angles[0], angles[1], start));
-            if (result.visited.back().value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
-        }
+        for (const auto& angles : kAxisViews) keep(visit(angles[0], angles[1], start));
     } else {
-        result.visited.push_back(visit(options.startThetaDeg, options.startPhiDeg, start));
+        keep(visit(options.startThetaDeg, options.startPhiDeg, start));
     }
     result.visited[result.best].accepted = true;
     VisitedView current = result.bestView();
@@ -119,8 +121,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         const double gain = proposal.value.energy - current.value.energy;
         const double draw = 0.5 * (symmetricUniform(random) + 1.0);
         proposal.accepted = acceptsProposal(gain, temperature, options.acceptanceScale, draw);
-        result.visited.push_back(proposal);
-        if (proposal.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
+        keep(proposal);
         if (proposal.accepted) current = proposal;
         temperature *= options.cooling;
         if (interrupter && interrupter->wasInterrupted(100 * (step + 1) / std::max(1, options.steps)))
@@ -135,8 +136,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
             wrapAngles(theta, phi);
             VisitedView view = visit(theta, phi, centre.method);
             view.polish = true;
-            result.visited.push_back(view);
-            if (view.value.energy > result.bestView().value.energy) result.best = result.visited.size() - 1;
+            keep(view);
         }
     }
     if (finalistEvaluator && options.finalists > 1) chooseAmongFinalists(result, options.finalists, *finalistEvaluator);
