@@ -76,19 +76,24 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     if (!closestApproach(origin, direction, seed, distance)) return false;
     float radius = localRadiusNear(seed);
     if (radius < 0.0) return false;
-    float ring = distance / min(uRingScale * radius, uHullOffset);
+    float width = min(uRingScale * radius, uHullOffset);
+    float ring = distance / width;
     if (!(ring < 1.0)) return false;
     vec3 gradient;
     phiAndGradient(seed, gradient);
     float len = length(gradient);
     vec3 outward = len > 0.0 ? gradient / len : vec3(0.0);
-    vec3 launch = normalize(normalize(initialVelocity(gradient, direction, 1.0)) + uWrapTilt * ring * outward);
-    float alpha = uWrapSpeed * ring * (2.0 - ring);
-    const float probe = 0.01;  // WrapInverseVisMethod's kSpeedProbe
-    vec3 slower = seed, faster = seed, here = seed;
-    vec3 vSlower = (alpha - probe) * launch, vFaster = (alpha + probe) * launch, v = alpha * launch;
-    if (!integrateCurvedRay(here, v) || !integrateCurvedRay(slower, vSlower) || !integrateCurvedRay(faster, vFaster))
+    vec3 along = normalize(initialVelocity(gradient, direction, 1.0));
+    // The launch at ring coordinate t (WrapInverseVisMethod::aim's launchAt), and the rays of the
+    // neighbouring pixels across the ring: seeds a step further in and out (its kNeighbourStep).
+    float step = min(0.003, distance);
+    float tInner = ring - step / width, tOuter = ring + step / width;
+    vec3 here = seed, inner = seed - step * outward, outer = seed + step * outward;
+    vec3 v = uWrapSpeed * ring * (2.0 - ring) * normalize(along + uWrapTilt * ring * outward);
+    vec3 vInner = uWrapSpeed * tInner * (2.0 - tInner) * normalize(along + uWrapTilt * tInner * outward);
+    vec3 vOuter = uWrapSpeed * tOuter * (2.0 - tOuter) * normalize(along + uWrapTilt * tOuter * outward);
+    if (!integrateCurvedRay(here, v) || !integrateCurvedRay(inner, vInner) || !integrateCurvedRay(outer, vOuter))
         return false;
-    if (length(slower + faster - 2.0 * here) > uStableShift) return false;
+    if (length(inner + outer - 2.0 * here) > uStableShift) return false;
     return shadeLanding(here, v, colour);
 }

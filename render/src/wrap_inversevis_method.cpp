@@ -10,9 +10,10 @@
 namespace ivis::render {
 namespace {
 
-/// A landing is stable when the launches this much slower and faster land on a straight line
-/// through it, within WrapLaunch::stableShift.
-constexpr float kSpeedProbe = 0.01f;
+/// A landing is stable when the rays of the ring's neighbouring pixels, their seeds this much
+/// further in and out (about one pixel of a 1000-pixel picture of the object, normalised units),
+/// land on a straight line through it, within WrapLaunch::stableShift.
+constexpr float kNeighbourStep = 0.003f;
 
 /// The wrap's ray parameters by default: a hull wider than the paper's 0.4, so that a thick
 /// part's rings reach further round it.
@@ -62,25 +63,35 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     float radius = localRadiusNear(scene, start.seed - distance * outward, 2.0 * voxel);
     if (radius < 0.0f) radius = localRadiusNear(scene, start.seed, 1.01 * distance + voxel);
     if (radius < 0.0f) return false;
-    start.ring = distance / std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
+    const float width = std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
+    start.ring = distance / width;
     if (!(start.ring < 1.0f)) return false;
 
-    start.velocityPerAlpha = glm::normalize(glm::normalize(start.velocityPerAlpha) + mLaunch.tilt * start.ring * outward);
+    // The launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
+    // tangential to the hull, tilted outward by tilt t.
+    const glm::vec3 along = glm::normalize(start.velocityPerAlpha);
+    auto launchAt = [&](float t) {
+        return mLaunch.speed * t * (2.0f - t) * glm::normalize(along + mLaunch.tilt * t * outward);
+    };
+    start.velocityPerAlpha = glm::normalize(along + mLaunch.tilt * start.ring * outward);
     start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);
 
-    // Where rays fly smoothly, the landing moves along a smooth curve as the launch speed changes,
-    // however fast; where they fly chaotically, a slightly slower and a slightly faster launch
-    // land far off that curve.
-    auto traceAt = [&](float alpha) {
-        return traceCurvedRay(sampler, start.seed, alpha * start.velocityPerAlpha, rayParams(), rays.epsilon());
+    // Where rays fly smoothly, the landings of neighbouring pixels across the ring lie on a smooth
+    // curve; where they fly chaotically, or part on either side of a tear, the rays launched from
+    // a seed a pixel further in and out land far off it. Each probe moves the seed along the
+    // outward gradient and the ring coordinate with it, as the neighbouring pixel's ray would.
+    auto traceAt = [&](float shift) {
+        return traceCurvedRay(sampler, start.seed + shift * outward, launchAt(start.ring + shift / width), rayParams(),
+                              rays.epsilon());
     };
-    const CurvedRayEnd here = traceAt(start.alpha);
+    const CurvedRayEnd here = traceAt(0.0f);
     if (!here.landed) return false;
-    const CurvedRayEnd slower = traceAt(start.alpha - kSpeedProbe);
-    if (!slower.landed) return false;
-    const CurvedRayEnd faster = traceAt(start.alpha + kSpeedProbe);
-    if (!faster.landed) return false;
-    start.bend = glm::length(slower.position + faster.position - 2.0f * here.position);
+    const float step = std::min(kNeighbourStep, distance);  // the inner seed stays off the surface
+    const CurvedRayEnd inner = traceAt(-step);
+    if (!inner.landed) return false;
+    const CurvedRayEnd outer = traceAt(step);
+    if (!outer.landed) return false;
+    start.bend = glm::length(inner.position + outer.position - 2.0f * here.position);
     start.traced = here;  // the ray drawn: launchVelocity(start, 0) from the seed, as traced here
     return start.bend <= mLaunch.stableShift;
 }
@@ -107,7 +118,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
             {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha},
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
-            {"stable_shift", "largest bend (normalised units) of the landings of alpha - 0.01, alpha, alpha + 0.01; rays that bend more fly chaotically and are not drawn",
+            {"stable_shift", "largest bend (normalised units) of the landings of a ray and of the rays seeded 0.003 further in and out across its ring (its neighbouring pixels'); rays that bend more fly chaotically or straddle a tear and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f}};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";

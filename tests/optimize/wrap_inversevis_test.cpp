@@ -1,6 +1,7 @@
 // inversevis-wrap against the faithful model on the measures of METHOD.md (the unit sphere seen
 // from a known view), its rings staying beside the part they surround (the vessel tree), and the
-// ray it draws being exactly the one its stability rule traced.
+// ray it draws being exactly the one its stability rule traced, and that rule depending on the view
+// ray only, not on the picture's size.
 #include "render/scene_fixture.h"
 
 #include <ivis/optimize/coherence.h>
@@ -112,6 +113,37 @@ TEST(WrapInverseVis, DrawsTheRayItsStabilityRuleTraced)
         EXPECT_EQ(kept[i].end.steps, again[i].end.steps) << i;
         EXPECT_TRUE(kept[i].end.landed && again[i].end.landed) << "only stable landings are drawn";
     }
+}
+
+TEST(WrapInverseVis, ItsStabilityRuleDependsOnTheViewRayNotOnThePicturesSize)
+{
+    // The rule probes the rays of the neighbouring pixels a fixed step (about a pixel of a
+    // 1000-pixel picture) further in and out, whatever the picture's size: the annealing's small
+    // pictures then draw the rays the 1000 x 1000 picture draws. Pixel (x, y) of a 40 x 40 picture
+    // and pixel (3x + 1, 3y + 1) of a 120 x 120 one share their centre's view ray.
+    const auto& fixture = test::vesselScene();
+    const render::RenderScene& scene = *fixture.scene;
+    const core::Camera camera = core::Camera::fromAngles(70.0, 30.0);
+    const core::CameraFrame coarse(camera, 40, 40), fine(camera, 120, 120);
+    const render::MethodPtr method = render::makeMethod("inversevis-wrap");
+    const render::CurvedRayMap coarseRays(scene, coarse, *method->curved()), fineRays(scene, fine, *method->curved());
+    auto sampler = scene.distance().sampler();
+    int seeded = 0, drawn = 0, agree = 0;
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 40; ++x) {
+            render::CurvedRayStart a, b;
+            const bool drawnA = coarseRays.start(x + 0.5, y + 0.5, sampler, a);
+            const bool drawnB = fineRays.start(3 * x + 1.5, 3 * y + 1.5, sampler, b);
+            if (a.ring <= 0.0f && b.ring <= 0.0f) continue;  // a direct hit or no seed in both
+            ++seeded;
+            drawn += drawnA;
+            agree += drawnA == drawnB;
+            if (drawnA && drawnB) {
+                EXPECT_NEAR(a.bend, b.bend, 1e-3f) << x << " " << y;
+            }
+        }
+    ASSERT_GT(drawn, 100);
+    EXPECT_GE(agree, seeded - seeded / 100) << "of " << seeded << " seeded pixels";
 }
 
 }  // namespace

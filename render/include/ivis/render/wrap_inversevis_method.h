@@ -16,7 +16,7 @@ struct WrapLaunch {
     float ringScale = 12.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
     float speed = 2.5f;       ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
     float tilt = 0.5f;        ///< launch direction: view direction + tilt * t * grad phi (normalised)
-    float stableShift = 0.04f;  ///< largest |P(alpha - d) + P(alpha + d) - 2 P(alpha)|, d = 0.01 (else not drawn)
+    float stableShift = 0.1f;  ///< largest |P(inner) + P(outer) - 2 P| over the neighbouring pixels' rays (else not drawn)
 };
 
 /// @brief Description of `inversevis-wrap`: wrap_speed, wrap_tilt, ring_scale, stable_shift (the
