@@ -66,6 +66,13 @@ float localRadiusNear(vec3 p)
     return barycentric.x * localRadius[v.x] + barycentric.y * localRadius[v.y] + barycentric.z * localRadius[v.z];
 }
 
+// The launch at ring coordinate @a t (WrapInverseVisMethod::aim's launchAt): alpha = speed t (2 - t)
+// along the view direction's tangential part, tilted outward by tilt t.
+vec3 wrapLaunch(float t, vec3 along, vec3 outward)
+{
+    return uWrapSpeed * t * (2.0 - t) * normalize(along + uWrapTilt * t * outward);
+}
+
 // The indirect ray of @a pixel: CurvedRayMap::map with WrapInverseVisMethod::aim.
 bool indirectRay(vec2 pixel, out vec3 colour)
 {
@@ -84,14 +91,13 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     float len = length(gradient);
     vec3 outward = len > 0.0 ? gradient / len : vec3(0.0);
     vec3 along = normalize(initialVelocity(gradient, direction, 1.0));
-    // The launch at ring coordinate t (WrapInverseVisMethod::aim's launchAt), and the rays of the
-    // neighbouring pixels across the ring: seeds a step further in and out (its kNeighbourStep).
+    // The ray, and the rays of the neighbouring pixels across the ring: seeds a step further in and
+    // out (WrapInverseVisMethod's kNeighbourStep), the ring coordinate moving with them.
     float step = min(0.003, distance);
-    float tInner = ring - step / width, tOuter = ring + step / width;
     vec3 here = seed, inner = seed - step * outward, outer = seed + step * outward;
-    vec3 v = uWrapSpeed * ring * (2.0 - ring) * normalize(along + uWrapTilt * ring * outward);
-    vec3 vInner = uWrapSpeed * tInner * (2.0 - tInner) * normalize(along + uWrapTilt * tInner * outward);
-    vec3 vOuter = uWrapSpeed * tOuter * (2.0 - tOuter) * normalize(along + uWrapTilt * tOuter * outward);
+    vec3 v = wrapLaunch(ring, along, outward);
+    vec3 vInner = wrapLaunch(ring - step / width, along, outward);
+    vec3 vOuter = wrapLaunch(ring + step / width, along, outward);
     if (!integrateCurvedRay(here, v) || !integrateCurvedRay(inner, vInner) || !integrateCurvedRay(outer, vOuter))
         return false;
     if (length(inner + outer - 2.0 * here) > uStableShift) return false;

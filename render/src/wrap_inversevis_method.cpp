@@ -70,11 +70,11 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     // The launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
     // tangential to the hull, tilted outward by tilt t.
     const glm::vec3 along = glm::normalize(start.velocityPerAlpha);
-    auto launchAt = [&](float t) {
-        return mLaunch.speed * t * (2.0f - t) * glm::normalize(along + mLaunch.tilt * t * outward);
-    };
-    start.velocityPerAlpha = glm::normalize(along + mLaunch.tilt * start.ring * outward);
-    start.alpha = mLaunch.speed * start.ring * (2.0f - start.ring);
+    auto alphaAt = [&](float t) { return mLaunch.speed * t * (2.0f - t); };
+    auto directionAt = [&](float t) { return glm::normalize(along + mLaunch.tilt * t * outward); };
+    auto launchAt = [&](float t) { return alphaAt(t) * directionAt(t); };
+    start.velocityPerAlpha = directionAt(start.ring);
+    start.alpha = alphaAt(start.ring);
 
     // Where rays fly smoothly, the landings of neighbouring pixels across the ring lie on a smooth
     // curve; where they fly chaotically, or part on either side of a tear, the rays launched from
