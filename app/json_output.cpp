@@ -31,16 +31,18 @@ nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
     return {{"parameter", parameter},
             {"value", setting.method->values().at(parameter).at(0)},
             {"estimated_coherence", setting.coherence.value()},
-            {"sampled_pairs", setting.coherence.pairs}};
+            {"sampled_pairs", setting.coherence.pairs},
+            {"picture_size", {setting.size.x, setting.size.y}}};
 }
 
 std::string readableSettingLine(const optimize::ReadableSetting& setting)
 {
     const std::string& parameter = setting.method->info().readabilityParameter;
-    char text[160];
-    std::snprintf(text, sizeof text, "readable rule: %s %.4g, estimated coherence %.4f on %zu sampled pairs",
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "readable rule: %s %.4g, estimated coherence %.4f on %zu sampled pairs of a %dx%d picture",
                   parameter.c_str(), setting.method->values().at(parameter).at(0), setting.coherence.value(),
-                  setting.coherence.pairs);
+                  setting.coherence.pairs, setting.size.x, setting.size.y);
     return text;
 }
 

@@ -17,9 +17,10 @@ namespace ivis::app {
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
 /// @brief The readability step's choice (optimize::loosestReadable): parameter, value, its
-///        estimated coherence and the sampled pairs it was estimated on.
+///        estimated coherence, the sampled pairs it was estimated on and that picture's size.
 nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting);
-/// @brief "readable rule: stable_shift 0.02, estimated coherence 0.9931 on 20051 sampled pairs".
+/// @brief "readable rule: stable_shift 0.02, estimated coherence 0.9931 on 20051 sampled pairs of a
+///        1000x1000 picture".
 std::string readableSettingLine(const optimize::ReadableSetting& setting);
 
 /// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,

@@ -192,8 +192,8 @@ Command addRenderCommand(CLI::App& app)
                                                           renderOptions.width, renderOptions.height);
         std::optional<optimize::ReadableSetting> readable;
         if (chooseRule) {
-            readable = optimize::loosestReadable(scene, camera, renderOptions.method, renderOptions.height,
-                                                 options->minCoherence);
+            const glm::ivec2 judged = optimize::readabilityPictureSize(renderOptions.width, renderOptions.height);
+            readable = optimize::loosestReadable(scene, camera, renderOptions.method, judged, options->minCoherence);
             core::logInfo(readableSettingLine(*readable));
             renderOptions.method = readable->method;
             camera = options->view.pictureCamera(scene, requested, *renderOptions.method, renderOptions.width,

@@ -78,7 +78,9 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         const render::RenderOptions options = view.renderOptions(current.field());
         const core::Camera at =
             view.pictureCamera(current.scene(), request.camera, *request.method, options.width, options.height);
-        readable = optimize::loosestReadable(current.scene(), at, request.method, options.height, request.minCoherence);
+        readable = optimize::loosestReadable(current.scene(), at, request.method,
+                                             optimize::readabilityPictureSize(options.width, options.height),
+                                             request.minCoherence);
         core::logInfo(readableSettingLine(*readable));
         request.method = readable->method;
     };

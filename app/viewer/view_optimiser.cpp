@@ -120,8 +120,9 @@ ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings)
         const std::string& key = start.method->info().readabilityParameter;
         const render::ParameterSpec* spec = start.method->info().parameter(key);
         const render::MethodPtr fromDefault = spec ? render::withValues(*start.method, {{key, spec->defaults}}) : start.method;
-        const optimize::ReadableSetting readable = optimize::loosestReadable(
-            scene, camera, fromDefault, optimize::kCoherenceResolution, settings.optimization.minCoherence);
+        const glm::ivec2 square(optimize::kCoherenceResolution);  // the frame above is square
+        const optimize::ReadableSetting readable =
+            optimize::loosestReadable(scene, camera, fromDefault, square, settings.optimization.minCoherence);
         OptimiserResult result;
         result.state = {start.camera, readable.method};
         result.evaluations = 1;

@@ -7,6 +7,7 @@
 #include <ivis/optimize/readability.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/method_registry.h>
+#include <ivis/render/renderer.h>
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@ namespace ivis::optimize {
 namespace {
 
 constexpr int kResolution = 400;  // pixels per side of the pictures kept coherent (stride 2)
+const glm::ivec2 kSize(kResolution, kResolution);
 
 float stableShift(const render::Method& method) { return method.values().at("stable_shift").at(0); }
 
@@ -40,7 +42,7 @@ TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
     const std::vector<float> values = {0.005f, 0.02f, 0.08f};
     const int size = 150;
-    const std::vector<Coherence> all = coherenceAtSettings(*fixture.scene, camera, *wrap, size, 1, values);
+    const std::vector<Coherence> all = coherenceAtSettings(*fixture.scene, camera, *wrap, {size, size}, 1, values);
     ASSERT_EQ(all.size(), values.size());
     for (std::size_t k = 0; k < values.size(); ++k) {
         const render::MethodPtr method = render::withValues(*wrap, {{"stable_shift", {values[k]}}});
@@ -50,11 +52,45 @@ TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
     }
     EXPECT_GT(all[2].pairs, all[0].pairs) << "a looser rule draws more rays";
     EXPECT_LT(all[2].value(), 1.0) << "and the tree's picture has tears to count";
-    const std::vector<Coherence> sampled = coherenceAtSettings(*fixture.scene, camera, *wrap, size, 3, values);
+    const std::vector<Coherence> sampled = coherenceAtSettings(*fixture.scene, camera, *wrap, {size, size}, 3, values);
     EXPECT_LT(sampled[0].pairs, all[0].pairs / 4);
-    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *render::makeMethod("inversevis"), size, 1, values),
+    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *render::makeMethod("inversevis"), {size, size}, 1, values),
                  ValueError);
-    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, size, 1, {}), ValueError);
+    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, {size, size}, 1, {}), ValueError);
+    EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, {size, 0}, 1, values), ValueError);
+}
+
+TEST(Readability, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
+{
+    // Brute force: a 150 x 90 picture rendered with each value, its coherence counted on its layers.
+    const auto& fixture = test::vesselScene();
+    const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    const std::vector<float> values = {0.005f, 0.08f};
+    const std::vector<Coherence> all = coherenceAtSettings(*fixture.scene, camera, *wrap, {150, 90}, 1, values);
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        render::RenderOptions options;
+        options.width = 150;
+        options.height = 90;
+        options.method = render::withValues(*wrap, {{"stable_shift", {values[k]}}});
+        const Coherence rendered = mappingCoherence(render::renderImage(*fixture.scene, camera, options).layers);
+        EXPECT_GT(rendered.pairs, 1000u);
+        EXPECT_EQ(all[k].pairs, rendered.pairs) << values[k];
+        EXPECT_EQ(all[k].coherent, rendered.coherent) << values[k];
+    }
+}
+
+TEST(Readability, JudgesEveryPictureAtTheMeasuresRowsInItsOwnAspect)
+{
+    EXPECT_EQ(readabilityPictureSize(480, 480), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
+    EXPECT_EQ(readabilityPictureSize(4000, 4000), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
+    EXPECT_EQ(readabilityPictureSize(1600, 900), glm::ivec2(1778, kCoherenceResolution));
+    EXPECT_EQ(readabilityPictureSize(300, 1200), glm::ivec2(250, kCoherenceResolution));
+    EXPECT_EQ(readabilityPictureSize(100000, 10), glm::ivec2(4 * kCoherenceResolution, kCoherenceResolution))
+        << "a very wide picture judged on its middle";
+    EXPECT_EQ(readabilityPictureSize(1, 100000), glm::ivec2(1, kCoherenceResolution));
+    EXPECT_THROW(readabilityPictureSize(0, 10), ValueError);
+    EXPECT_THROW(readabilityPictureSize(10, 0), ValueError);
 }
 
 TEST(Readability, TheLadderRunsFromAnEighthToEightTimesTheOwnValueInStepsOfRootTwo)
@@ -84,7 +120,7 @@ TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     const std::vector<float> ladder = readabilityLadder(*wrap);
     const std::size_t own = 6;
     const std::vector<Coherence> coherence =
-        coherenceAtSettings(scene, camera, *wrap, kResolution, kResolution / 200, ladder);
+        coherenceAtSettings(scene, camera, *wrap, kSize, kResolution / 200, ladder);
     // Every rung from the tightest up to the chosen one holds the bound, the next one does not.
     auto expectChosenRung = [&](const ReadableSetting& chosen, double minCoherence) {
         const auto rung = std::find(ladder.begin(), ladder.end(), stableShift(*chosen.method));
@@ -99,10 +135,11 @@ TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     };
 
     // Any coherence will do: the loosest rung.
-    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1e-6).method), ladder.back());
+    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1e-6).method), ladder.back());
     // At 0.99.
-    const ReadableSetting chosen = loosestReadable(scene, camera, wrap, kResolution, 0.99);
+    const ReadableSetting chosen = loosestReadable(scene, camera, wrap, kSize, 0.99);
     expectChosenRung(chosen, 0.99);
+    EXPECT_EQ(chosen.size, kSize) << "the size it was judged at";
     // Looser draws more: the chosen picture shows at least as much of the surface as the tightest.
     EnergyOptions options;
     options.resolution = 200;
@@ -112,23 +149,23 @@ TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     // Where the method's own rule leaves the picture less coherent than asked, a tighter rule.
     const double between = 0.5 * (coherenceLowerBound(coherence[0]) + coherenceLowerBound(coherence[own]));
     ASSERT_GT(coherenceLowerBound(coherence[0]), coherenceLowerBound(coherence[own])) << "the tree's own rule tears";
-    const ReadableSetting tighter = loosestReadable(scene, camera, wrap, kResolution, between);
+    const ReadableSetting tighter = loosestReadable(scene, camera, wrap, kSize, between);
     EXPECT_LT(stableShift(*tighter.method), ladder[own]);
     expectChosenRung(tighter, between);
     // Perfect coherence is more than the tree's picture has one rung up: the tightest rung.
     ASSERT_LT(coherenceLowerBound(coherence[1]), 1.0);
-    EXPECT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kResolution, 1.0).method), ladder.front());
+    EXPECT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1.0).method), ladder.front());
     // The method's own value chosen (here the loosest, the parameter's upper bound): the method itself.
     const render::MethodPtr loosest =
         render::withValues(*wrap, {{"stable_shift", {wrap->info().parameter("stable_shift")->hi}}});
-    EXPECT_EQ(loosestReadable(scene, camera, loosest, kResolution, 1e-6).method, loosest);
+    EXPECT_EQ(loosestReadable(scene, camera, loosest, kSize, 1e-6).method, loosest);
 
     // A method without a readability parameter is left as it is; bad arguments are refused.
     const render::MethodPtr faithful = render::makeMethod("inversevis");
-    EXPECT_EQ(loosestReadable(scene, camera, faithful, kResolution, 0.99).method, faithful);
-    EXPECT_THROW(loosestReadable(scene, camera, wrap, 0, 0.99), ValueError);
-    EXPECT_THROW(loosestReadable(scene, camera, wrap, kResolution, 0.0), ValueError);
-    EXPECT_THROW(loosestReadable(scene, camera, wrap, kResolution, 1.5), ValueError);
+    EXPECT_EQ(loosestReadable(scene, camera, faithful, kSize, 0.99).method, faithful);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, {0, kResolution}, 0.99), ValueError);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, kSize, 0.0), ValueError);
+    EXPECT_THROW(loosestReadable(scene, camera, wrap, kSize, 1.5), ValueError);
 }
 
 TEST(Readability, TheAnnealingsBestViewIsMeasuredWithTheChosenSetting)

@@ -18,6 +18,8 @@ namespace {
 constexpr int kRungsEachSide = 6;
 /// Sampled rows and columns across the picture (about 3 * 200^2 pixels at any resolution).
 constexpr int kSampledLines = 200;
+/// A picture wider than this many heights is judged on its middle part.
+constexpr int kMaxAspect = 4;
 
 }  // namespace
 
@@ -29,34 +31,34 @@ double coherenceLowerBound(const Coherence& coherence)
 }
 
 std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, const core::Camera& camera,
-                                           const render::Method& method, int resolution, int stride,
+                                           const render::Method& method, const glm::ivec2& size, int stride,
                                            const std::vector<float>& values)
 {
     const std::string& parameter = method.info().readabilityParameter;
     if (parameter.empty() || !method.curved()) throw ValueError(method.name() + " has no readability parameter");
-    if (values.empty() || resolution < 1 || stride < 1)
-        throw ValueError("coherence at settings needs values, a positive resolution and a positive stride");
+    if (values.empty() || size.x < 1 || size.y < 1 || stride < 1)
+        throw ValueError("coherence at settings needs values, a positive size and a positive stride");
     const float loosest = *std::max_element(values.begin(), values.end());
     const render::MethodPtr traced = render::withValues(method, {{parameter, {loosest}}});
-    const core::CameraFrame frame(camera, resolution, resolution);
+    const core::CameraFrame frame(camera, size.x, size.y);
     const render::CurvedRayMap rays(scene, frame, *traced->curved());
 
     // The sampled pixels' landings and bends (infinite where no curved ray lands): in a sampled
     // row the sampled columns and their right neighbours, in the row below one the sampled columns.
-    const std::size_t pixels = std::size_t(resolution) * resolution;
+    const std::size_t pixels = std::size_t(size.x) * size.y;
     std::vector<glm::vec3> points(pixels);
     std::vector<float> bends(pixels, std::numeric_limits<float>::infinity());
-    tbb::parallel_for(0, resolution, [&](int y) {
+    tbb::parallel_for(0, size.y, [&](int y) {
         render::DistanceField::Sampler sampler = scene.distance().sampler();
         std::vector<render::CurvedRayStart> starts;
         std::vector<std::size_t> at;
-        for (int x = 0; x < resolution; ++x) {
+        for (int x = 0; x < size.x; ++x) {
             const bool sampled = y % stride == 0 ? x % stride == 0 || (x - 1) % stride == 0
                                                  : (y - 1) % stride == 0 && x % stride == 0;
             render::CurvedRayStart start;
             if (!sampled || !rays.start(x + 0.5, y + 0.5, sampler, start)) continue;
             starts.push_back(start);
-            at.push_back(std::size_t(y) * resolution + x);
+            at.push_back(std::size_t(y) * size.x + x);
         }
         std::vector<render::PixelMapping> landings(starts.size());
         rays.landingMany(starts.data(), starts.size(), sampler, landings.data());
@@ -70,9 +72,16 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
     std::vector<char> drawn(pixels);
     for (const float value : values) {
         for (std::size_t i = 0; i < pixels; ++i) drawn[i] = bends[i] <= value;
-        result.push_back(mappingCoherence(drawn, points, resolution, resolution, kCoherenceDistance, nullptr, stride));
+        result.push_back(mappingCoherence(drawn, points, size.x, size.y, kCoherenceDistance, nullptr, stride));
     }
     return result;
+}
+
+glm::ivec2 readabilityPictureSize(int width, int height)
+{
+    if (width < 1 || height < 1) throw ValueError("the readability step needs a picture of positive size");
+    const double columns = std::round(double(kCoherenceResolution) * width / height);
+    return {int(std::clamp(columns, 1.0, double(kMaxAspect * kCoherenceResolution))), kCoherenceResolution};
 }
 
 std::vector<float> readabilityLadder(const render::Method& method)
@@ -90,19 +99,19 @@ std::vector<float> readabilityLadder(const render::Method& method)
 }
 
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
-                                const render::MethodPtr& method, int resolution, double minCoherence)
+                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence)
 {
-    if (resolution < 1) throw ValueError("the readability step needs a positive resolution");
+    if (size.x < 1 || size.y < 1) throw ValueError("the readability step needs a positive size");
     if (!(minCoherence > 0.0 && minCoherence <= 1.0)) throw ValueError("the minimum coherence must lie in (0, 1]");
     const std::string& parameter = method->info().readabilityParameter;
-    if (parameter.empty()) return {method, {}};
+    if (parameter.empty()) return {method, {}, size};
     const std::vector<float> ladder = readabilityLadder(*method);
     const std::vector<Coherence> coherence =
-        coherenceAtSettings(scene, camera, *method, resolution, std::max(1, resolution / kSampledLines), ladder);
+        coherenceAtSettings(scene, camera, *method, size, std::max(1, size.y / kSampledLines), ladder);
     std::size_t chosen = 0;
     while (chosen + 1 < ladder.size() && coherenceLowerBound(coherence[chosen + 1]) >= minCoherence) ++chosen;
-    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen]};
-    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen]};
+    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen], size};
+    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen], size};
 }
 
 }  // namespace ivis::optimize

@@ -148,8 +148,8 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     }
     if (options.readableResolution > 0 && !start->info().readabilityParameter.empty()) {
         VisitedView& best = result.visited[result.best];
-        result.readable = loosestReadable(evaluator.scene(), best.camera, best.method, options.readableResolution,
-                                          options.minCoherence);
+        result.readable = loosestReadable(evaluator.scene(), best.camera, best.method,
+                                          {options.readableResolution, options.readableResolution}, options.minCoherence);
         if (result.readable->method != best.method) {
             best.method = result.readable->method;
             best.camera = cameraAt(best.thetaDeg, best.phiDeg, *best.method);

@@ -9,6 +9,8 @@
 #include <ivis/render/method.h>
 #include <ivis/render/render_scene.h>
 
+#include <glm/vec2.hpp>
+
 #include <vector>
 
 namespace ivis::optimize {
@@ -17,22 +19,31 @@ namespace ivis::optimize {
 struct ReadableSetting {
     render::MethodPtr method;  ///< the method with the chosen setting
     Coherence coherence;       ///< its picture's coherence, estimated on sampled pairs
+    glm::ivec2 size{0, 0};     ///< the size (width, height) of the picture it was estimated on
 };
 
 /// @brief Lower end of the about 95% interval of the coherence estimated from @a coherence's pairs:
 ///        value - 2 sqrt(value (1 - value) / pairs).
 double coherenceLowerBound(const Coherence& coherence);
 
-/// @brief The mapping coherence of @a method's picture from @a camera at @a resolution^2 pixels with
-///        its readability parameter at each of @a values, from one tracing of its rays at the
-///        largest value (a ray is drawn at a value when its CurvedRayStart::bend is at most that):
-///        on the pairs of every @a stride-th row and column (mappingCoherence's stride; stride 1 is
-///        measureCoherence of the method at that value).
-/// @throw ValueError for a method without a readability parameter, no value, a resolution or
-///        stride below 1
+/// @brief The mapping coherence of @a method's picture from @a camera at @a size pixels (width,
+///        height) with its readability parameter at each of @a values, from one tracing of its rays
+///        at the largest value (a ray is drawn at a value when its CurvedRayStart::bend is at most
+///        that): on the pairs of every @a stride-th row and column (mappingCoherence's stride;
+///        stride 1 is measureCoherence of the method at that value).
+/// @throw ValueError for a method without a readability parameter, no value, a size or stride below 1
 std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, const core::Camera& camera,
-                                           const render::Method& method, int resolution, int stride,
+                                           const render::Method& method, const glm::ivec2& size, int stride,
                                            const std::vector<float>& values);
+
+/// @brief The size the readability step judges a @a width x @a height picture at, whatever its
+///        own: the coherence measure's kCoherenceResolution rows (METHOD.md, "The measures", 2)
+///        and as many columns as the picture's aspect gives (at most 4 times as many). The rule
+///        then draws the same rays at every size (the wrap's rule judges each view ray alone), and
+///        a small picture, whose neighbouring pixels land further apart, does not get a tighter
+///        rule that scatters its outer rings into dust.
+/// @throw ValueError for a size below 1
+glm::ivec2 readabilityPictureSize(int width, int height);
 
 /// @brief The settings the readability step chooses among, tightest first: @a method's readability
 ///        parameter at its own value v times 2^(k/2), k = -6..6 (v/8 to 8v), within the parameter's
@@ -40,13 +51,13 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
 std::vector<float> readabilityLadder(const render::Method& method);
 
 /// @brief Of readabilityLadder(@a method), the loosest rung reached from the tightest before a rung
-///        whose picture from @a camera at @a resolution^2 pixels has a coherence lower bound below
-///        @a minCoherence (the tightest when the next one falls short), estimated on the pairs of
-///        every (resolution / 200)-th row and column: the method's own rule is loosened where its
-///        picture has room in coherence and tightened where it has none. A method without such a
+///        whose picture from @a camera at @a size pixels (width, height) has a coherence lower
+///        bound below @a minCoherence (the tightest when the next one falls short), estimated on
+///        the pairs of every (height / 200)-th row and column: the method's own rule is loosened
+///        where its picture has room in coherence and tightened where it has none. A method without such a
 ///        parameter is returned as it is, nothing measured; a method at the chosen value itself.
-/// @throw ValueError for a resolution below 1 or a minimum coherence outside (0, 1]
+/// @throw ValueError for a size below 1 or a minimum coherence outside (0, 1]
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
-                                const render::MethodPtr& method, int resolution, double minCoherence);
+                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence);
 
 }  // namespace ivis::optimize
