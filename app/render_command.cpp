@@ -71,8 +71,9 @@ Command addRenderCommand(CLI::App& app)
         ->add_option("--min-coherence", options->minCoherence,
                      "Readable rule: when the method's rule for drawing rays (inversevis-wrap: --stable-shift) is "
                      "given neither as an option nor by --view, the loosest rule (from an eighth of the default to "
-                     "8 times it) whose picture keeps an estimated mapping coherence of at least this (beyond the "
-                     "paper; a series: chosen on its first step); 0: the default rule")
+                     "8 times it) whose picture keeps an estimated mapping coherence of at least this, judged on the "
+                     "view's picture at 1000 rows (the measure's size) whatever --res (beyond the paper; a series: "
+                     "chosen on its first step); 0: the default rule")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
     command->add_option("--tear-map", options->tearMap,
