@@ -82,7 +82,7 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(std::optional<g
     options.seed = seed;
     options.finalists = finalists;
     options.polishDeg = polishDeg;
-    options.startAtBestAxisView = !startAngles;
+    options.startAtBestCubeView = !startAngles;
     if (startAngles) {
         options.startThetaDeg = startAngles->x;
         options.startPhiDeg = startAngles->y;

@@ -22,7 +22,7 @@ struct OptimizationOptions {
     int visibilityResolution = 200;     ///< grid of the reported visibility measure (the paper's)
     int optVisibilityResolution = 0;    ///< grid of the optimised energy; 0: see energyOptions()
     std::uint64_t seed = 1;
-    int steps = 30;
+    int steps = 20;
     double cooling = 0.9;
     std::string gradient = "auto";
     int ascentIterations = 3;
@@ -30,7 +30,7 @@ struct OptimizationOptions {
     int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
-    int finalistResolution = 300;       ///< rays per side of that measurement
+    int finalistResolution = 260;       ///< rays per side of that measurement
     double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,

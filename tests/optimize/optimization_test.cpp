@@ -242,31 +242,68 @@ TEST(ViewpointAnnealing, IsDeterministicForASeedAndFollowsItsRules)
     EXPECT_EQ(a.bestView().value.energy, best);
 }
 
-TEST(ViewpointAnnealing, StartsAtTheBestOfTheSixAxisViews)
+TEST(ViewpointAnnealing, CubeViewsLookFromEveryFaceEdgeAndCornerOfACube)
+{
+    const std::vector<std::array<double, 2>> views = cubeViews();
+    ASSERT_EQ(views.size(), 26u);
+    for (std::size_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(views[i][0], kAxisViews[i][0]);
+        EXPECT_EQ(views[i][1], kAxisViews[i][1]);
+    }
+    // Brute force: every direction (x, y, z) in {-1, 0, 1}^3 but the zero one is the eye direction
+    // of exactly one view.
+    std::vector<int> hits(views.size(), 0);
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z) {
+                if (x == 0 && y == 0 && z == 0) continue;
+                const glm::dvec3 direction = glm::normalize(glm::dvec3(x, y, z));
+                int found = 0;
+                for (std::size_t i = 0; i < views.size(); ++i) {
+                    const glm::dvec3 eye = core::Camera::fromAngles(views[i][0], views[i][1], 1.0).eye;
+                    if (glm::length(eye - direction) < 1e-9) {
+                        ++found;
+                        ++hits[i];
+                    }
+                }
+                EXPECT_EQ(found, 1) << "direction " << x << ", " << y << ", " << z;
+            }
+    for (std::size_t i = 0; i < views.size(); ++i) EXPECT_EQ(hits[i], 1) << "view " << i;
+}
+
+TEST(ViewpointAnnealing, StartsAtTheBestOfTheCubeViews)
 {
     const auto& fixture = test::vesselScene();
     const EnergyEvaluator evaluator(*fixture.scene, visibilityOptions(32));
     AnnealingOptions options;
     options.steps = 3;
-    options.startAtBestAxisView = true;
+    options.startAtBestCubeView = true;
     const MethodPtr start = makeMethod("neugebauer");
     const AnnealingResult run = annealViewpoint(evaluator, start, options);
-    ASSERT_EQ(run.visited.size(), 9u);
+    const std::vector<std::array<double, 2>> views = cubeViews();
+    ASSERT_EQ(run.visited.size(), views.size() + 3);
     std::size_t best = 0;
-    for (std::size_t i = 0; i < 6; ++i) {
+    for (std::size_t i = 0; i < views.size(); ++i) {
         const VisitedView& view = run.visited[i];
-        EXPECT_EQ(view.thetaDeg, kAxisViews[i][0]);
-        EXPECT_EQ(view.phiDeg, kAxisViews[i][1]);
+        EXPECT_EQ(view.thetaDeg, views[i][0]);
+        EXPECT_EQ(view.phiDeg, views[i][1]);
         const core::Camera camera = render::frameView(*fixture.scene, core::Camera::fromAngles(view.thetaDeg, view.phiDeg), *start, 1.0);
-        EXPECT_EQ(view.value.energy, evaluator.evaluate(camera, start).energy) << "axis view " << i;
+        EXPECT_EQ(view.value.energy, evaluator.evaluate(camera, start).energy) << "cube view " << i;
         if (view.value.energy > run.visited[best].value.energy) best = i;
     }
-    EXPECT_NE(best, 2u) << "the test needs a best axis view other than the fixed start (90, 0)";
-    for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(run.visited[i].accepted, i == best) << "axis view " << i;
-    // The first proposal is a neighbour of the best axis view (within 60 degrees in theta).
-    const VisitedView& first = run.visited[6];
-    if (run.visited[best].thetaDeg == 90.0) {
-        EXPECT_LE(std::abs(first.thetaDeg - 90.0), 60.0 + 1e-9);
+    EXPECT_NE(best, 2u) << "the test needs a best cube view other than the fixed start (90, 0)";
+    for (std::size_t i = 0; i < views.size(); ++i) EXPECT_EQ(run.visited[i].accepted, i == best) << "cube view " << i;
+    // Every proposal is a neighbour of the view accepted before it: within 60 degrees in theta
+    // unless a step that long could cross a pole (and be reflected there).
+    const VisitedView* current = &run.visited[best];
+    for (std::size_t i = views.size(); i < run.visited.size(); ++i) {
+        const VisitedView& proposal = run.visited[i];
+        const double theta = current->thetaDeg;
+        const bool mayCrossAPole = theta < 60.0 || theta > 120.0;
+        if (!mayCrossAPole) {
+            EXPECT_LE(std::abs(proposal.thetaDeg - theta), 60.0 + 1e-9) << "proposal " << i;
+        }
+        if (proposal.accepted) current = &proposal;
     }
 }
 

@@ -3,6 +3,8 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/framing.h>
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -52,6 +54,20 @@ void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvalua
 }
 
 }  // namespace
+
+std::vector<std::array<double, 2>> cubeViews()
+{
+    std::vector<std::array<double, 2>> views;
+    for (const auto& angles : kAxisViews) views.push_back({angles[0], angles[1]});
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y)
+            for (int z = -1; z <= 1; ++z) {
+                if ((x != 0) + (y != 0) + (z != 0) < 2) continue;
+                const double length = std::sqrt(double(x * x + y * y + z * z));
+                views.push_back({glm::degrees(std::acos(y / length)), glm::degrees(std::atan2(double(x), double(z)))});
+            }
+    return views;
+}
 
 bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw)
 {
@@ -105,8 +121,8 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     };
 
     if (interrupter) interrupter->start("viewpoint annealing");
-    if (options.startAtBestAxisView) {
-        for (const auto& angles : kAxisViews) keep(visit(angles[0], angles[1], start));
+    if (options.startAtBestCubeView) {
+        for (const auto& angles : cubeViews()) keep(visit(angles[0], angles[1], start));
     } else {
         keep(visit(options.startThetaDeg, options.startPhiDeg, start));
     }

@@ -3,7 +3,7 @@
 ///        optimisation"): neighbours within +-60 degrees in polar and azimuth angle, acceptance
 ///        exp(10 (E_new - E_old) / T), T_k = T0 * cooling^k; the method's parameters are optimised
 ///        at every proposal before its energy is measured. Beyond the paper (AnnealingOptions): a
-///        start at the best axis view, a compass search round the best view, finalists.
+///        start at the best of the 26 cube views, a compass search round the best view, finalists.
 ///        Each view is framed for its method (render::frameView, a square image) unless the field
 ///        of view is fixed: the ascent runs at the view framed for the parameters it starts from,
 ///        and the view's energy is that of the view framed for the parameters it ends with (they
@@ -14,6 +14,7 @@
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/readability.h>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -22,14 +23,14 @@ namespace ivis::optimize {
 
 /// @brief Annealing schedule and start.
 struct AnnealingOptions {
-    int steps = 30;                  ///< proposals after the start view
+    int steps = 20;                  ///< proposals after the start view
     double neighbourhoodDeg = 60.0;  ///< proposal range in each angle
     double startTemperature = 1.0;
     double cooling = 0.9;            ///< T_k = startTemperature * cooling^k
     double acceptanceScale = 10.0;   ///< the 10 in exp(10 dE / T)
     double startThetaDeg = 90.0;
     double startPhiDeg = 0.0;
-    bool startAtBestAxisView = false;  ///< start at the best of kAxisViews instead (the start angles unused)
+    bool startAtBestCubeView = false;  ///< start at the best of cubeViews() instead (the start angles unused)
     std::optional<double> fovYDeg;  ///< a fixed vertical field of view; empty: each view framed
     std::uint64_t seed = 1;
     int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
@@ -41,6 +42,11 @@ struct AnnealingOptions {
 
 /// @brief The six views along the coordinate axes, (theta, phi) in degrees: from +y, -y, +z, +x, -z, -x.
 inline constexpr double kAxisViews[6][2] = {{0.0, 0.0}, {180.0, 0.0}, {90.0, 0.0}, {90.0, 90.0}, {90.0, 180.0}, {90.0, -90.0}};
+
+/// @brief The 26 views from the centres of a cube's faces, edges and corners, (theta, phi) in
+///        degrees: kAxisViews first, then the 12 edge and 8 corner directions (x, y, z in
+///        {-1, 0, 1}, two or three of them nonzero; x varies slowest, z fastest).
+std::vector<std::array<double, 2>> cubeViews();
 
 /// @brief One evaluated camera position.
 struct VisitedView {
@@ -54,8 +60,8 @@ struct VisitedView {
     std::optional<EnergyValue> finalValue;  ///< its energy on the finalist evaluator (finalists only)
 };
 
-/// @brief Every visited view (the start first; with startAtBestAxisView the six axis views first,
-///        in kAxisViews' order, the best of them the start) and the best one.
+/// @brief Every visited view (the start first; with startAtBestCubeView the 26 cube views first,
+///        in cubeViews()' order, the best of them the start) and the best one.
 struct AnnealingResult {
     std::vector<VisitedView> visited;
     std::size_t best = 0;  ///< index into visited
@@ -75,8 +81,8 @@ struct AnnealingResult {
 bool acceptsProposal(double gain, double temperature, double acceptanceScale, double draw);
 
 /// @brief Runs the annealing from the start view with the method of @a start (with
-///        AnnealingOptions::startAtBestAxisView, from the axis view of highest energy: a search of
-///        30 proposals explores one region of the sphere, and which one its start decides); then,
+///        AnnealingOptions::startAtBestCubeView, from the cube view of highest energy: a search of
+///        a few dozen proposals explores one region of the sphere, and which one its start decides); then,
 ///        with AnnealingOptions::polishDeg, a compass search round the best view: its four
 ///        neighbours polishDeg away in theta and in phi, the best of all so far the next centre, the
 ///        step halved each round (random proposals 60 degrees wide rarely land within a few degrees
