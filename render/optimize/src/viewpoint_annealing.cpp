@@ -3,8 +3,6 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/framing.h>
 
-#include <glm/trigonometric.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -63,8 +61,10 @@ std::vector<std::array<double, 2>> cubeViews()
         for (int y = -1; y <= 1; ++y)
             for (int z = -1; z <= 1; ++z) {
                 if ((x != 0) + (y != 0) + (z != 0) < 2) continue;
-                const double length = std::sqrt(double(x * x + y * y + z * z));
-                views.push_back({glm::degrees(std::acos(y / length)), glm::degrees(std::atan2(double(x), double(z)))});
+                core::Camera camera;
+                camera.eye = glm::dvec3(x, y, z);
+                const glm::dvec2 angles = camera.angles();
+                views.push_back({angles.x, angles.y});
             }
     return views;
 }
