@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -113,6 +115,24 @@ CliResult waitCli(const Child& child)
     fs::remove(child.out);
     fs::remove(child.err);
     return result;
+}
+
+core::TriangleMesh openTube(std::uint32_t n)
+{
+    core::TriangleMesh mesh;
+    for (int ring = 0; ring < 2; ++ring) {
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const double angle = 2.0 * glm::pi<double>() * i / n;
+            mesh.positions.emplace_back(std::cos(angle), std::sin(angle), float(ring));
+        }
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t j = (i + 1) % n;
+        mesh.triangles.push_back({i, j, n + j});
+        mesh.triangles.push_back({i, n + j, n + i});
+    }
+    mesh.dataTriangleCount = mesh.triangles.size();
+    return mesh;
 }
 
 }  // namespace ivis::test

@@ -1,8 +1,13 @@
 /// @file test_support.h
-/// @brief Shared test helpers: temporary folders, the shared mesh folder, running the CLI.
+/// @brief Shared test helpers: temporary folders, the shared mesh folder, running the CLI, a small
+///        open mesh.
 #pragma once
 
+#include <ivis/core/triangle_mesh.h>
+
 #include <glm/vec3.hpp>
+
+#include <cstdint>
 
 #include <string>
 #include <vector>
@@ -40,6 +45,13 @@ CliResult runCli(const std::string& arguments);
 
 /// @brief @a count unit directions spread evenly over the sphere (Fibonacci lattice).
 std::vector<glm::vec3> fibonacciDirections(int count);
+
+/// @brief Open tube of @a n segments around the z axis, radius 1, z in [0, 1], outward-facing:
+///
+///   top    n .. 2n-1   (z = 1)      n+i ---- n+i+1
+///                                    |   \      |
+///   bottom 0 .. n-1    (z = 0)       i  ----  i+1
+core::TriangleMesh openTube(std::uint32_t n);
 
 /// @brief A running `inversevis` and where its output goes.
 struct Child {

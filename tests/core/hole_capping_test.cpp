@@ -14,31 +14,14 @@
 namespace ivis::core {
 namespace {
 
-/// Open tube of @a n segments around the z axis, radius 1, z in [0, 1], outward-facing unless
-/// @a inward (then every triangle is flipped):
-///
-///   top    n .. 2n-1   (z = 1)      n+i ---- n+i+1
-///                                    |   \      |
-///   bottom 0 .. n-1    (z = 0)       i  ----  i+1
+/// test::openTube as a field, every triangle flipped (facing inward) if @a inward.
 SurfaceField openTube(std::uint32_t n, bool inward = false)
 {
     SurfaceField field;
-    TriangleMesh& mesh = field.mesh;
-    for (int ring = 0; ring < 2; ++ring) {
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const double angle = 2.0 * glm::pi<double>() * i / n;
-            mesh.positions.emplace_back(std::cos(angle), std::sin(angle), float(ring));
-        }
-    }
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t j = (i + 1) % n;
-        mesh.triangles.push_back({i, j, n + j});
-        mesh.triangles.push_back({i, n + j, n + i});
-    }
+    field.mesh = test::openTube(n);
     if (inward) {
-        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+        for (auto& t : field.mesh.triangles) std::swap(t[1], t[2]);
     }
-    mesh.dataTriangleCount = mesh.triangles.size();
     return field;
 }
 

@@ -1,11 +1,11 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/triangle_mesh.h>
 
-#include <glm/gtc/constants.hpp>
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <utility>
 
@@ -16,28 +16,7 @@ using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
 
 EdgeKey key(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std::max(a, b)}; }
 
-/// Open tube of @a n segments around the z axis, radius 1, z in [0, 1], outward-facing:
-///
-///   top    n .. 2n-1   (z = 1)      n+i ---- n+i+1
-///                                    |   \      |
-///   bottom 0 .. n-1    (z = 0)       i  ----  i+1
-TriangleMesh openTube(std::uint32_t n)
-{
-    TriangleMesh mesh;
-    for (int ring = 0; ring < 2; ++ring) {
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const double angle = 2.0 * glm::pi<double>() * i / n;
-            mesh.positions.emplace_back(std::cos(angle), std::sin(angle), float(ring));
-        }
-    }
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t j = (i + 1) % n;
-        mesh.triangles.push_back({i, j, n + j});
-        mesh.triangles.push_back({i, n + j, n + i});
-    }
-    mesh.dataTriangleCount = mesh.triangles.size();
-    return mesh;
-}
+using test::openTube;
 
 /// Closed tetrahedron, outward-facing: 0 at the origin, 1 on x, 2 on y, 3 on z.
 TriangleMesh tetrahedron()
