@@ -174,8 +174,10 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uIndirectShadows", frame.method->indirectRaysArriveFromOutside());
     const render::Method& method = *frame.method;
     setParameterUniforms(p, method);
-    p.set("uEpsilon", 0.5f * volume.textureVoxelSize);  // rays land within half a voxel (render::landingEpsilon)
-    if (const render::CurvedRayMethod* curved = method.curved()) {
+    const render::CurvedRayMethod* curved = method.curved();
+    // rays land within the method's landing threshold in voxels (render::landingEpsilon)
+    p.set("uEpsilon", (curved ? curved->rayParams() : render::CurvedRayParams{}).landingVoxels * volume.textureVoxelSize);
+    if (curved) {
         const float hullOffset = curved->rayParams().hullOffset;
         p.set("uMaxAlpha", render::kMaxAlpha);
         p.set("uRetries", curved->relaunches());

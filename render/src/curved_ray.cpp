@@ -172,7 +172,7 @@ glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirect
 
 float landingEpsilon(const CurvedRayParams& params, const DistanceField& field)
 {
-    return params.landingEpsilon > 0.0f ? params.landingEpsilon : 0.5f * field.voxelSize();
+    return params.landingVoxels * field.voxelSize();
 }
 
 }  // namespace ivis::render

@@ -16,11 +16,14 @@ namespace {
 constexpr float kNeighbourStep = 0.003f;
 
 /// The wrap's ray parameters by default: a hull wider than the paper's 0.4, so that a thick
-/// part's rings reach further round it.
+/// part's rings reach further round it, and rays that land a fifth as far from the surface as
+/// the paper's, so that a ray skimming a ridge flies on past it (docs/optimisation.md, "A closer
+/// landing").
 CurvedRayParams wrapRayDefaults()
 {
     CurvedRayParams params;
     params.hullOffset = 0.6f;
+    params.landingVoxels = 0.1f;
     return params;
 }
 
@@ -45,6 +48,7 @@ ParameterValues WrapInverseVisMethod::values() const
     values["wrap_tilt"] = {mLaunch.tilt};
     values["ring_scale"] = {mLaunch.ringScale};
     values["stable_shift"] = {mLaunch.stableShift};
+    values["landing"] = {rayParams().landingVoxels};
     return values;
 }
 
@@ -119,7 +123,9 @@ const MethodInfo& wrapInverseVisMethodInfo()
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
             {"stable_shift", "largest bend (normalised units) of the landings of a ray and of the rays seeded 0.003 further in and out across its ring (its neighbouring pixels'); rays that bend more fly chaotically or straddle a tear and are not drawn",
-             {defaults.stableShift}, 0.0001f, 10.0f}};
+             {defaults.stableShift}, 0.0001f, 10.0f},
+            {"landing", "a ray lands where phi falls below this many fine voxels (the paper's model: half a voxel)",
+             {wrapRayDefaults().landingVoxels}, 0.01f, 1.0f}};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";
         i.create = [](const ParameterValues& v) {
@@ -128,7 +134,9 @@ const MethodInfo& wrapInverseVisMethodInfo()
             launch.tilt = v.at("wrap_tilt")[0];
             launch.ringScale = v.at("ring_scale")[0];
             launch.stableShift = v.at("stable_shift")[0];
-            return std::make_shared<const WrapInverseVisMethod>(curvedRayParamsFrom(v), launch);
+            CurvedRayParams ray = curvedRayParamsFrom(v);
+            ray.landingVoxels = v.at("landing")[0];
+            return std::make_shared<const WrapInverseVisMethod>(ray, launch);
         };
         return i;
     }();

@@ -258,6 +258,11 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
     EXPECT_NE(output.find("RESAMPLED from 400"), std::string::npos) << output;
     EXPECT_GE(resampled.regionAgreement, 0.95);
     EXPECT_LT(resampled.indirectMeanDiff, 5.0);
+    // The wrap lands its rays within a tenth of the coarse voxel there (its `landing`), on the tree's
+    // unsigned field (measured 99.85% of the regions, 3.1 levels).
+    const Agreement wrapResampled = compareWithCpu("inversevis-wrap", 400, "--texture-budget 48", &output);
+    EXPECT_GE(wrapResampled.regionAgreement, 0.95);
+    EXPECT_LT(wrapResampled.indirectMeanDiff, 5.0);
 #endif
 }
 

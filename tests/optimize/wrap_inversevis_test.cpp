@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,43 @@ TEST(WrapInverseVis, DrawsTheRayItsStabilityRuleTraced)
         EXPECT_EQ(kept[i].end.steps, again[i].end.steps) << i;
         EXPECT_TRUE(kept[i].end.landed && again[i].end.landed) << "only stable landings are drawn";
     }
+}
+
+/// Exact distances to the mesh of the ends of the rays @a method draws on the unit sphere, in fine voxels.
+std::vector<double> landingHeights(const render::MethodPtr& method)
+{
+    const auto& fixture = test::sphereScene();
+    const render::RenderScene& scene = *fixture.scene;
+    const core::CameraFrame frame(core::Camera::fromAngles(70.0, 30.0), 160, 160);
+    const render::CurvedRayMap rays(scene, frame, *method->curved());
+    auto sampler = scene.distance().sampler();
+    std::vector<double> heights;
+    for (int y = 0; y < 160; ++y)
+        for (int x = 0; x < 160; ++x) {
+            render::CurvedRayStart start;
+            if (!rays.start(x + 0.5, y + 0.5, sampler, start)) continue;
+            int triangle = -1;
+            const glm::dvec3 end(start.traced->position);
+            const core::TrianglePoint closest = scene.bvh().closestPoint(end, 1.0, triangle);
+            heights.push_back(glm::length(end - closest.point) / scene.distance().voxelSize());
+        }
+    std::sort(heights.begin(), heights.end());
+    return heights;
+}
+
+TEST(WrapInverseVis, LandsItsRaysCloserToTheSurfaceThanHalfAVoxel)
+{
+    // A ray lands where the sampled phi falls below `landing` fine voxels (0.1; the paper's model:
+    // 0.5): the exact distance of its end to the mesh is that, within the field's interpolation.
+    // Measured on 12,013 rays: median 0.099, 99th percentile 0.111, largest 0.118 voxel; with
+    // landing 0.5: 0.482, 0.507, 0.515.
+    const std::vector<double> heights = landingHeights(render::makeMethod("inversevis-wrap"));
+    ASSERT_GT(heights.size(), 2000u);
+    EXPECT_LT(heights[heights.size() * 99 / 100], 0.15);
+    EXPECT_LT(heights.back(), 0.2);
+    const std::vector<double> paper = landingHeights(render::makeMethod("inversevis-wrap", {{"landing", {0.5f}}}));
+    ASSERT_GT(paper.size(), 2000u);
+    EXPECT_GT(paper[paper.size() / 2], 0.4) << "the threshold reaches the rays";
 }
 
 TEST(WrapInverseVis, ItsStabilityRuleDependsOnTheViewRayNotOnThePicturesSize)

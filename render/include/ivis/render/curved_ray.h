@@ -18,7 +18,7 @@ inline constexpr float kMaxAlpha = 4.0f;
 struct CurvedRayParams {
     float stepSize = 0.1f;      ///< symplectic Euler step h
     float hullOffset = 0.4f;    ///< phi0: the hull is {phi = phi0}
-    float landingEpsilon = 0.0f;  ///< land when phi < eps; 0 = half a fine voxel
+    float landingVoxels = 0.5f;  ///< land when phi < this many fine voxels (METHOD.md: about half a voxel)
     int maxSteps = 1000;        ///< rays still in flight after this many steps are misses
 };
 
@@ -115,7 +115,7 @@ inline CurvedRayEnd traceCurvedRay(DistanceField::Sampler& sampler, const glm::v
     return integrateCurvedRay(sampler, seed, velocity, params, epsilon, escapeDistance(sampler.field()));
 }
 
-/// @brief The landing threshold actually used: params.landingEpsilon or half a fine voxel.
+/// @brief The landing threshold in normalised units: params.landingVoxels fine voxels of @a field.
 float landingEpsilon(const CurvedRayParams& params, const DistanceField& field);
 
 }  // namespace ivis::render
