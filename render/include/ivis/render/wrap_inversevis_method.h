@@ -14,7 +14,7 @@ namespace ivis::render {
 /// @brief Launch of the wrap rays across the ring coordinate t in [0, 1).
 struct WrapLaunch {
     float ringScale = 12.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
-    float speed = 2.2f;       ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
+    float speed = 2.5f;       ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
     float tilt = 0.5f;        ///< launch direction: view direction + tilt * t * grad phi (normalised)
     float stableShift = 0.1f;  ///< largest |P(inner) + P(outer) - 2 P| over the neighbouring pixels' rays (else not drawn)
 };
