@@ -30,7 +30,7 @@ struct OptimizationOptions {
     int alphaScan = 0;                  ///< InverseVis alphas scanned before each ascent; 0: none
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
-    int finalistResolution = 260;       ///< rays per side of that measurement
+    int finalistResolution = 200;       ///< rays per side of that measurement
     double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
