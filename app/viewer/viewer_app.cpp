@@ -96,9 +96,12 @@ void ViewerApp::openWindow()
     mNormals = render::vertexNormals(mField->mesh);
     mRenderer->setMesh(*mField, mNormals);
     mRenderer->setColormap(mShading.colormap);
-    // Software rasterisers trace every pixel on the CPU: start at half resolution there.
-    if (mGlRenderer.find("llvmpipe") != std::string::npos || mGlRenderer.find("softpipe") != std::string::npos)
+    // Software rasterisers trace every pixel on the CPU: start at half resolution there, and at
+    // half of that while the camera moves.
+    if (mGlRenderer.find("llvmpipe") != std::string::npos || mGlRenderer.find("softpipe") != std::string::npos) {
         mRenderScale = 0.5f;
+        mInteraction.reduction = 0.5f;
+    }
     if (!mOptions.headless()) {
         startImGui(mWindow);
         mImGuiReady = true;
@@ -408,14 +411,17 @@ void ViewerApp::handleInput()
             glfwGetWindowSize(mWindow, &width, &height);
             if (pan) mOrbit.pan(io.MouseDelta.x, io.MouseDelta.y, height);
             else mOrbit.orbit(io.MouseDelta.x, io.MouseDelta.y);
+            mInteraction.moved(now(), true);
             mDirty = true;
         }
         if (io.MouseWheel != 0.0f) {
             mAnimation.stop();
             mOrbit.zoom(io.MouseWheel);
+            mInteraction.moved(now(), false);
             mDirty = true;
         }
     }
+    if (!io.MouseDown[0] && !io.MouseDown[1] && !io.MouseDown[2]) mInteraction.released();
     if (!io.WantCaptureKeyboard) {
         if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) takeNumberedScreenshot();
         if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
@@ -469,7 +475,8 @@ void ViewerApp::drawPanel()
     bool changed = methodWidgets(mMethod, reach);
     ImGui::Separator();
     const std::string colormap = mShading.colormap;
-    changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar(), mRenderScale);
+    changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar(), mRenderScale,
+                           mInteraction.reduction);
     changed |= ImGui::Checkbox("outline", &mOutline);
     tooltip("dark outline around the directly visible object, so direct and indirect parts are told apart");
     if (mField->hasScalar()) {
@@ -584,8 +591,9 @@ int ViewerApp::runInteractive()
         if (fbWidth > 0 && fbHeight > 0) {
             mPictureWidth = picture.width;
             mPictureHeight = picture.height;
-            const int width = std::max(16, int(std::lround(picture.width * mRenderScale)));
-            const int height = std::max(16, int(std::lround(picture.height * mRenderScale)));
+            const float scale = mInteraction.scale(mRenderScale, now());
+            const int width = std::max(16, int(std::lround(picture.width * scale)));
+            const int height = std::max(16, int(std::lround(picture.height * scale)));
             if (mDirty || width != lastWidth || height != lastHeight) {
                 renderFrame(width, height);
                 lastWidth = width;

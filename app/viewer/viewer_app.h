@@ -6,6 +6,7 @@
 
 #include "color_bar_overlay.h"
 #include "gpu_renderer.h"
+#include "interaction_scale.h"
 #include "orbit_camera.h"
 #include "scene_loader.h"
 #include "view_optimiser.h"
@@ -119,6 +120,7 @@ private:
 
     bool mDirty = true;
     float mRenderScale = 1.0f;
+    InteractionScale mInteraction;  ///< fewer pixels while the camera moves
     double mLastFrameMs = 0.0;
     int mScreenshots = 0;
     int mSavedViews = 0;

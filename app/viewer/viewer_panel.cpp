@@ -88,7 +88,7 @@ bool methodWidgets(render::MethodPtr& method, float reach)
 }
 
 bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
-                 bool hasScalar, float& renderScale)
+                 bool hasScalar, float& renderScale, float& interactionScale)
 {
     bool changed = false;
     const std::vector<std::string> maps = core::colormapNames();
@@ -130,6 +130,9 @@ bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core
     changed |= ImGui::Checkbox("shadows", &shading.shadows);
     changed |= ImGui::SliderFloat("render scale", &renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("fraction of the window's pixels traced (software OpenGL starts at 0.5)");
+    ImGui::SliderFloat("interaction scale", &interactionScale, 0.25f, 1.0f, "%.2f");
+    tooltip("fraction of the render scale traced while you orbit, pan or zoom; the full picture follows when the "
+            "camera rests (1: always the full render scale; software OpenGL starts at 0.5)");
     return changed;
 }
 

@@ -23,10 +23,11 @@ void tooltip(const char* text);
 bool methodWidgets(render::MethodPtr& method, float reach);
 
 /// @brief Colour map, scalar range, log and invert (when @a hasScalar; "data" resets the scale to
-///        @a dataScale), shadows and render scale; true when anything changed.
+///        @a dataScale), shadows, render scale and interaction scale; true when anything but the
+///        interaction scale (which changes no picture at rest) changed.
 /// @param colormapIndex index of shading.colormap in core::colormapNames(), kept in step with it
 bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
-                 bool hasScalar, float& renderScale);
+                 bool hasScalar, float& renderScale, float& interactionScale);
 
 /// @brief Energy (scalar only when @a hasScalar), optimisation rays and annealing steps.
 void optimiserWidgets(OptimiserSettings& settings, bool hasScalar);

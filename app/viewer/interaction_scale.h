@@ -1,0 +1,38 @@
+/// @file interaction_scale.h
+/// @brief Fewer pixels while the camera moves: the viewer's level of detail during interaction,
+///        as ParaView renders at a reduced resolution while the mouse moves the camera.
+#pragma once
+
+namespace ivis::app {
+
+/// @brief While the user orbits, pans or zooms, the viewer traces only a fraction of its render
+///        scale; the full picture follows once the camera rests: when the drag ends and
+///        kRestSeconds have passed since the last move (a wheel click has no release).
+class InteractionScale {
+public:
+    /// Seconds after the last camera move before a camera without a drag counts as resting.
+    static constexpr double kRestSeconds = 0.3;
+
+    /// Fraction of the render scale traced while the camera moves, in [0.25, 1] (1: always the
+    /// full render scale).
+    float reduction = 1.0f;
+
+    /// @brief The user moved the camera at @a now (seconds), by a drag or by the wheel.
+    void moved(double now, bool dragging)
+    {
+        mLastMove = now;
+        mDragging = dragging;
+    }
+    /// @brief Every mouse button is up: a drag has ended.
+    void released() { mDragging = false; }
+    /// @brief Whether the camera counts as moving at @a now.
+    bool moving(double now) const { return mDragging || now - mLastMove < kRestSeconds; }
+    /// @brief The fraction of the picture's pixels to trace at @a now, given the full @a renderScale.
+    float scale(float renderScale, double now) const { return moving(now) ? renderScale * reduction : renderScale; }
+
+private:
+    double mLastMove = -1.0e9;
+    bool mDragging = false;
+};
+
+}  // namespace ivis::app
