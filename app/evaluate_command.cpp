@@ -109,8 +109,14 @@ Command addEvaluateCommand(CLI::App& app)
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("evaluate", "Visibility and timing tables of the methods (paper Tab. 1, 2)");
     options->mesh.addTo(*command, &options->meshes);
-    command->add_option("--methods", options->methods, "Methods to compare (default: every method)")->delimiter(',')->capture_default_str();
-    command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions")->delimiter(',')
+    // Each list option takes one comma-separated argument, so the meshes may follow it.
+    command->add_option("--methods", options->methods, "Methods to compare, comma-separated (default: every method)")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->capture_default_str();
+    command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions, comma-separated")
+        ->delimiter(',')
+        ->allow_extra_args(false)
         ->capture_default_str();
     command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
         ->capture_default_str();
@@ -127,7 +133,8 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     command->add_option("--only", options->only,
                         "Evaluate only MESH:METHOD (the mesh's file stem; repeatable): one job of an evaluation spread "
-                        "over a cluster; `inversevis merge` joins the parts' --json files into the tables");
+                        "over a cluster; `inversevis merge` joins the parts' --json files into the tables")
+        ->allow_extra_args(false);
 
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first

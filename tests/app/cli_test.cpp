@@ -664,6 +664,24 @@ TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)
     EXPECT_TRUE(fs::exists(output("e.md")));
 }
 
+TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
+{
+    // Each list option takes one comma-separated argument (repeated, --only adds up), so the
+    // meshes may follow it instead of being read as more methods or resolutions.
+    const CliResult result = runCli("evaluate --methods front,inversevis --opt-res 16 --only sphere:front "
+                                    "--only torus:inversevis scene:sphere scene:torus --volume-res 48 --steps 1 "
+                                    "--display-res 32 --cache-dir " + quoted(output("")) + " --json " +
+                                    quoted(output("e.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("e.json")));
+    EXPECT_EQ(report.size(), 2u) << report.dump();
+    EXPECT_EQ(report.at("sphere").size(), 1u);
+    EXPECT_TRUE(report.at("sphere").contains("front"));
+    EXPECT_TRUE(report.at("torus").contains("inversevis"));
+    // A space-separated list now names a mesh, which is one line and status 2, not a method.
+    expectBadInput(runCli("evaluate --methods front inversevis scene:sphere --volume-res 48"), {"inversevis"});
+}
+
 TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
 {
     const std::string common = "evaluate scene:sphere scene:torus --volume-res 48 --methods front,inversevis --opt-res 16 "
