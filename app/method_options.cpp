@@ -25,7 +25,8 @@ void MethodOptions::addTo(CLI::App& command)
             option = command.add_option(spec.option(), values[spec.key],
                                         spec.help + " (default " + defaults + ", " + CLI::detail::to_string(spec.lo) +
                                             " to " + CLI::detail::to_string(spec.hi) + "); for " + info->name);
-            option->expected(int(spec.defaults.size()));
+            // Exactly as many values as the parameter has, so a mesh may follow the option.
+            option->expected(int(spec.defaults.size()))->allow_extra_args(false);
         }
 }
 

@@ -34,10 +34,11 @@ void ViewOptions::addTo(CLI::App& command)
     std::string names;
     for (const std::string& name : core::colormapNames()) names += (names.empty() ? "" : ", ") + name;
     command.add_option("--colormap", colormap, "Colour map: " + names)->capture_default_str();
-    command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2);
+    command.add_option("--range", range, "Scalar range lo hi (default: the data's)")->expected(2)->allow_extra_args(false);
     command.add_option("--range-percentile", rangePercentile,
                        "Scalar range from the data's LO-th and HI-th percentiles (0..100), for heavy-tailed data")
-        ->expected(2);
+        ->expected(2)
+        ->allow_extra_args(false);
     command.add_flag("--symmetric", symmetric, "Range centred on 0 ([-m, m], m the larger end), for signed data");
     command.add_flag("--log", logScale, "Logarithmic colour scale (the range's low end must be positive)");
     command.add_flag("--invert", invert, "Colour map reversed");

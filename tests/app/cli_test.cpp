@@ -527,6 +527,28 @@ TEST_F(Cli, RenderStatsCarryTheMethodsOwnParametersAndTheCoherence)
     EXPECT_LE(stats.at("coherence").get<double>(), 1.0);
 }
 
+TEST_F(Cli, RenderTakesItsMeshAfterOptionsWithValues)
+{
+    // An option takes exactly its own values (one, two, three or five), so the mesh may follow it;
+    // each picture's stats show the values were read.
+    const std::string tail = " scene:sphere --volume-res 48 --res 32x32 --cache-dir " + quoted(output("")) +
+                             " -o " + quoted(output("x.png")) + " --stats-json " + quoted(output("s.json"));
+    const std::vector<std::pair<std::string, std::pair<std::string, nlohmann::json>>> cases = {
+        {"--method inversevis --alpha 0.75", {"alpha", 0.75}},
+        {"--method inversevis-adaptive --alpha-profile 0 2 1", {"alpha_profile", {0.0, 2.0, 1.0}}},
+        {"--method mirror --mirror-w 0.5 0.25 0 0 0", {"mirror_w", {0.5, 0.25, 0.0, 0.0, 0.0}}},
+        {"--wrap-speed 2", {"wrap_speed", 2.0}}};
+    for (const auto& [options, expected] : cases) {
+        const CliResult result = runCli("render " + options + tail);
+        ASSERT_EQ(result.status, 0) << options << ": " << result.err;
+        const nlohmann::json stats = nlohmann::json::parse(std::ifstream(output("s.json")));
+        EXPECT_EQ(stats.at(expected.first), expected.second) << options;
+    }
+    const CliResult ranged = runCli("render --range 0 1" + tail);
+    EXPECT_EQ(ranged.status, 0) << ranged.err;
+    expectBadInput(runCli("render --alpha-profile 0 3" + tail), {"--alpha-profile"});
+}
+
 TEST_F(Cli, RenderTearMapMarksTheTornPixelsInRed)
 {
     const CliResult result = runCli(render("scene:vessel-tree", "--method inversevis-adaptive --stats-json " +
