@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
+#include "output_files.h"
 #include "method_options.h"
 #include "evaluation_report.h"
 #include "optimization_options.h"
@@ -115,10 +116,12 @@ Command addEvaluateCommand(CLI::App& app)
         ->allow_extra_args(false)
         ->capture_default_str();
     command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions, comma-separated")
+        ->check(CLI::Range(4, 8192))
         ->delimiter(',')
         ->allow_extra_args(false)
         ->capture_default_str();
     command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
+        ->check(CLI::Range(16, 8192))
         ->capture_default_str();
     command->add_option("--fov", options->fovYDeg,
                         "Vertical field of view (degrees); default: each view fitted to its method's picture");
@@ -127,7 +130,8 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--markdown", options->markdown, "Results as Markdown tables (written after each mesh)");
     command->add_flag("--resume", options->resume,
                       "Keep the meshes the --json file already holds for every method and evaluate the others");
-    command->add_option("--pictures", options->pictures, "Folder for each method's picture at its best view");
+    command->add_option("--pictures", options->pictures,
+                        "Folder for each method's picture at its best view (made when missing, in an existing folder)");
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
         ->check(CLI::Range(16, 8192));
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
@@ -145,9 +149,12 @@ Command addEvaluateCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
         const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
-        for (const std::string& path : {options->json, options->markdown})
-            if (!path.empty()) checkOutputFolder(path);
-        if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
+        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}});
+        if (!options->pictures.empty()) {
+            checkOutputFolder(options->pictures);
+            if (std::filesystem::exists(options->pictures) && !std::filesystem::is_directory(options->pictures))
+                throw InputError(options->pictures + ": --pictures names a file, not a folder");
+        }
         nlohmann::json results = nlohmann::json::object();
         if (options->resume && std::filesystem::exists(options->json)) {
             std::ifstream in(options->json);
@@ -155,7 +162,20 @@ Command addEvaluateCommand(CLI::App& app)
             if (!results.is_object()) throw InputError(options->json + ": not the JSON of an evaluation (--resume)");
         }
         ReportLayout layout{{}, options->methods, options->optResolutions, options->displayResolution};
-        for (const std::string& mesh : options->meshes) layout.stems.push_back(core::sourceStem(mesh));
+        for (const std::string& mesh : options->meshes) {
+            const std::string stem = core::sourceStem(mesh);
+            const auto same = std::find(layout.stems.begin(), layout.stems.end(), stem);
+            if (same != layout.stems.end())
+                throw InputError(mesh + ": its name '" + stem + "' is also " + options->meshes[same - layout.stems.begin()] +
+                                 "'s (the tables, --json and --only name a mesh by its file stem; rename one)");
+            layout.stems.push_back(stem);
+        }
+        // Every mesh is read once before any is evaluated, so a bad one fails in seconds, not after hours.
+        for (const std::string& mesh : options->meshes)
+            if (std::any_of(options->methods.begin(), options->methods.end(),
+                            [&](const std::string& m) { return selected(pairs, core::sourceStem(mesh), m); }))
+                core::loadSurface(mesh, options->mesh.load);
+        if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
 
         for (const std::string& mesh : options->meshes) {
@@ -193,8 +213,7 @@ Command addEvaluateCommand(CLI::App& app)
                     const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const auto finalistEvaluator = options->optimization.finalistEvaluator(scene, resolution, range);
-                    const optimize::AnnealingOptions annealing = options->optimization.annealingOptions(
-                        std::nullopt, options->fovYDeg, options->displayResolution);
+                    const optimize::AnnealingOptions annealing = options->optimization.annealingOptions(std::nullopt, options->fovYDeg);
                     const optimize::AnnealingResult run =
                         optimize::annealViewpoint(evaluator, start, annealing, options->optimization.ascentOptions(),
                                                   ascentEvaluator.get(), &progress, finalistEvaluator.get());

@@ -27,6 +27,7 @@ std::string revealText(const nlohmann::json& entry)
 {
     if (!entry.contains("reveal")) return "-";
     const nlohmann::json& reveal = entry.at("reveal");
+    if (reveal.is_null()) return "no important surface";
     std::string text = percent(reveal.at("total")) + " (" + percent(reveal.at("direct")) + ") [";
     const nlohmann::json& regions = reveal.at("per_region");
     for (std::size_t i = 0; i < regions.size(); ++i) text += (i ? ", " : "") + percent(regions[i]);

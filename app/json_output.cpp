@@ -53,7 +53,11 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
                            {"front_visibility", value.front},
                            {"coherence", coherence}};
     if (withReveal)
-        json["reveal"] = {{"total", value.reveal.total}, {"direct", value.reveal.direct}, {"per_region", value.reveal.perRegion}};
+        json["reveal"] = value.reveal.perRegion.empty()  // no important surface: nothing to reveal
+                             ? nlohmann::json()
+                             : nlohmann::json{{"total", value.reveal.total},
+                                              {"direct", value.reveal.direct},
+                                              {"per_region", value.reveal.perRegion}};
     return json;
 }
 
@@ -91,7 +95,9 @@ std::string measuresLine(const nlohmann::json& measures)
                        figure(measures.at("paper_literal")) + ", coherence " + figure(measures.at("coherence"));
     if (measures.contains("even_bound"))
         line += " (the same number of surface pixels spread evenly: " + figure(measures.at("even_bound")) + ")";
-    if (measures.contains("reveal")) line += ", reveal " + figure(measures.at("reveal").at("total"));
+    if (measures.contains("reveal"))
+        line += measures.at("reveal").is_null() ? ", reveal: no important surface"
+                                                : ", reveal " + figure(measures.at("reveal").at("total"));
     return line;
 }
 

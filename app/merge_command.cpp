@@ -4,6 +4,7 @@
 #include "evaluation_report.h"
 #include "json_output.h"
 #include "mesh_options.h"
+#include "output_files.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/render/method_registry.h>
@@ -54,8 +55,7 @@ Command addMergeCommand(CLI::App& app)
     command->add_option("--markdown", options->markdown, "The tables as Markdown (also printed)");
 
     return {command, [options] {
-        for (const std::string& path : {options->json, options->markdown})
-            if (!path.empty()) checkOutputFolder(path);
+        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}});
         nlohmann::json results = nlohmann::json::object();
         ReportLayout layout;
         std::set<std::string> methodsSeen;

@@ -1,11 +1,13 @@
 #include "mesh_options.h"
 
+#include "cli_checks.h"
 #include "method_options.h"
 
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 #include <ivis/render/method_registry.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -41,7 +43,9 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
                        "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +
                            std::to_string(vdb::kMaxResolution) + ")")
         ->capture_default_str();
-    command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")->capture_default_str();
+    command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")
+        ->check(finiteRange(3.0, 64.0))
+        ->capture_default_str();
     reachOption = command.add_option("--reach", volume.farFieldReach,
                                      "Exterior distance the far field covers (normalised; default 0.6, or more when the "
                                      "method's rays need it: inversevis-wrap's hull offset + 0.4, another curved-ray "
@@ -51,10 +55,11 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
         ->capture_default_str();
 }
 
-void MeshOptions::useViewScalar(const std::string& scalarName, int hotSpots)
+void MeshOptions::useViewScalar(const std::string& scalarName, const std::string& scalarFile, int hotSpots)
 {
     if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.hotSpots > 0) return;
     load.read.scalarName = scalarName;
+    load.read.scalarFile = scalarFile;
     load.hotSpots = hotSpots;
 }
 
@@ -70,7 +75,20 @@ vdb::VolumeOptions MeshOptions::volumeOptions() const
 
 void MeshOptions::raiseReachFor(const std::vector<render::MethodPtr>& methods)
 {
-    if (!reachOption || reachOption->count() == 0) volume.farFieldReach = render::reachNeededBy(methods, volume.farFieldReach);
+    if (reachOption && reachOption->count() > 0) return;  // --reach given: checkMethodFitsVolume judges it
+    for (const render::MethodPtr& method : methods)
+        if (method->reachNeeded() > vdb::kMaxFarFieldReach) {  // the curved rays' hull and their room beyond it
+            const double hull = method->values().at("hull_offset").at(0);
+            const double excess = method->reachNeeded() - vdb::kMaxFarFieldReach;
+            char text[240];
+            std::snprintf(text, sizeof text,
+                          "%s --hull-offset %.3g needs a volume reaching %.3g, beyond the largest (%g): at most %.3g "
+                          "(or give --reach)",
+                          method->name().c_str(), hull, double(method->reachNeeded()), vdb::kMaxFarFieldReach,
+                          hull - excess);
+            throw ValueError(text);
+        }
+    volume.farFieldReach = render::reachNeededBy(methods, volume.farFieldReach);
 }
 
 void MeshOptions::fitReachTo(const std::vector<render::MethodPtr>& methods)
@@ -101,13 +119,6 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
     const std::string name =
         core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" + std::to_string(resolution) + ".vdb";
     return (std::filesystem::path(folder) / name).string();
-}
-
-void checkOutputFolder(const std::string& path)
-{
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder))
-        throw InputError(path + ": cannot write (folder '" + folder.string() + "' does not exist)");
 }
 
 }  // namespace ivis::app

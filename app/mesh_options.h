@@ -27,13 +27,14 @@ struct MeshOptions {
     /// @param sourcesNote what the meshes are, for the help
     void addTo(CLI::App& command, std::vector<std::string>* sources = nullptr,
                const std::string& sourcesNote = "one or more");
-    /// @brief Shows the scalar a view file chose (--scalar NAME or --hotspots N) unless this
-    ///        command line chose one itself.
-    void useViewScalar(const std::string& scalarName, int hotSpots);
+    /// @brief Shows the scalar a view file chose (--scalar NAME, --scalar-file FILE or --hotspots N)
+    ///        unless this command line chose one itself.
+    void useViewScalar(const std::string& scalarName, const std::string& scalarFile, int hotSpots);
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
     /// @brief Unless --reach was given, raises the far field's reach to the most that @a methods'
     ///        rays need (render::reachNeededBy).
+    /// @throw ValueError naming the method's hull offset when that is beyond vdb::kMaxFarFieldReach
     void raiseReachFor(const std::vector<render::MethodPtr>& methods);
     /// @brief raiseReachFor(@a methods), then checks that each fits (checkMethodFitsVolume).
     void fitReachTo(const std::vector<render::MethodPtr>& methods);
@@ -54,10 +55,5 @@ std::string cacheFolder(const std::string& cacheDir);
 ///        (and every mesh of one name) keeps a cache of its own.
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
                               int resolution);
-
-/// @brief Checks, before any work, that the folder of output file @a path exists (outputs never
-///        create folders, so a mistyped -o leaves nothing behind).
-/// @throw InputError "<path>: cannot write (folder '<folder>' does not exist)"
-void checkOutputFolder(const std::string& path);
 
 }  // namespace ivis::app

@@ -30,30 +30,29 @@ void MethodOptions::addTo(CLI::App& command)
         }
 }
 
-bool MethodOptions::given() const
-{
-    if (mMethodOption && mMethodOption->count() > 0) return true;
-    for (const auto& entry : mOptions)
-        if (entry.second->count() > 0) return true;
-    return false;
-}
-
 bool MethodOptions::givenParameter(const std::string& key) const
 {
     const auto it = mOptions.find(key);
     return it != mOptions.end() && it->second->count() > 0;
 }
 
-render::MethodPtr MethodOptions::create() const
+bool MethodOptions::keeps(const render::Method& base) const
 {
-    const render::MethodInfo& info = render::methodInfo(method);
-    render::ParameterValues given;
+    return !(mMethodOption && mMethodOption->count() > 0) || method == base.name();
+}
+
+render::MethodPtr MethodOptions::create(const render::Method* base) const
+{
+    const bool kept = base && keeps(*base);
+    const std::string name = kept ? base->name() : method;
+    const render::MethodInfo& info = render::methodInfo(name);
+    render::ParameterValues given = kept ? base->values() : render::ParameterValues{};
     for (const auto& [key, option] : mOptions) {
         if (option->count() == 0) continue;
-        if (!info.parameter(key)) throw InputError(option->get_name() + " does not apply to the method " + method);
+        if (!info.parameter(key)) throw InputError(option->get_name() + " does not apply to the method " + name);
         given[key] = values.at(key);
     }
-    return render::makeMethod(method, given);
+    return render::makeMethod(name, given);
 }
 
 void checkMethodFitsVolume(const render::Method& method, const vdb::VolumeOptions& volume)

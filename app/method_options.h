@@ -23,12 +23,14 @@ struct MethodOptions {
 
     /// @brief Registers --method and one option per parameter key of any registered method.
     void addTo(CLI::App& command);
-    /// @brief The chosen method with the given parameters (defaults for the others).
+    /// @brief The chosen method (--method, or @a base's when --method is not given) with the given
+    ///        parameters over @a base's values when it is @a base's method, over its defaults else.
+    /// @param base the method a view file gives, or null
     /// @throw InputError for an unknown method or an option its method does not take; ValueError
     ///        for a value out of bounds
-    render::MethodPtr create() const;
-    /// @brief True when --method or a parameter was given on the command line.
-    bool given() const;
+    render::MethodPtr create(const render::Method* base = nullptr) const;
+    /// @brief True when create(@a base) keeps @a base's method (and so its values).
+    bool keeps(const render::Method& base) const;
     /// @brief True when the option of parameter @a key was given on the command line.
     bool givenParameter(const std::string& key) const;
 

@@ -1,5 +1,9 @@
 #include "optimization_options.h"
 
+#include "cli_checks.h"
+
+#include <ivis/optimize/coherence.h>
+
 #include <algorithm>
 
 namespace ivis::app {
@@ -9,18 +13,26 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--energy", energy, "Energy to maximise: visibility or scalar")
         ->check(CLI::IsMember({"visibility", "scalar"}))
         ->capture_default_str();
-    command.add_option("--gamma", gamma, "Weight of the directly visible part (scalar energy)")->capture_default_str();
+    command.add_option("--gamma", gamma, "Weight of the directly visible part (scalar energy)")
+        ->check(finiteRange(0.0, 1000.0))
+        ->capture_default_str();
     command.add_option("--visibility-res", visibilityResolution, "Voxels per side of the reported visibility measure's grid")
+        ->check(CLI::Range(8, 8192))
         ->capture_default_str();
     command.add_option("--opt-visibility-res", optVisibilityResolution,
-                       "Voxels per side of the optimised visibility grid (default: opt-res / 2, at most --visibility-res)");
+                       "Voxels per side of the optimised visibility grid (default: opt-res / 2, at most --visibility-res)")
+        ->check(CLI::Range(8, 8192));
     command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
-    command.add_option("--steps", steps, "Annealing proposals after the start view")->capture_default_str();
-    command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")->capture_default_str();
+    command.add_option("--steps", steps, "Annealing proposals after the start view")
+        ->check(CLI::Range(0, 1000000))
+        ->capture_default_str();
+    command.add_option("--cooling", cooling, "Temperature factor per step (T_k = cooling^k)")
+        ->check(finiteRange(0.0, 1.0))
+        ->capture_default_str();
     command.add_option("--polish", polishDeg,
                        "After the proposals, a compass search round the best view: its 4 neighbours this many "
                        "degrees away in theta and phi, the step halved each of 3 rounds (0: none)")
-        ->check(CLI::Range(0.0, 90.0))
+        ->check(finiteRange(0.0, 90.0))
         ->capture_default_str();
     command.add_option("--gradient", gradient, "auto, analytic (curved-ray methods, scalar energy) or forward differences")
         ->check(CLI::IsMember({"auto", "analytic", "forward"}))
@@ -49,7 +61,7 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "Readability step: at the best view, the loosest rule for drawing rays (inversevis-wrap: "
                        "--stable-shift, from an eighth of it to 8 times it) whose picture keeps an estimated mapping "
                        "coherence of at least this (beyond the paper); 0: keep the rule as given")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(finiteRange(0.0, 1.0))
         ->capture_default_str();
 }
 
@@ -73,8 +85,7 @@ optimize::EnergyOptions OptimizationOptions::measureOptions(int resolution, cons
 }
 
 optimize::AnnealingOptions OptimizationOptions::annealingOptions(std::optional<glm::dvec2> startAngles,
-                                                                 std::optional<double> fovYDeg,
-                                                                 int pictureResolution) const
+                                                                 std::optional<double> fovYDeg) const
 {
     optimize::AnnealingOptions options;
     options.steps = steps;
@@ -88,7 +99,8 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(std::optional<g
         options.startPhiDeg = startAngles->y;
     }
     options.fovYDeg = fovYDeg;
-    options.readableResolution = minCoherence > 0.0 ? pictureResolution : 0;
+    // The rule is judged at the coherence measure's size whatever the picture's (as render judges it).
+    options.readableResolution = minCoherence > 0.0 ? optimize::kCoherenceResolution : 0;
     options.minCoherence = minCoherence;
     return options;
 }

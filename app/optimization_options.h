@@ -47,9 +47,9 @@ struct OptimizationOptions {
     optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at @a startAngles (theta, phi; none: at the best axis view)
     ///        with the fixed field of view @a fovYDeg (none: each view framed for its method); the
-    ///        readability step keeps the coherence of a picture of @a pictureResolution pixels per side.
-    optimize::AnnealingOptions annealingOptions(std::optional<glm::dvec2> startAngles, std::optional<double> fovYDeg,
-                                                int pictureResolution) const;
+    ///        readability step keeps the coherence of the measure's 1000 x 1000 picture.
+    optimize::AnnealingOptions annealingOptions(std::optional<glm::dvec2> startAngles,
+                                                std::optional<double> fovYDeg) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).
     optimize::AscentOptions ascentOptions() const;
     /// @brief The evaluator of the per-view parameter ascent when --ascent-res is below

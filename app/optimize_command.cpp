@@ -3,11 +3,13 @@
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
+#include "output_files.h"
 #include "optimization_options.h"
 #include "series_render.h"
 #include "series_survey.h"
 #include "view_options.h"
 
+#include <ivis/core/atomic_file.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
@@ -73,10 +75,13 @@ Command addOptimizeCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
-        for (const std::string& path :
-             {options->output, options->json, options->plot, options->exr, options->cameraOut, options->viewOut})
-            if (!path.empty()) checkOutputFolder(path);
-        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
+        checkOutputFiles({{options->output, "-o", {".png"}},
+                          {options->json, "--json", {}},
+                          {options->plot, "--plot", {".png"}},
+                          {options->exr, "--exr", {".exr"}},
+                          {options->cameraOut, "--camera-out", {}},
+                          {options->viewOut, "--view-out", {}}});
+        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
@@ -119,8 +124,7 @@ Command addOptimizeCommand(CLI::App& app)
         const optimize::AnnealingResult result = optimize::annealViewpoint(
             evaluator, renderOptions.method,
             options->optimization.annealingOptions(startAngles,
-                                                   options->view.framed() ? std::nullopt : std::optional(start.fovYDeg),
-                                                   renderOptions.height),
+                                                   options->view.framed() ? std::nullopt : std::optional(start.fovYDeg)),
             options->optimization.ascentOptions(), ascentEvaluator.get(), &progress,
             options->optimization.finalistEvaluator(scene, options->optResolution, importanceRange).get());
         const optimize::VisitedView& best = result.bestView();
@@ -133,6 +137,7 @@ Command addOptimizeCommand(CLI::App& app)
         const std::string viewPath = options->viewOut.empty() ? options->output + ".view.json" : options->viewOut;
         nlohmann::json seriesStats;
         double coherence = 0.0;
+        core::AtomicFileSet files;  // renamed into place together once all are written (a series' frames: by renderSeries)
         if (isSeries) {
             SeriesRenderRequest request;
             request.method = best.method;
@@ -149,13 +154,25 @@ Command addOptimizeCommand(CLI::App& app)
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
             render::RenderOptions look = renderOptions;
             look.shading.scale = seriesScale;
-            writeViewFile(viewOfPicture(core::readCameraJson(cameraPath), look, options->mesh.load, field.normalization), viewPath);
+            files.write(viewPath, [&](const std::string& temporary) {
+                writeViewFile(viewOfPicture(core::readCameraJson(cameraPath), look, options->mesh.load, field.normalization),
+                              temporary);
+            });
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
-            core::writePng(picture.figure, options->output, renderOptions.shading.transparentBackground);
-            if (!options->exr.empty()) core::writeExr(picture.image, picture.layers, options->exr, field.normalization);
-            core::writeCameraJson(camera, cameraPath, field.normalization);
-            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), viewPath);
+            files.write(options->output, [&](const std::string& temporary) {
+                core::writePng(picture.figure, temporary, renderOptions.shading.transparentBackground);
+            });
+            if (!options->exr.empty())
+                files.write(options->exr, [&](const std::string& temporary) {
+                    core::writeExr(picture.image, picture.layers, temporary, field.normalization);
+                });
+            files.write(cameraPath, [&](const std::string& temporary) {
+                core::writeCameraJson(camera, temporary, field.normalization);
+            });
+            files.write(viewPath, [&](const std::string& temporary) {
+                writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), temporary);
+            });
             coherence = optimize::mappingCoherence(picture.layers).value();
         }
         const optimize::EnergyOptions displayOptions =
@@ -170,7 +187,10 @@ Command addOptimizeCommand(CLI::App& app)
             displayOptions.kind == optimize::EnergyKind::Visibility
                 ? measured
                 : optimize::EnergyEvaluator(scene, displayOptions).evaluate(camera, best.method);
-        if (!options->plot.empty()) core::writePng(optimize::plotVisitedViews(result), options->plot, false);
+        if (!options->plot.empty())
+            files.write(options->plot, [&](const std::string& temporary) {
+                core::writePng(optimize::plotVisitedViews(result), temporary, false);
+            });
 
         nlohmann::json visited = nlohmann::json::array();
         for (const auto& view : result.visited) visited.push_back(visitedViewJson(view));
@@ -204,7 +224,9 @@ Command addOptimizeCommand(CLI::App& app)
             json["readability"] = readableSettingJson(*result.readable);
             core::logInfo(readableSettingLine(*result.readable));
         }
-        if (!options->json.empty()) writeJsonFile(json, options->json);
+        if (!options->json.empty())
+            files.write(options->json, [&](const std::string& temporary) { writeJsonFile(json, temporary); });
+        files.commit();
         core::logInfo(best.method->name() + ": best view theta " +
                       std::to_string(best.thetaDeg) + " phi " + std::to_string(best.phiDeg) + ", " +
                       optimize::toString(energyOptions.kind) + " " + std::to_string(display.energy) + " (front " +

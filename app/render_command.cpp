@@ -1,13 +1,16 @@
 // `inversevis render MESH`: one picture of a method, with optional EXR layers, stats and camera;
 // `inversevis render SERIES`: one such picture per step of a time series, and a video.
+#include "cli_checks.h"
 #include "commands.h"
 #include "json_output.h"
 #include "legend_file.h"
 #include "mesh_options.h"
+#include "output_files.h"
 #include "series_render.h"
 #include "series_survey.h"
 #include "view_options.h"
 
+#include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
@@ -74,7 +77,7 @@ Command addRenderCommand(CLI::App& app)
                      "8 times it) whose picture keeps an estimated mapping coherence of at least this, judged on the "
                      "view's picture at 1000 rows (the measure's size) whatever --res (beyond the paper; a series: "
                      "chosen on its first step); 0: the default rule")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(finiteRange(0.0, 1.0))
         ->capture_default_str();
     command->add_option("--tear-map", options->tearMap,
                         "Also write a PNG of the picture in grey with its tears in red: the indirect pixels whose "
@@ -111,12 +114,15 @@ Command addRenderCommand(CLI::App& app)
         const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
         const bool chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
-        for (const std::string& path :
-             {options->output, options->exr, options->statsJson, options->cameraOut, options->legendOnly, options->viewOut,
-              options->tearMap, options->unseenMap})
-            if (!path.empty()) checkOutputFolder(path);
-        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->hotSpots);
-        if (!options->legendOnly.empty()) checkLegendFileName(options->legendOnly);
+        checkOutputFiles({{options->output, "-o", {".png"}},
+                          {options->exr, "--exr", {".exr"}},
+                          {options->statsJson, "--stats-json", {}},
+                          {options->cameraOut, "--camera-out", {}},
+                          {options->legendOnly, "--legend-only", {".svg", ".png"}},
+                          {options->viewOut, "--view-out", {}},
+                          {options->tearMap, "--tear-map", {".png"}},
+                          {options->unseenMap, "--unseen-map", {".png"}}});
+        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         SeriesRenderRequest frameRange;  // --frames, checked before anything is read
         if (!options->frames.empty()) {
             parseFrameRange(options->frames, frameRange);
@@ -202,12 +208,23 @@ Command addRenderCommand(CLI::App& app)
         }
         const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
 
-        core::writePng(result.figure, options->output, renderOptions.shading.transparentBackground);
-        if (!options->exr.empty()) core::writeExr(result.image, result.layers, options->exr, field.normalization);
+        // Every output under a temporary name, renamed into place together once all are written.
+        core::AtomicFileSet files;
+        files.write(options->output, [&](const std::string& temporary) {
+            core::writePng(result.figure, temporary, renderOptions.shading.transparentBackground);
+        });
+        if (!options->exr.empty())
+            files.write(options->exr, [&](const std::string& temporary) {
+                core::writeExr(result.image, result.layers, temporary, field.normalization);
+            });
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
-        core::writeCameraJson(camera, cameraPath, field.normalization);
+        files.write(cameraPath, [&](const std::string& temporary) {
+            core::writeCameraJson(camera, temporary, field.normalization);
+        });
         if (!options->viewOut.empty())
-            writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), options->viewOut);
+            files.write(options->viewOut, [&](const std::string& temporary) {
+                writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), temporary);
+            });
 
         const render::RenderStats& s = result.stats;
         if (s.nanPixels > 0)
@@ -217,7 +234,10 @@ Command addRenderCommand(CLI::App& app)
         const double coherence =
             optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, options->tearMap.empty() ? nullptr : &torn)
                 .value();
-        if (!options->tearMap.empty()) core::writePng(optimize::tearMap(result.image, torn), options->tearMap, false);
+        if (!options->tearMap.empty())
+            files.write(options->tearMap, [&](const std::string& temporary) {
+                core::writePng(optimize::tearMap(result.image, torn), temporary, false);
+            });
         nlohmann::json stats = {{"seconds", s.seconds},
                                       {"width", renderOptions.width},
                                       {"height", renderOptions.height},
@@ -247,9 +267,13 @@ Command addRenderCommand(CLI::App& app)
                                                     renderOptions.shading.scale.range, coherence,
                                                     options->unseenMap.empty() ? nullptr : &unseen);
             core::logInfo(measuresLine(stats["measures"]));
-            if (!options->unseenMap.empty()) core::writePng(unseen, options->unseenMap, false);
+            if (!options->unseenMap.empty())
+                files.write(options->unseenMap,
+                            [&](const std::string& temporary) { core::writePng(unseen, temporary, false); });
         }
-        if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
+        if (!options->statsJson.empty())
+            files.write(options->statsJson, [&](const std::string& temporary) { writeJsonFile(stats, temporary); });
+        files.commit();
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
                       std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
                       ", " + options->view.describeFraming(camera) + ", " + std::to_string(s.seconds) +

@@ -1,6 +1,7 @@
 // `inversevis sdf MESH`: build or reuse the cached sparse volume and report it.
 #include "commands.h"
 #include "mesh_options.h"
+#include "output_files.h"
 
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
@@ -34,7 +35,7 @@ Command addSdfCommand(CLI::App& app)
 
     return {command, [options] {
         const auto start = std::chrono::steady_clock::now();
-        if (!options->output.empty()) checkOutputFolder(options->output);
+        checkOutputFiles({{options->output, "-o", {".vdb"}}});
         options->mesh.raiseReachFor({render::defaultMethod()});  // the volume `render` uses by default
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);

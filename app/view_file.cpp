@@ -6,6 +6,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/method_json.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace ivis::app {
@@ -38,6 +39,7 @@ ViewFile viewFromJson(const nlohmann::json& json)
         throw std::invalid_argument("'size' must be 1 to 32768 pixels each way");
     view.method = render::methodFromJson(json.at("method"));
     view.scalar = json.value("scalar", std::string());
+    view.scalarFile = json.value("scalar_file", std::string());
     view.hotSpots = json.value("hotspots", 0);
     if (view.hotSpots < 0 || view.hotSpots > 6) throw std::invalid_argument("'hotspots' must be 0 to 6");
     view.colormap = json.at("colormap").get<std::string>();
@@ -71,6 +73,7 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
     view.height = options.height;
     view.method = options.method;
     view.scalar = load.read.scalarName;
+    if (!load.read.scalarFile.empty()) view.scalarFile = std::filesystem::absolute(load.read.scalarFile).string();
     view.hotSpots = load.hotSpots;
     view.colormap = options.shading.colormap;
     view.scale = options.shading.scale;
@@ -90,6 +93,7 @@ nlohmann::json viewToJson(const ViewFile& view)
             {"size", {view.width, view.height}},
             {"method", render::methodToJson(*view.method)},
             {"scalar", view.scalar},
+            {"scalar_file", view.scalarFile},
             {"hotspots", view.hotSpots},
             {"colormap", view.colormap},
             {"scale", {{"range", {view.scale.range.lo, view.scale.range.hi}}, {"log", view.scale.log}, {"invert", view.scale.invert}}},

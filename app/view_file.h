@@ -24,6 +24,7 @@ struct ViewFile {
     int height = 0;
     render::MethodPtr method = render::defaultMethod();
     std::string scalar;   ///< --scalar as given ("" = the mesh's default array)
+    std::string scalarFile;  ///< --scalar-file, as an absolute path ("" = none)
     int hotSpots = 0;     ///< --hotspots as given (0 = none)
     std::string colormap = core::kDefaultColormap;
     core::ColorScale scale;
@@ -45,12 +46,12 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
                        const core::Similarity& meshUnits);
 
 /// @brief The view as JSON: {"inversevis_view": 1, "camera": {...}, "size": [w, h], "method": {...},
-///        "scalar", "hotspots",
+///        "scalar", "scalar_file", "hotspots",
 ///        "colormap", "scale": {"range": [lo, hi], "log", "invert"}, "units", "legend": side or
 ///        null, "outline", "shadows", "shade_indirect"}.
 nlohmann::json viewToJson(const ViewFile& view);
 
-/// @brief Reads a view file written by viewToJson (every key required but "units" and "scalar").
+/// @brief Reads a view file written by viewToJson (every key required but "units", "scalar" and "scalar_file").
 /// @throw InputError naming @a path for unreadable JSON, a missing key, a bad value or a newer version
 ViewFile readViewFile(const std::string& path);
 

@@ -118,15 +118,25 @@ core::ColorScaleRequest ViewOptions::colorScaleRequest() const
     return request;
 }
 
+bool parsePictureSize(const std::string& text, int& width, int& height)
+{
+    auto side = [](const std::string& digits, int& value) {
+        if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos)
+            return false;
+        value = std::stoi(digits);  // at most 99999: no overflow
+        return value >= 1 && value <= 32768;
+    };
+    const std::size_t x = text.find('x');
+    return x != std::string::npos && side(text.substr(0, x), width) && side(text.substr(x + 1), height);
+}
+
 render::RenderOptions ViewOptions::renderOptions() const
 {
     render::RenderOptions options;
-    char extra = 0;
-    if (std::sscanf(resolution.c_str(), "%dx%d%c", &options.width, &options.height, &extra) != 2 ||
-        options.width < 1 || options.height < 1 || options.width > 32768 || options.height > 32768)
+    if (!parsePictureSize(resolution, options.width, options.height))
         throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
     options.samplesPerPixel = samplesPerPixel;
-    options.method = method.create();
+    options.method = method.create(view() ? view()->method.get() : nullptr);
     options.shading.colormap = colormap;
     core::colormap(colormap);  // validates the name
     const core::ColorScaleRequest request = colorScaleRequest();
@@ -141,7 +151,6 @@ render::RenderOptions ViewOptions::renderOptions() const
     options.legend = !noLegend;
     options.units = units;
     if (const ViewFile* v = view()) {  // what the command line does not say, the view file does
-        if (!method.given()) options.method = v->method;
         if (!given("--res")) {
             options.width = v->width;
             options.height = v->height;

@@ -19,6 +19,10 @@
 
 namespace ivis::app {
 
+/// @brief Reads "WIDTHxHEIGHT" (decimal digits only, each 1 to 32768) into @a width and @a height.
+/// @return false for anything else (a sign, a space, a number that would overflow)
+bool parsePictureSize(const std::string& text, int& width, int& height);
+
 /// @brief Camera, image size, method parameters and shading, as given on the command line.
 struct ViewOptions {
     double theta = 90.0;
@@ -74,10 +78,10 @@ struct ViewOptions {
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
     /// @brief True when the method's parameter @a key is given: by its option, or by the --view
-    ///        file's method (unless --method or a parameter overrides it).
+    ///        file's method (unless --method names another).
     bool givesParameter(const std::string& key) const
     {
-        return method.givenParameter(key) || (view() && !method.given());
+        return method.givenParameter(key) || (view() && method.keeps(*view()->method));
     }
     /// @brief True when a camera is given: --camera, --view, --theta or --phi.
     bool givesCamera() const { return !cameraFile.empty() || !viewFile.empty() || given("--theta") || given("--phi"); }

@@ -85,8 +85,7 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
         const optimize::AnnealingResult annealing = optimize::annealViewpoint(
             evaluator, start.method,
             settings.optimization.annealingOptions(angles,
-                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg),
-                                                   optimize::kCoherenceResolution),
+                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg)),
             settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
             settings.optimization.finalistEvaluator(scene, settings.resolution, settings.importanceRange).get());
         const optimize::VisitedView& best = annealing.bestView();

@@ -36,9 +36,14 @@ void writeTemporary(const std::string& temporary, const std::string& path,
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
         const std::string why = e.what();
-        // An InputError from the writer already names a path: keep only its reason.
+        // An InputError from the writer already names a path: keep only its reason, and only once
+        // when the writer wrote atomically itself ("<temporary>: cannot write (<why>)").
         const std::size_t colon = why.rfind(": ");
-        throw InputError(path + ": cannot write (" + (colon == std::string::npos ? why : why.substr(colon + 2)) + ")");
+        std::string reason = colon == std::string::npos ? why : why.substr(colon + 2);
+        const std::string nested = "cannot write (";
+        if (reason.rfind(nested, 0) == 0 && reason.back() == ')')
+            reason = reason.substr(nested.size(), reason.size() - nested.size() - 1);
+        throw InputError(path + ": cannot write (" + reason + ")");
     }
 }
 

@@ -42,6 +42,8 @@ nlohmann::json cameraToJson(const Camera& camera)
 Camera cameraFromJson(const nlohmann::json& json)
 {
     if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
+    if (json.contains("inversevis_view")) throw std::invalid_argument("a view file, not a camera file: give it with --view");
+    if (!json.contains("eye")) throw std::invalid_argument("no 'eye', the camera's position");
     Camera camera;
     camera.eye = readVector(json, "eye", camera.eye);
     camera.target = readVector(json, "target", camera.target);

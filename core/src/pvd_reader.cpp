@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace ivis::core {
@@ -34,8 +35,8 @@ std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text
         if (file.empty()) failInput(path, where + " has no file");
         TimeStep step;
         const std::string time = dataset.attribute("timestep").value();
-        if (!time.empty() && !detail::parseNumber(time, step.time)) {
-            failInput(path, where + " has the timestep '" + time + "', which is not a number");
+        if (!time.empty() && !(detail::parseNumber(time, step.time) && std::isfinite(step.time))) {
+            failInput(path, where + " has the timestep '" + time + "', which is not a finite number");
         }
         const std::string part = dataset.attribute("part").as_string("0");
         if (part != "0") failInput(path, where + " is part " + part + " of its time step; one part per step is read");

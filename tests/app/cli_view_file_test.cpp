@@ -43,6 +43,58 @@ TEST_F(Cli, RenderFromTheOptimisedViewFileReproducesThePicture)
     EXPECT_NE(core::readPng(output("grey.png")).pixels(), best.pixels());
 }
 
+// A method parameter given with --view overrides that parameter alone: the file's method and its
+// other parameters stay (they fell back to the default method and its defaults); --method naming
+// another method takes that method's defaults.
+TEST_F(Cli, AParameterGivenWithAViewOverridesOnlyItself)
+{
+    const std::string view = quoted(output("v.json")), stats = quoted(output("s.json"));
+    auto statsOf = [&](const std::string& extra) {
+        const test::CliResult result = test::runCli(render("scene:sphere", extra + " --stats-json " + stats));
+        EXPECT_EQ(result.status, 0) << extra << ": " << result.err;
+        return nlohmann::json::parse(std::ifstream(output("s.json")));
+    };
+    statsOf("--method inversevis --alpha 0.3 --step 0.2 --view-out " + view);
+
+    nlohmann::json s = statsOf("--view " + view + " --step 0.05");
+    EXPECT_EQ(s.at("method"), "inversevis");
+    EXPECT_FLOAT_EQ(s.at("alpha").get<float>(), 0.3f);
+    EXPECT_FLOAT_EQ(s.at("step").get<float>(), 0.05f);
+    s = statsOf("--view " + view + " --alpha 0.2");  // was "--alpha does not apply to the method inversevis-wrap"
+    EXPECT_EQ(s.at("method"), "inversevis");
+    EXPECT_FLOAT_EQ(s.at("alpha").get<float>(), 0.2f);
+    EXPECT_FLOAT_EQ(s.at("step").get<float>(), 0.2f);
+    s = statsOf("--view " + view + " --method inversevis --hull-offset 0.3");  // the same method, named
+    EXPECT_FLOAT_EQ(s.at("alpha").get<float>(), 0.3f);
+    EXPECT_FLOAT_EQ(s.at("hull_offset").get<float>(), 0.3f);
+    s = statsOf("--view " + view + " --method mirror");
+    EXPECT_EQ(s.at("method"), "mirror");
+
+    // The wrap's rule from the file stays when another of its parameters is given: none is chosen.
+    statsOf("--wrap-speed 1.5 --stable-shift 0.05 --ring-scale 8 --view-out " + view);
+    s = statsOf("--view " + view + " --hull-offset 0.5");
+    EXPECT_EQ(s.at("method"), "inversevis-wrap");
+    EXPECT_FLOAT_EQ(s.at("wrap_speed").get<float>(), 1.5f);
+    EXPECT_FLOAT_EQ(s.at("ring_scale").get<float>(), 8.0f);
+    EXPECT_FLOAT_EQ(s.at("stable_shift").get<float>(), 0.05f);
+    EXPECT_FALSE(s.contains("readability"));
+}
+
+// A view of a scalar given by --scalar-file shows that scalar again (it showed none: grey).
+TEST_F(Cli, AViewKeepsItsScalarFile)
+{
+    const std::string mesh = input("tetra.obj"), values = input("values.txt");
+    test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    test::writeFile(values, "1\n2\n3\n4\n");
+    const test::CliResult first = test::runCli(render(mesh, "--method front --scalar-file " + quoted(values) +
+                                                             " --view-out " + quoted(output("v.json"))));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const core::Image picture = core::readPng(output("x.png"));
+    const test::CliResult again = test::runCli(render(mesh, "--view " + quoted(output("v.json"))));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(core::readPng(output("x.png")).pixels(), picture.pixels());
+}
+
 TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
 {
     const std::string bad = input("bad.view.json");

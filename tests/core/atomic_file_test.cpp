@@ -62,5 +62,22 @@ TEST(AtomicFileSet, AnUncommittedOrFailedSetLeavesNothing)
     EXPECT_EQ(names(dir), std::vector<std::string>{});
 }
 
+// A writer that writes atomically itself (core::writePng into the set's temporary) fails with its
+// own temporary's name: the set's error names the output once, and says the reason once.
+TEST(AtomicFileSet, ANestedFailureIsReportedOnce)
+{
+    TempDir dir;
+    AtomicFileSet files;
+    try {
+        files.write(dir.file("a.exr"), [](const std::string& temporary) {
+            writeAtomically(temporary, [](const std::string&) { throw std::runtime_error("File too large."); });
+        });
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), dir.file("a.exr") + ": cannot write (File too large.)");
+    }
+    EXPECT_EQ(names(dir), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace ivis::core

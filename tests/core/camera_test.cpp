@@ -194,7 +194,7 @@ TEST(Camera, JsonRoundTrip)
         EXPECT_EQ(read.orthoHalfHeight, camera.orthoHalfHeight);
         EXPECT_EQ(read.windowCentre, camera.windowCentre);
     }
-    // Missing keys keep their defaults.
+    // Missing keys but the eye keep their defaults.
     test::writeFile(dir.file("partial.json"), "{\"eye\": [1, 2, 3]}");
     const Camera partial = readCameraJson(dir.file("partial.json"));
     EXPECT_EQ(partial.eye, glm::dvec3(1, 2, 3));
@@ -220,6 +220,9 @@ TEST(Camera, BadJsonThrowsInputErrorNamingThePath)
         {"truncated.json", "{\"eye\": [0, 0, 2.5], \"target\": [0, 0"},
         {"garbage.json", "this is not json"},
         {"array.json", "[1, 2, 3]"},
+        {"empty.json", "{}"},
+        {"no_eye.json", "{\"target\": [0, 0, 0], \"fov_y_deg\": 40}"},
+        {"view_file.json", "{\"inversevis_view\": 1, \"camera\": {\"eye\": [0, 0, 2.5]}}"},
         {"short_vector.json", "{\"eye\": [0, 0]}"},
         {"string_value.json", "{\"fov_y_deg\": \"wide\"}"},
         {"eye_is_target.json", "{\"eye\": [0, 0, 0], \"target\": [0, 0, 0]}"},

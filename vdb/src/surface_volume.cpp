@@ -16,9 +16,9 @@ void validate(const VolumeOptions& options)
     if (!(options.bandVoxels >= 3.0f) || !std::isfinite(options.bandVoxels) || options.bandVoxels > 64.0f)
         throw ValueError("narrow band half-width " + std::to_string(options.bandVoxels) +
                          " voxels is out of range (3 to 64)");
-    if (!(options.farFieldReach > 0.0) || !std::isfinite(options.farFieldReach) || options.farFieldReach > 2.0)
-        throw ValueError("far-field reach " + std::to_string(options.farFieldReach) +
-                         " is out of range (0 to 2 normalised units)");
+    if (!(options.farFieldReach > 0.0) || !std::isfinite(options.farFieldReach) || options.farFieldReach > kMaxFarFieldReach)
+        throw ValueError("far-field reach " + std::to_string(options.farFieldReach) + " is out of range (0 to " +
+                         std::to_string(int(kMaxFarFieldReach)) + " normalised units)");
     if (options.farFieldResolution < 16 || options.farFieldResolution > 1000)
         throw ValueError("far-field resolution " + std::to_string(options.farFieldResolution) +
                          " is out of range (16 to 1000)");

@@ -14,7 +14,7 @@ namespace ivis::core {
 /// @brief The camera's JSON object.
 nlohmann::json cameraToJson(const Camera& camera);
 
-/// @brief The camera of a JSON object; missing keys keep their defaults.
+/// @brief The camera of a JSON object: "eye" is required, missing other keys keep their defaults.
 /// @throw std::invalid_argument (or nlohmann::json's errors) for bad values; callers name the file
 Camera cameraFromJson(const nlohmann::json& json);
 

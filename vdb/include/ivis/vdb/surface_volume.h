@@ -29,6 +29,9 @@ enum class DistanceSign {
     Unsigned  ///< force unsigned
 };
 
+/// @brief The largest far-field reach a volume takes (normalised units).
+inline constexpr double kMaxFarFieldReach = 2.0;
+
 /// @brief Build parameters; all lengths are in normalised units unless the name says voxels.
 struct VolumeOptions {
     int resolution = 200;            ///< voxels across [-2.5,2.5] (voxel size 5/resolution)
