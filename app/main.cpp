@@ -7,6 +7,7 @@
 #include <ivis/core/log.h>
 
 #include <iostream>
+#include <new>
 #include <vector>
 
 int main(int argc, char** argv)
@@ -40,6 +41,9 @@ int main(int argc, char** argv)
     } catch (const ivis::Cancelled& e) {
         std::cerr << "inversevis: " << e.what() << "\n";
         return 130;
+    } catch (const std::bad_alloc&) {  // a picture or volume larger than the memory (outputs not yet renamed)
+        std::cerr << "inversevis: error: out of memory: a smaller --res, --spp or --volume-res needs less\n";
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "inversevis: internal error: " << e.what() << "\n";
         return 1;

@@ -7,12 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -313,6 +315,20 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     EXPECT_EQ(upper.status, 0) << upper.err;
     EXPECT_TRUE(fs::exists(output("X.PNG")));
     EXPECT_TRUE(fs::exists(output("stats.txt")));
+}
+
+// A picture larger than the memory is one line and status 2 (it was "internal error: std::bad_alloc",
+// status 1), and leaves nothing.
+TEST_F(Cli, APictureLargerThanTheMemoryIsOneLine)
+{
+    const std::string command = "ulimit -v 2000000; exec '" + std::string(IVIS_CLI_PATH) +
+                                "' render scene:sphere --method front --volume-res 32 --res 32768x32768 --cache-dir '" +
+                                input("") + "' -o '" + output("x.png") + "' 2>'" + input("err") + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal";
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_EQ(test::readFile(input("err")), "inversevis: error: out of memory: a smaller --res, --spp or --volume-res needs less\n");
+    EXPECT_EQ(contents(mOutputs.path()), std::vector<std::string>{});
 }
 
 TEST_F(Cli, WritingIntoAMissingFolderLeavesNothing)

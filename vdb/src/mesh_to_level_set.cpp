@@ -2,6 +2,7 @@
 // exact closest-point pass that fixes distance, triangle ID, barycentrics and distance gradient of
 // every band voxel, and distance and gradient of every far-field voxel.
 #include <ivis/vdb/surface_volume.h>
+#include <ivis/vdb/build_memory.h>
 
 #include <ivis/core/closest_point.h>
 #include <ivis/core/content_hash.h>
@@ -238,6 +239,18 @@ bool usesUnsignedDistance(const core::TriangleMesh& mesh, DistanceSign sign)
     return core::boundaryEdgeCount(mesh) > 0;
 }
 
+NarrowBandWidth narrowBandWidth(const VolumeOptions& options, bool unsignedDistance)
+{
+    const double voxelSize = BoxLattice{options.resolution}.voxelSize();
+    const bool fineReachesHull = options.resolution <= options.farFieldResolution;
+    const float reachVoxels = float(std::ceil(options.farFieldReach / voxelSize)) + 1.0f;
+    const float farVoxels = float(std::ceil(BoxLattice{options.farFieldResolution}.voxelSize() / voxelSize)) + 2.0f;
+    NarrowBandWidth band;
+    band.exterior = std::max(options.bandVoxels, fineReachesHull ? reachVoxels : farVoxels);
+    band.interior = unsignedDistance ? band.exterior : options.bandVoxels;
+    return band;
+}
+
 SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOptions& options,
                                  core::Interrupter* interrupter)
 {
@@ -250,18 +263,9 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     volume.triangleCount = mesh.triangles.size();
     volume.meshHash = core::meshHash(mesh);
 
-    // The fine band alone reaches the hull when its voxels are as coarse as the far field's. Else
-    // its exterior reaches one far voxel and two fine ones out: within a far voxel of the surface
-    // the far field's blend is poor (its corners straddle the surface), and the renderer passes
-    // from band to far field beyond that (render::DistanceField).
-    const double voxelSize = volume.voxelSize();
-    const bool fineReachesHull = options.resolution <= options.farFieldResolution;
-    const float reachVoxels = float(std::ceil(options.farFieldReach / voxelSize)) + 1.0f;
-    const float farVoxels = float(std::ceil(volume.farLattice().voxelSize() / voxelSize)) + 2.0f;
-    const float exteriorVoxels = std::max(options.bandVoxels, fineReachesHull ? reachVoxels : farVoxels);
-    const float interiorVoxels = volume.unsignedDistance ? exteriorVoxels : options.bandVoxels;
-
-    volume.phi = meshToNarrowBand(mesh, options.resolution, exteriorVoxels, interiorVoxels, volume.unsignedDistance,
+    checkBuildFits(mesh, options, volume.unsignedDistance, allocatableBytes());
+    const NarrowBandWidth band = narrowBandWidth(options, volume.unsignedDistance);
+    volume.phi = meshToNarrowBand(mesh, options.resolution, band.exterior, band.interior, volume.unsignedDistance,
                                   interrupter);
     volume.phi->setName("phi");
 
@@ -271,7 +275,7 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     const core::TriangleBvh bvh(mesh);
     refineClosestPoints(mesh, bvh, volume, interrupter);
 
-    if (!fineReachesHull) {
+    if (options.resolution > options.farFieldResolution) {  // the fine band does not reach the hull
         const double farVoxel = volume.farLattice().voxelSize();
         const float farExterior = float(std::ceil(options.farFieldReach / farVoxel)) + 1.0f;
         const float farInterior = volume.unsignedDistance ? farExterior : 3.0f;

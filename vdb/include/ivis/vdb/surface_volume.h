@@ -90,6 +90,19 @@ struct SurfaceVolume {
 SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOptions& options,
                                  core::Interrupter* interrupter = nullptr);
 
+/// @brief The fine narrow band's half-widths in voxels, outside and inside the surface.
+struct NarrowBandWidth {
+    float exterior = 0.0f;
+    float interior = 0.0f;
+};
+
+/// @brief The band buildSurfaceVolume builds under @a options: outside, as far as the hull when its
+///        voxels are as coarse as the far field's, else a far voxel and two fine ones (within a far
+///        voxel of the surface the far field's blend is poor, and the renderer passes from band to
+///        far field beyond that, render::DistanceField); inside, options.bandVoxels, or as outside
+///        for an unsigned distance.
+NarrowBandWidth narrowBandWidth(const VolumeOptions& options, bool unsignedDistance);
+
 /// @brief OpenVDB's plain mesh-to-volume conversion on the box grid of @a resolution (the first
 ///        stage of buildSurfaceVolume, and the benchmark reference).
 /// @param exteriorVoxels, interiorVoxels band half-widths in voxels

@@ -1,0 +1,79 @@
+// The build's memory check: its estimate grows with the surface's area and the band's voxels, a
+// build that cannot fit is refused with one line, and a process under `ulimit -v` gets that line
+// instead of OpenVDB's abort (std::terminate while a bad_alloc unwinds its trees).
+#include "test_support.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/vdb/build_memory.h>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace ivis::vdb {
+namespace {
+
+/// An axis-aligned square of side @a side in the plane z = 0 (two triangles).
+core::TriangleMesh square(float side)
+{
+    core::TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    mesh.dataTriangleCount = 2;
+    return mesh;
+}
+
+TEST(BuildMemory, TheEstimateFollowsTheAreaAndTheBand)
+{
+    VolumeOptions options;
+    options.resolution = 1000;  // voxel 0.005; band outside: a far voxel (0.025) and two fine ones, 7; inside 3
+    const NarrowBandWidth band = narrowBandWidth(options, false);
+    EXPECT_EQ(band.exterior, 7.0f);
+    EXPECT_EQ(band.interior, 3.0f);
+    EXPECT_EQ(narrowBandWidth(options, true).interior, 7.0f) << "unsigned: both sides as outside";
+    const double one = double(estimatedBuildBytes(square(1.0f), options, false));
+    // A unit square covers 200^2 voxel faces; 10 band voxels each, at 40 bytes.
+    EXPECT_NEAR(one, 40.0 * 200.0 * 200.0 * 10.0, 1.0);
+    EXPECT_NEAR(double(estimatedBuildBytes(square(2.0f), options, false)), 4.0 * one, 4.0) << "four times the area";
+    EXPECT_NEAR(double(estimatedBuildBytes(square(1.0f), options, true)), one * 14.0 / 10.0, 1.0);
+    options.resolution = 2000;  // twice the voxels across, and a band of ceil(0.025 / 0.0025) + 2 = 12 outside
+    EXPECT_NEAR(double(estimatedBuildBytes(square(1.0f), options, false)), one * 4.0 * 15.0 / 10.0, 4.0);
+}
+
+TEST(BuildMemory, ABuildThatCannotFitIsRefused)
+{
+    VolumeOptions options;
+    options.resolution = 2000;
+    const std::size_t needed = estimatedBuildBytes(square(1.0f), options, false);
+    EXPECT_NO_THROW(checkBuildFits(square(1.0f), options, false, needed));
+    try {
+        checkBuildFits(square(1.0f), options, false, needed / 4);
+        FAIL() << "expected ValueError";
+    } catch (const ValueError& e) {
+        // A quarter of the memory fits about half the resolution (the band's voxels grow with its square).
+        EXPECT_NE(std::string(e.what()).find("volume resolution 2000 needs about"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lower --volume-res (at most about 1000)"), std::string::npos) << e.what();
+    }
+    EXPECT_GT(allocatableBytes(), std::size_t(0));
+}
+
+TEST(BuildMemory, AProcessUnderAnAddressSpaceLimitGetsOneLine)
+{
+    // 8 GB for the sphere at 4096 against 1.5 GB: the build is refused before it starts (it
+    // aborted with "terminate called after throwing an instance of 'std::bad_alloc'").
+    const test::TempDir dir;
+    const std::string err = dir.file("err");
+    const std::string command = "ulimit -v 1500000; exec '" + std::string(IVIS_CLI_PATH) +
+                                "' sdf scene:sphere --volume-res 4096 -o '" + dir.file("s.vdb") + "' 2>'" + err + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal";
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    const std::string message = test::readFile(err);
+    EXPECT_NE(message.find("volume resolution 4096 needs about"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), message.size() - 1) << "one line: " << message;
+}
+
+}  // namespace
+}  // namespace ivis::vdb
