@@ -13,13 +13,18 @@ void ViewOptions::addTo(CLI::App& command)
     mCommand = &command;
     command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")->capture_default_str();
     command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")->capture_default_str();
-    command.add_option("--fov", fovYDeg,
-                       "Vertical field of view (degrees); default: fitted to each picture, the object and the "
-                       "method's whole indirect region with a margin");
-    command.add_flag("--ortho", orthographic, "Orthographic projection");
+    auto* fovOption = command.add_option("--fov", fovYDeg,
+                                         "Vertical field of view (degrees); default: fitted to each picture, the "
+                                         "object and the method's whole indirect region with a margin");
+    command.add_flag("--ortho", orthographic, "Orthographic projection (framed by its half height)")->excludes(fovOption);
+    // A camera file, or a view file, is the whole camera: an angle or field of view beside it was ignored.
     auto* cameraOption = command.add_option("--camera", cameraFile,
                        "Camera JSON (eye, target, up, fov_y_deg), instead of the angles; its field of view is kept")
-        ->check(CLI::ExistingFile);
+        ->check(CLI::ExistingFile)
+        ->excludes("--theta")
+        ->excludes("--phi")
+        ->excludes(fovOption)
+        ->excludes("--ortho");
     command.add_option("--view", viewFile,
                        "View file (optimize's and render's --view-out, the viewer's 'save view'): its camera, method "
                        "and parameters, scalar, colour map, scale, units and legend; flags given as well override it")

@@ -225,6 +225,10 @@ TEST_F(Cli, OptimizeStartsFromTheGivenCameraAndRejectsOrthographic)
     fs::remove_all(output(""));
     fs::create_directories(output(""));
     expectRejected(common + " --ortho", {"--ortho"});
+    // Ignored beside a camera file, or beside --ortho (whose framing is its half height).
+    for (const char* beside : {" --theta 10", " --phi 10", " --fov 40", " --ortho"})
+        expectRejected(render("scene:sphere", "--camera " + quoted(camera) + beside), {"--camera", "excludes"});
+    expectRejected(render("scene:sphere", "--ortho --fov 40"), {"--ortho", "excludes"});
 }
 
 TEST_F(Cli, EvaluateTakesTheMeshAndVolumeOptions)
@@ -683,13 +687,14 @@ TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)
 TEST_F(Cli, RenderFramesEachPictureAndItsCameraFileReproducesIt)
 {
     auto stats = [&](const std::string& extra, const std::string& name) {
-        const CliResult result = runCli("render scene:vessel-tree --volume-res 48 --res 32x32 --theta 60 --phi 40 " +
+        const CliResult result = runCli("render scene:vessel-tree --volume-res 48 --res 32x32 " +
                                         extra + " -o " + quoted(output(name + ".png")) + " --stats-json " +
                                         quoted(output(name + ".json")));
         EXPECT_EQ(result.status, 0) << result.err;
         return nlohmann::json::parse(std::ifstream(output(name + ".json")));
     };
-    const nlohmann::json ring = stats("--method neugebauer", "ring"), front = stats("--method front", "front");
+    const std::string angles = " --theta 60 --phi 40";
+    const nlohmann::json ring = stats("--method neugebauer" + angles, "ring"), front = stats("--method front" + angles, "front");
     EXPECT_TRUE(ring.at("framed").get<bool>());
     EXPECT_GT(ring.at("fov_y_deg").get<double>(), front.at("fov_y_deg").get<double>() + 10.0);
     const nlohmann::json camera = nlohmann::json::parse(std::ifstream(output("ring.png.camera.json")));
@@ -700,7 +705,7 @@ TEST_F(Cli, RenderFramesEachPictureAndItsCameraFileReproducesIt)
     EXPECT_EQ(again.at("fov_y_deg"), ring.at("fov_y_deg"));
     EXPECT_EQ(test::readFile(output("again.png")), test::readFile(output("ring.png"))) << "the same picture";
 
-    const nlohmann::json fixed = stats("--method neugebauer --fov 40", "fixed");
+    const nlohmann::json fixed = stats("--method neugebauer --fov 40" + angles, "fixed");
     EXPECT_FALSE(fixed.at("framed").get<bool>());
     EXPECT_EQ(fixed.at("fov_y_deg").get<double>(), 40.0);
     fs::remove_all(output(""));
