@@ -21,6 +21,9 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
     for (const std::string& source : sources)
         if (sources.size() > 1 && isTimeSeries(source))
             throw InputError(source + ": a .pvd is a series by itself; give it alone, not among other files");
+    if (!mOptions.read.scalarFile.empty())  // every step showed the one file's values
+        throw InputError(mOptions.read.scalarFile + ": --scalar-file gives one mesh's values; each step of a series "
+                                                    "shows its own array (--scalar NAME)");
     const std::string& scalar = mOptions.read.scalarName;
     const bool pattern = isArrayPattern(scalar);
     if (pattern && (sources.size() > 1 || isTimeSeries(sources.front())))

@@ -303,6 +303,10 @@ TEST_F(CliSeries, BadSeriesWriteNothing)
                    {"--range-per-frame: applies to a time series"});
     expectRejected(render(arteryStep("0200"), "--fps 3"), {"--fps: applies to a time series"});
     expectRejected(render(pvd(), "--range-per-frame --range 0 1"), {"excludes"});
+    // One mesh's values for every step (each frame showed them alike).
+    const std::string values = input("values.txt");
+    test::writeFile(values, "1\n");
+    expectRejected(render(pvd(), "--scalar-file " + quoted(values)), {values + ": --scalar-file gives one mesh's values"});
 }
 
 TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
