@@ -32,7 +32,8 @@ nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
             {"value", setting.method->values().at(parameter).at(0)},
             {"estimated_coherence", setting.coherence.value()},
             {"sampled_pairs", setting.coherence.pairs},
-            {"picture_size", {setting.size.x, setting.size.y}}};
+            {"picture_size", {setting.size.x, setting.size.y}},
+            {"keeps_min_coherence", setting.keepsMinimum}};
 }
 
 std::string readableSettingLine(const optimize::ReadableSetting& setting)
@@ -43,7 +44,7 @@ std::string readableSettingLine(const optimize::ReadableSetting& setting)
                   "readable rule: %s %.4g, estimated coherence %.4f on %zu sampled pairs of a %dx%d picture",
                   parameter.c_str(), setting.method->values().at(parameter).at(0), setting.coherence.value(),
                   setting.coherence.pairs, setting.size.x, setting.size.y);
-    return text;
+    return text + std::string(setting.keepsMinimum ? "" : " (below --min-coherence even at the tightest rule)");
 }
 
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)

@@ -565,6 +565,8 @@ TEST_F(Cli, RenderDrawsTheWrapWithItsReadableRuleUnlessTheRuleIsGiven)
     EXPECT_FLOAT_EQ(off.at("stable_shift").get<float>(), 0.1f) << "the default rule";
     const nlohmann::json tight = renderTree("tight", "--fov 63 --min-coherence 0.9999");
     EXPECT_FLOAT_EQ(tight.at("readability").at("value").get<float>(), 0.0125f) << "tightened to the ladder's foot";
+    EXPECT_FALSE(tight.at("readability").at("keeps_min_coherence").get<bool>()) << "and still short of 0.9999";
+    EXPECT_TRUE(choice.at("keeps_min_coherence").get<bool>());
     EXPECT_LT(tight.at("pixels_indirect").get<int>(), off.at("pixels_indirect").get<int>()) << "the tighter rule draws less";
     EXPECT_FALSE(renderTree("faithful", "--min-coherence 0.5 --method inversevis").contains("readability"))
         << "a method without such a rule";

@@ -110,8 +110,9 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
         coherenceAtSettings(scene, camera, *method, size, std::max(1, size.y / kSampledLines), ladder);
     std::size_t chosen = 0;
     while (chosen + 1 < ladder.size() && coherenceLowerBound(coherence[chosen + 1]) >= minCoherence) ++chosen;
-    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen], size};
-    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen], size};
+    const bool keepsMinimum = coherenceLowerBound(coherence[chosen]) >= minCoherence;
+    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen], size, keepsMinimum};
+    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen], size, keepsMinimum};
 }
 
 }  // namespace ivis::optimize

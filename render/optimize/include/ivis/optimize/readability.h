@@ -20,6 +20,7 @@ struct ReadableSetting {
     render::MethodPtr method;  ///< the method with the chosen setting
     Coherence coherence;       ///< its picture's coherence, estimated on sampled pairs
     glm::ivec2 size{0, 0};     ///< the size (width, height) of the picture it was estimated on
+    bool keepsMinimum = true;  ///< false when even the ladder's tightest rung falls short of the minimum
 };
 
 /// @brief Lower end of the about 95% interval of the coherence estimated from @a coherence's pairs:
@@ -52,7 +53,8 @@ std::vector<float> readabilityLadder(const render::Method& method);
 
 /// @brief Of readabilityLadder(@a method), the loosest rung reached from the tightest before a rung
 ///        whose picture from @a camera at @a size pixels (width, height) has a coherence lower
-///        bound below @a minCoherence (the tightest when the next one falls short), estimated on
+///        bound below @a minCoherence (the tightest when the next one falls short, and
+///        keepsMinimum false when it falls short itself), estimated on
 ///        the pairs of every (height / 200)-th row and column: the method's own rule is loosened
 ///        where its picture has room in coherence and tightened where it has none. A method without such a
 ///        parameter is returned as it is, nothing measured; a method at the chosen value itself.
