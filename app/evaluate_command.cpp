@@ -192,7 +192,7 @@ Command addEvaluateCommand(CLI::App& app)
             progress.setContext(meshLabel);
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(cacheFolder(options->cacheDir), mesh, field.mesh, volumeOptions.resolution),
+                field.mesh, volumeOptions, defaultVolumePath(cacheFolder(options->cacheDir), mesh, field.mesh, volumeOptions),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);

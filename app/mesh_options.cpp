@@ -114,10 +114,12 @@ std::string cacheFolder(const std::string& cacheDir)
 }
 
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
-                              int resolution)
+                              const vdb::VolumeOptions& options)
 {
-    const std::string name =
-        core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" + std::to_string(resolution) + ".vdb";
+    char reach[32];
+    std::snprintf(reach, sizeof reach, ".reach%g", options.farFieldReach);
+    const std::string name = core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" +
+                             std::to_string(options.resolution) + reach + ".vdb";
     return (std::filesystem::path(folder) / name).string();
 }
 

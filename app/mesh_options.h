@@ -50,10 +50,11 @@ inline constexpr const char* kCacheDirHelp =
 /// @throw InputError naming the folder when it cannot be created
 std::string cacheFolder(const std::string& cacheDir);
 
-/// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source at
-///        @a resolution: "<stem>.<mesh hash>.res<N>.vdb", so that every geometry of a time series
-///        (and every mesh of one name) keeps a cache of its own.
+/// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source built
+///        with @a options: "<stem>.<mesh hash>.res<N>.reach<R>.vdb", so that every geometry of a time
+///        series (and every mesh of one name) keeps a cache of its own, and so does each far-field
+///        reach (the curved-ray methods' volumes reach further than the others').
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
-                              int resolution);
+                              const vdb::VolumeOptions& options);
 
 }  // namespace ivis::app

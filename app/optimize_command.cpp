@@ -112,7 +112,7 @@ Command addOptimizeCommand(CLI::App& app)
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(source));
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-            field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions.resolution),
+            field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions),
             &progress);
         const render::RenderScene scene(field, volume);
 

@@ -192,7 +192,7 @@ Command addRenderCommand(CLI::App& app)
             return;
         }
 
-        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions.resolution);
+        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
         core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,

@@ -28,7 +28,7 @@ Command addSdfCommand(CLI::App& app)
     CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
     options->mesh.addTo(*command);
     command->add_option("-o,--output", options->output,
-                        "Volume file (default: <mesh>.<mesh hash>.res<N>.vdb in the cache folder, where render, "
+                        "Volume file (default: <mesh>.<mesh hash>.res<N>.reach<R>.vdb in the cache folder, where render, "
                         "optimize, evaluate and the viewer find it)");
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     command->add_flag("--json", options->json, "Print one JSON object");
@@ -41,7 +41,7 @@ Command addSdfCommand(CLI::App& app)
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
                                      ? defaultVolumePath(cacheFolder(options->cacheDir), options->mesh.source, field.mesh,
-                                                         volumeOptions.resolution)
+                                                         volumeOptions)
                                      : options->output;
         vdb::CacheOutcome outcome{};
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);

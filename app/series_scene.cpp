@@ -22,7 +22,7 @@ std::string SeriesScene::show(core::SurfaceField field, core::Interrupter* inter
     }
     mScene.reset();
     mField = std::make_unique<core::SurfaceField>(std::move(field));
-    mVolumePath = defaultVolumePath(mCacheFolder, mSource, mField->mesh, mOptions.resolution);
+    mVolumePath = defaultVolumePath(mCacheFolder, mSource, mField->mesh, mOptions);
     vdb::CacheOutcome outcome{};
     mVolume = std::make_unique<vdb::SurfaceVolume>(
         vdb::loadOrBuildVolume(mField->mesh, mOptions, mVolumePath, interrupter, &outcome));

@@ -42,5 +42,25 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(test::runCli("cache"), {"subcommand"});
 }
 
+// Each far-field reach keeps a cache of its own: switching between the curved-ray methods (reach 1)
+// and the others (0.6) reuses both volumes (one file was rebuilt at every switch).
+TEST_F(Cli, MethodsOfTwoReachesKeepTwoCaches)
+{
+    auto volumeOf = [&](const std::string& method) {
+        const test::CliResult result = test::runCli(render("scene:sphere", "--method " + method + " --stats-json " +
+                                                                               quoted(output("s.json"))));
+        EXPECT_EQ(result.status, 0) << result.err;
+        return nlohmann::json::parse(test::readFile(output("s.json"))).at("volume_cache").get<std::string>();
+    };
+    const std::string front = volumeOf("front"), wrap = volumeOf("inversevis-wrap");
+    EXPECT_NE(front.find(".res48.reach0.6.vdb"), std::string::npos) << front;
+    EXPECT_NE(wrap.find(".res48.reach1.vdb"), std::string::npos) << wrap;
+    const auto frontWritten = fs::last_write_time(front), wrapWritten = fs::last_write_time(wrap);
+    EXPECT_EQ(volumeOf("front"), front);
+    EXPECT_EQ(volumeOf("inversevis-wrap"), wrap);
+    EXPECT_EQ(fs::last_write_time(front), frontWritten) << "rebuilt";
+    EXPECT_EQ(fs::last_write_time(wrap), wrapWritten) << "rebuilt";
+}
+
 }  // namespace
 }  // namespace ivis::app

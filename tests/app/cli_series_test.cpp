@@ -92,12 +92,13 @@ protected:
                quoted(output("s.json")) + " " + extra;
     }
     nlohmann::json stats() const { return nlohmann::json::parse(test::readFile(output("s.json"))); }
-    /// The volume cache name of @a source's geometry at N = 48 (app/mesh_options.h defaultVolumePath).
+    /// The volume cache name of @a source's geometry at N = 48 for the default method, whose far field
+    /// reaches 1 (app/mesh_options.h defaultVolumePath).
     static std::string cacheName(const std::string& stem, const std::string& mesh, const std::string& scalar)
     {
         core::SurfaceLoadOptions options;
         options.read.scalarName = scalar;
-        return stem + "." + core::toHex(core::meshHash(core::loadSurface(mesh, options).mesh)) + ".res48.vdb";
+        return stem + "." + core::toHex(core::meshHash(core::loadSurface(mesh, options).mesh)) + ".res48.reach1.vdb";
     }
 };
 

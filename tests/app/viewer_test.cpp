@@ -122,8 +122,10 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     volumeOptions.resolution = volumeResolution;
     volumeOptions.farFieldReach = render::reachNeededBy({render::makeMethod(method)}, volumeOptions.farFieldReach);
     // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
+    char reach[32];
+    std::snprintf(reach, sizeof reach, ".reach%g", volumeOptions.farFieldReach);
     const std::string cache = dir.file(core::sourceStem(source) + "." + core::toHex(core::meshHash(field.mesh)) + ".res" +
-                                       std::to_string(volumeOptions.resolution) + ".vdb");
+                                       std::to_string(volumeOptions.resolution) + reach + ".vdb");
     const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, cache);
     const render::RenderScene scene(field, volume);
     render::RenderOptions options;
@@ -293,7 +295,7 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
                                         "' --cache-dir '" + dir.path() + "'",
                                     true, dir);
     ASSERT_EQ(run.status, 0) << run.output;
-    EXPECT_NE(run.output.find(".res100.vdb (reused"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(".res100.reach1.vdb (reused"), std::string::npos) << run.output;
     EXPECT_EQ(run.output.find("inversevis-view: volume "), run.output.rfind("inversevis-view: volume ")) << run.output;
     for (int step = 2; step <= 5; ++step)
         EXPECT_NE(run.output.find("step " + std::to_string(step) + "/5 (artery_t"), std::string::npos) << run.output;
