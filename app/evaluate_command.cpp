@@ -213,7 +213,8 @@ Command addEvaluateCommand(CLI::App& app)
                     const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
                     const auto ascentEvaluator = options->optimization.ascentEvaluator(scene, resolution, range);
                     const auto finalistEvaluator = options->optimization.finalistEvaluator(scene, resolution, range);
-                    const optimize::AnnealingOptions annealing = options->optimization.annealingOptions(std::nullopt, options->fovYDeg);
+                    const optimize::AnnealingOptions annealing =
+                        options->optimization.annealingOptions(std::nullopt, options->fovYDeg);
                     const optimize::AnnealingResult run =
                         optimize::annealViewpoint(evaluator, start, annealing, options->optimization.ascentOptions(),
                                                   ascentEvaluator.get(), &progress, finalistEvaluator.get());

@@ -81,7 +81,8 @@ Command addOptimizeCommand(CLI::App& app)
                           {options->exr, "--exr", {".exr"}},
                           {options->cameraOut, "--camera-out", {}},
                           {options->viewOut, "--view-out", {}}});
-        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+        if (const ViewFile* view = options->view.view())
+            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
@@ -137,7 +138,8 @@ Command addOptimizeCommand(CLI::App& app)
         const std::string viewPath = options->viewOut.empty() ? options->output + ".view.json" : options->viewOut;
         nlohmann::json seriesStats;
         double coherence = 0.0;
-        core::AtomicFileSet files;  // renamed into place together once all are written (a series' frames: by renderSeries)
+        // Renamed into place together once all are written (a series' frames: by renderSeries).
+        core::AtomicFileSet files;
         if (isSeries) {
             SeriesRenderRequest request;
             request.method = best.method;

@@ -122,7 +122,8 @@ Command addRenderCommand(CLI::App& app)
                           {options->viewOut, "--view-out", {}},
                           {options->tearMap, "--tear-map", {".png"}},
                           {options->unseenMap, "--unseen-map", {".png"}}});
-        if (const ViewFile* view = options->view.view()) options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+        if (const ViewFile* view = options->view.view())
+            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         SeriesRenderRequest frameRange;  // --frames, checked before anything is read
         if (!options->frames.empty()) {
             parseFrameRange(options->frames, frameRange);

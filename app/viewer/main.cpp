@@ -31,7 +31,8 @@ int main(int argc, char** argv)
         app.parse(argc, argv);
         options.takeSources();
         options.validate();
-        if (const ivis::app::ViewFile* view = options.view.view()) options.mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+        if (const ivis::app::ViewFile* view = options.view.view())
+            options.mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
             ivis::app::ViewerApp viewer(options, ivis::core::loadSurface(options.mesh.source, options.mesh.load));
             return viewer.run();
