@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 
 namespace ivis::core {
 namespace {
@@ -58,12 +60,19 @@ Camera cameraFromJson(const nlohmann::json& json)
 
 Camera readCameraJson(const std::string& path)
 {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open camera file");
+    return detail::parseCameraJson(path, std::string(std::istreambuf_iterator<char>(in), {}));
+}
+
+Camera detail::parseCameraJson(const std::string& path, const std::string& text)
+{
     try {
-        return cameraFromJson(nlohmann::json::parse(in));
+        return cameraFromJson(nlohmann::json::parse(text));
     } catch (const std::exception& e) {
-        throw InputError(path + ": bad camera file (" + e.what() + ")");
+        std::string why = e.what();
+        std::replace(why.begin(), why.end(), '\n', ' ');  // one line, whatever the parser quotes
+        throw InputError(path + ": bad camera file (" + why + ")");
     }
 }
 

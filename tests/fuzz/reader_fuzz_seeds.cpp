@@ -1,7 +1,8 @@
 // Writes the seed corpora of the mesh, scalar-file and volume-cache fuzz targets:
 // `reader_fuzz_seeds FOLDER` fills FOLDER/obj, off, ply, stl (a tetrahedron in each format's ASCII
 // and, where it has one, binary layout; a PLY with vertex and face properties), FOLDER/scalar_file
-// (four values, nan included) and FOLDER/volume_cache (the volume of a small icosphere).
+// (four values, nan included), FOLDER/volume_cache (the volume of a small icosphere) and
+// FOLDER/camera_json (a camera file with every key).
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -96,6 +97,9 @@ int main(int argc, char** argv)
     write(root / "stl" / "ascii.stl", asciiStl);
     write(root / "stl" / "binary.stl", binaryStl());
     write(root / "scalar_file" / "values.txt", "0.5 1e3\n-2\tnan\n");
+    write(root / "camera_json" / "camera.json",
+          "{\"eye\": [0, 1.25, 2.165], \"target\": [0, 0, 0], \"up\": [0, 1, 0], \"fov_y_deg\": 60, "
+          "\"orthographic\": false, \"ortho_half_height\": 1, \"window_centre\": [0.1, -0.2]}");
     ivis::vdb::VolumeOptions options;
     options.resolution = 16;
     ivis::vdb::writeVolume(ivis::vdb::buildSurfaceVolume(ivis::core::makeSphere(1).mesh, options),

@@ -88,10 +88,15 @@ private:
 };
 
 /// @brief Reads a camera JSON file {"eye":[x,y,z],"target":[...],"up":[...],"fov_y_deg":f,
-///        "orthographic":b,"ortho_half_height":f,"window_centre":[x,y]}; missing keys keep their
-///        defaults.
+///        "orthographic":b,"ortho_half_height":f,"window_centre":[x,y]}; "eye" is required, missing
+///        other keys keep their defaults.
 /// @throw InputError naming the file for unreadable JSON or bad values
 Camera readCameraJson(const std::string& path);
+
+namespace detail {
+/// @brief readCameraJson on @a text, the bytes of the file @a path (what the fuzz target feeds).
+Camera parseCameraJson(const std::string& path, const std::string& text);
+}  // namespace detail
 
 /// @brief Writes a camera as JSON (with its angles for reference, and the mesh's normalising
 ///        transform @a meshUnits as "mesh_units": the camera is in normalised units), atomically.
