@@ -6,8 +6,13 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/method_json.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 
 namespace ivis::app {
 namespace {
@@ -22,10 +27,31 @@ const char* sideName(core::LegendSide side)
     return "right";
 }
 
+/// The whole number @a json, within [lo, hi] (a float, or a number beyond an int, is refused: its
+/// conversion would be undefined or silently truncated).
+int wholeNumber(const nlohmann::json& json, const char* what, int lo, int hi)
+{
+    if (!json.is_number_integer() || json.get<std::int64_t>() < lo || json.get<std::int64_t>() > hi)
+        throw std::invalid_argument(std::string("'") + what + "' must be a whole number from " + std::to_string(lo) +
+                                    " to " + std::to_string(hi));
+    return int(json.get<std::int64_t>());
+}
+
+/// The number @a json as a finite float.
+float finiteFloat(const nlohmann::json& json, const char* what)
+{
+    if (!json.is_number() || !(std::abs(json.get<double>()) <= double(std::numeric_limits<float>::max())))
+        throw std::invalid_argument(std::string("'") + what + "' must be a finite number");
+    return json.get<float>();
+}
+
 ViewFile viewFromJson(const nlohmann::json& json)
 {
     if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
-    const int version = json.at("inversevis_view").get<int>();
+    const nlohmann::json& versionJson = json.at("inversevis_view");
+    // A float version (8.9e93 in the fuzz run) made the cast to int undefined.
+    if (!versionJson.is_number_integer()) throw std::invalid_argument("'inversevis_view' must be a whole number");
+    const std::int64_t version = versionJson.get<std::int64_t>();
     if (version < 1 || version > kViewFileVersion)
         throw std::invalid_argument("version " + std::to_string(version) + " (this program reads 1 to " +
                                     std::to_string(kViewFileVersion) + ")");
@@ -33,21 +59,18 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.camera = core::cameraFromJson(json.at("camera"));
     const nlohmann::json& size = json.at("size");
     if (!size.is_array() || size.size() != 2) throw std::invalid_argument("'size' must be [width, height]");
-    view.width = size[0].get<int>();
-    view.height = size[1].get<int>();
-    if (view.width < 1 || view.height < 1 || view.width > 32768 || view.height > 32768)
-        throw std::invalid_argument("'size' must be 1 to 32768 pixels each way");
+    view.width = wholeNumber(size[0], "size", 1, 32768);
+    view.height = wholeNumber(size[1], "size", 1, 32768);
     view.method = render::methodFromJson(json.at("method"));
     view.scalar = json.value("scalar", std::string());
     view.scalarFile = json.value("scalar_file", std::string());
-    view.hotSpots = json.value("hotspots", 0);
-    if (view.hotSpots < 0 || view.hotSpots > 6) throw std::invalid_argument("'hotspots' must be 0 to 6");
+    view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, 6) : 0;
     view.colormap = json.at("colormap").get<std::string>();
     core::colormap(view.colormap);  // known
     const nlohmann::json& scale = json.at("scale");
     const nlohmann::json& range = scale.at("range");
     if (!range.is_array() || range.size() != 2) throw std::invalid_argument("'scale.range' must be [lo, hi]");
-    view.scale.range = {range[0].get<float>(), range[1].get<float>()};
+    view.scale.range = {finiteFloat(range[0], "scale.range"), finiteFloat(range[1], "scale.range")};
     view.scale.log = scale.at("log").get<bool>();
     view.scale.invert = scale.at("invert").get<bool>();
     if (!(view.scale.range.lo <= view.scale.range.hi) || (view.scale.log && !(view.scale.range.lo > 0.0f)))
@@ -107,12 +130,19 @@ nlohmann::json viewToJson(const ViewFile& view)
 
 ViewFile readViewFile(const std::string& path)
 {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open view file");
+    return detail::parseViewFile(path, std::string(std::istreambuf_iterator<char>(in), {}));
+}
+
+ViewFile detail::parseViewFile(const std::string& path, const std::string& text)
+{
     try {
-        return viewFromJson(nlohmann::json::parse(in));
+        return viewFromJson(nlohmann::json::parse(text));
     } catch (const std::exception& e) {
-        throw InputError(path + ": bad view file (" + e.what() + ")");
+        std::string why = e.what();
+        std::replace(why.begin(), why.end(), '\n', ' ');  // one line, whatever the parser quotes
+        throw InputError(path + ": bad view file (" + why + ")");
     }
 }
 

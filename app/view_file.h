@@ -55,6 +55,11 @@ nlohmann::json viewToJson(const ViewFile& view);
 /// @throw InputError naming @a path for unreadable JSON, a missing key, a bad value or a newer version
 ViewFile readViewFile(const std::string& path);
 
+namespace detail {
+/// @brief readViewFile on @a text, the bytes of the file @a path (what the fuzz target feeds).
+ViewFile parseViewFile(const std::string& path, const std::string& text);
+}  // namespace detail
+
 /// @brief Writes @a view to @a path atomically.
 void writeViewFile(const ViewFile& view, const std::string& path);
 

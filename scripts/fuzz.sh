@@ -10,7 +10,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
 
-READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json)
+READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json view_file)
 CHOSEN=${1:-all}
 if [[ "$CHOSEN" =~ ^[0-9]+$ ]]; then  # scripts/fuzz.sh SECONDS: every reader
   set -- all "$CHOSEN"

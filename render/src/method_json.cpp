@@ -3,6 +3,9 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/method_registry.h>
 
+#include <cmath>
+#include <limits>
+
 namespace ivis::render {
 
 nlohmann::json methodToJson(const Method& method)
@@ -27,7 +30,8 @@ MethodPtr methodFromJson(const nlohmann::json& json)
         if (key == "method") continue;
         std::vector<float>& v = values[key];
         for (const auto& component : value.is_array() ? value : nlohmann::json::array({value})) {
-            if (!component.is_number()) throw InputError("method parameter '" + key + "' is not a number");
+            if (!component.is_number() || !(std::abs(component.get<double>()) <= double(std::numeric_limits<float>::max())))
+                throw InputError("method parameter '" + key + "' is not a finite number");
             v.push_back(component.get<float>());
         }
     }

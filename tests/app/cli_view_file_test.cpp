@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <functional>
 
 namespace ivis::app {
 namespace {
@@ -105,6 +106,26 @@ TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
     test::writeFile(bad, "{");
     expectRejected(render("scene:sphere", "--view " + quoted(bad)), {"bad.view.json: bad view file"});
     expectRejected(render("scene:sphere", "--view " + quoted(bad) + " --theta 10"), {"--view"});
+
+    // Numbers that a cast would have truncated (2.5 pixels), made undefined (1e30) or infinite.
+    const std::string good = output("good.json");
+    ASSERT_EQ(test::runCli(render("scene:sphere", "--method front --view-out " + quoted(good))).status, 0);
+    const nlohmann::json view = nlohmann::json::parse(std::ifstream(good));
+    auto rejectedWith = [&](const std::function<void(nlohmann::json&)>& change, const std::string& problem) {
+        nlohmann::json changed = view;
+        change(changed);
+        test::writeFile(bad, changed.dump());
+        const test::CliResult result = test::runCli(render("scene:sphere", "--view " + quoted(bad)));
+        SCOPED_TRACE(changed.dump());
+        expectBadInput(result, {"bad.view.json: bad view file", problem});
+    };
+    rejectedWith([](nlohmann::json& v) { v["inversevis_view"] = 8.9e93; }, "'inversevis_view' must be a whole number");
+    rejectedWith([](nlohmann::json& v) { v["size"] = {2.5, 32}; }, "'size' must be a whole number from 1 to 32768");
+    rejectedWith([](nlohmann::json& v) { v["size"] = {1e30, 32}; }, "'size' must be a whole number");
+    rejectedWith([](nlohmann::json& v) { v["hotspots"] = 1e30; }, "'hotspots' must be a whole number from 0 to 6");
+    rejectedWith([](nlohmann::json& v) { v["scale"]["range"] = {-1e300, 1e300}; }, "'scale.range' must be a finite number");
+    rejectedWith([](nlohmann::json& v) { v["method"] = {{"method", "inversevis"}, {"alpha", 1e300}}; },
+                 "method parameter 'alpha' is not a finite number");
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // `reader_fuzz_seeds FOLDER` fills FOLDER/obj, off, ply, stl (a tetrahedron in each format's ASCII
 // and, where it has one, binary layout; a PLY with vertex and face properties), FOLDER/scalar_file
 // (four values, nan included), FOLDER/volume_cache (the volume of a small icosphere) and
-// FOLDER/camera_json (a camera file with every key).
+// FOLDER/camera_json (a camera file with every key) and FOLDER/view_file (a view file).
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -100,6 +100,12 @@ int main(int argc, char** argv)
     write(root / "camera_json" / "camera.json",
           "{\"eye\": [0, 1.25, 2.165], \"target\": [0, 0, 0], \"up\": [0, 1, 0], \"fov_y_deg\": 60, "
           "\"orthographic\": false, \"ortho_half_height\": 1, \"window_centre\": [0.1, -0.2]}");
+    write(root / "view_file" / "wrap.view.json",
+          R"({"camera":{"eye":[0,1.25,2.165],"fov_y_deg":49.3,"ortho_half_height":1.6,"orthographic":false,)"
+          R"("target":[0,0,0],"up":[0,1,0],"window_centre":[0,0]},"colormap":"viridis","hotspots":2,)"
+          R"("inversevis_view":1,"legend":"right","method":{"method":"inversevis-wrap","wrap_speed":2.5,)"
+          R"("stable_shift":0.1},"outline":true,"scalar":"","scalar_file":"","scale":{"invert":false,"log":false,)"
+          R"("range":[0.0,1.0]},"shade_indirect":true,"shadows":true,"size":[32,32],"units":"mm"})");
     ivis::vdb::VolumeOptions options;
     options.resolution = 16;
     ivis::vdb::writeVolume(ivis::vdb::buildSurfaceVolume(ivis::core::makeSphere(1).mesh, options),
