@@ -1,6 +1,7 @@
 #include <ivis/core/surface_series.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/log.h>
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/show_array.h>
 
@@ -70,10 +71,13 @@ SurfaceField SurfaceSeries::load(std::size_t index)
         showArray(field, step.array, mOptions.read.cellToPoint);
         return field;
     }
-    // The first step shows its default array as loadSurface shows it (and says so); the others follow it.
+    // The first step, until it is loaded where the log is heard, shows its default array as
+    // loadSurface shows it (and says so); the other steps, and it after that, name the array.
     SurfaceLoadOptions options = mOptions;
-    if (index > 0 && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
-    return loadSurface(step.path, options);
+    if ((index > 0 || mDefaultArraySaid) && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
+    SurfaceField field = loadSurface(step.path, options);
+    if (index == 0 && logLevel() <= LogLevel::Info) mDefaultArraySaid = true;  // not under a survey's silence
+    return field;
 }
 
 }  // namespace ivis::core

@@ -119,7 +119,9 @@ TEST_F(CliSeries, MeasureGivesEveryFrameItsMeasures)
         EXPECT_EQ(measures.at("coherence"), frame.at("coherence"));
         // null where the series' range leaves a step no important surface (it said 0% revealed)
         ASSERT_TRUE(measures.contains("reveal"));
-        if (!measures.at("reveal").is_null()) EXPECT_FALSE(measures.at("reveal").at("per_region").empty());
+        if (!measures.at("reveal").is_null()) {
+            EXPECT_FALSE(measures.at("reveal").at("per_region").empty());
+        }
     }
 }
 

@@ -1,6 +1,7 @@
 // Time series: the steps of a .pvd, of a list of files and of a --scalar pattern on one file, and
 // each step's surface as loadSurface loads it.
 #include <ivis/core/errors.h>
+#include <ivis/core/log.h>
 #include <ivis/core/surface_series.h>
 
 #include "test_support.h"
@@ -65,6 +66,24 @@ TEST(SurfaceSeries, PvdStepsAreItsFilesInTimeOrderEachAsThePlyStep)
         EXPECT_EQ(field.values, ply.values) << step.label;
         EXPECT_EQ(field.mesh.positions, ply.mesh.positions) << step.label;
     }
+}
+
+TEST(SurfaceSeries, TheDefaultArrayIsSaidOnce)
+{
+    // optimize loads the first step twice (its colour range, then its importance): the note came
+    // twice. A load under a silenced log (the series' survey) does not count.
+    SurfaceSeries series({pvd()}, {});
+    const LogLevel level = logLevel();
+    setLogLevel(LogLevel::Silent);
+    EXPECT_EQ(series.load(0).name, "pressure");
+    setLogLevel(level);
+    testing::internal::CaptureStderr();
+    for (std::size_t k : {0, 0, 1}) EXPECT_EQ(series.load(k).name, "pressure");
+    const std::string err = testing::internal::GetCapturedStderr();
+    const std::string note = "showing the point array 'pressure'";
+    const std::size_t first = err.find(note);
+    ASSERT_NE(first, std::string::npos) << err;
+    EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;
 }
 
 TEST(SurfaceSeries, PatternStepsAreTheMatchingArraysOfOneFile)

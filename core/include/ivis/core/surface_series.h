@@ -26,8 +26,8 @@ bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions&
 
 /// @brief The steps of a series and each step's surface, loaded as loadSurface loads a file.
 /// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
-///       when none is chosen, the array the first step shows by default (which loading the first
-///       step says).
+///       when none is chosen, the array the first step shows by default (which the first load of
+///       the first step where the log is heard says, once).
 class SurfaceSeries {
 public:
     /// @brief Lists the steps: a .pvd's (core::readPvd), each source's in the order given, or the
@@ -56,6 +56,7 @@ private:
     SurfaceLoadOptions mOptions;
     SurfaceField mPatternFile;  ///< the pattern's file, read once (empty for a series of files)
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
+    bool mDefaultArraySaid = false;  ///< whether a load has said which array every step shows by default
 };
 
 }  // namespace ivis::core
