@@ -4,15 +4,14 @@
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/json_numbers.h>
 #include <ivis/render/method_json.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <limits>
 
 namespace ivis::app {
 namespace {
@@ -40,7 +39,7 @@ int wholeNumber(const nlohmann::json& json, const char* what, int lo, int hi)
 /// The number @a json as a finite float.
 float finiteFloat(const nlohmann::json& json, const char* what)
 {
-    if (!json.is_number() || !(std::abs(json.get<double>()) <= double(std::numeric_limits<float>::max())))
+    if (!core::isFiniteFloat(json))
         throw std::invalid_argument(std::string("'") + what + "' must be a finite number");
     return json.get<float>();
 }

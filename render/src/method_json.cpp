@@ -1,10 +1,9 @@
 #include <ivis/render/method_json.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/json_numbers.h>
 #include <ivis/render/method_registry.h>
 
-#include <cmath>
-#include <limits>
 
 namespace ivis::render {
 
@@ -30,7 +29,7 @@ MethodPtr methodFromJson(const nlohmann::json& json)
         if (key == "method") continue;
         std::vector<float>& v = values[key];
         for (const auto& component : value.is_array() ? value : nlohmann::json::array({value})) {
-            if (!component.is_number() || !(std::abs(component.get<double>()) <= double(std::numeric_limits<float>::max())))
+            if (!core::isFiniteFloat(component))
                 throw InputError("method parameter '" + key + "' is not a finite number");
             v.push_back(component.get<float>());
         }
