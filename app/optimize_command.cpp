@@ -101,6 +101,9 @@ Command addOptimizeCommand(CLI::App& app)
         if (isSeries) {
             series.emplace(options->sources, options->mesh.load);
             seriesScale = options->view.colorScaleRequest().resolve(surveySeries(*series).sample);
+            // Silent, as the survey: the frames load the steps again and say their notes (a refused
+            // series says only why).
+            const core::ScopedLogLevel silent(core::LogLevel::Silent);
             field = optimize::meanImportanceField(*series, seriesScale.range);
         } else {
             options->mesh.source = options->sources.front();

@@ -9,21 +9,6 @@
 #include <limits>
 
 namespace ivis::app {
-namespace {
-
-/// Silences the log for its life.
-class SilentLog {
-public:
-    SilentLog() : mLevel(core::logLevel()) { core::setLogLevel(core::LogLevel::Silent); }
-    ~SilentLog() { core::setLogLevel(mLevel); }
-    SilentLog(const SilentLog&) = delete;
-    SilentLog& operator=(const SilentLog&) = delete;
-
-private:
-    core::LogLevel mLevel;
-};
-
-}  // namespace
 
 std::string seriesStepTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name)
 {
@@ -36,7 +21,7 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
 
 SeriesSurvey surveySeries(core::SurfaceSeries& series)
 {
-    const SilentLog silent;
+    const core::ScopedLogLevel silent(core::LogLevel::Silent);  // the frames load the steps again and say their notes
     SeriesSurvey survey;
     float lo = std::numeric_limits<float>::infinity(), hi = -lo, lowestPositive = hi;
     const std::size_t steps = series.steps().size();

@@ -50,9 +50,9 @@ ViewFile viewFromJson(const nlohmann::json& json)
     const nlohmann::json& versionJson = json.at("inversevis_view");
     // A float version (8.9e93 in the fuzz run) made the cast to int undefined.
     if (!versionJson.is_number_integer()) throw std::invalid_argument("'inversevis_view' must be a whole number");
-    const std::int64_t version = versionJson.get<std::int64_t>();
-    if (version < 1 || version > kViewFileVersion)
-        throw std::invalid_argument("version " + std::to_string(version) + " (this program reads 1 to " +
+    // Compared as a double: an integer beyond int64 (read as unsigned) would wrap round to -1.
+    if (versionJson.get<double>() < 1.0 || versionJson.get<double>() > double(kViewFileVersion))
+        throw std::invalid_argument("version " + versionJson.dump() + " (this program reads 1 to " +
                                     std::to_string(kViewFileVersion) + ")");
     ViewFile view;
     view.camera = core::cameraFromJson(json.at("camera"));

@@ -51,7 +51,8 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
 ///        null, "outline", "shadows", "shade_indirect"}.
 nlohmann::json viewToJson(const ViewFile& view);
 
-/// @brief Reads a view file written by viewToJson (every key required but "units", "scalar" and "scalar_file").
+/// @brief Reads a view file written by viewToJson (every key required but "units", "scalar",
+///        "scalar_file" and "hotspots").
 /// @throw InputError naming @a path for unreadable JSON, a missing key, a bad value or a newer version
 ViewFile readViewFile(const std::string& path);
 

@@ -49,7 +49,7 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
         for (const std::string& source : sources)
             mSteps.push_back({source, "", double(mSteps.size()), std::filesystem::path(source).filename().string()});
     }
-    const bool chosen = !scalar.empty() || !mOptions.read.scalarFile.empty() || mOptions.hotSpots > 0;
+    const bool chosen = !scalar.empty() || mOptions.hotSpots > 0;
     if (!pattern && !chosen && mSteps.front().path.rfind(kScenePrefix, 0) != 0) {
         const SurfaceField first = readMesh(mSteps.front().path, mOptions.read);
         if (!first.arrays.empty()) mDefaultArray = defaultArray(first).name;
@@ -60,23 +60,26 @@ SurfaceField SurfaceSeries::load(std::size_t index)
 {
     IVIS_CHECK(index < mSteps.size());
     const SeriesStep& step = mSteps[index];
+    const bool heard = logLevel() <= LogLevel::Info;  // whether the notes of this load are printed
     if (!step.array.empty()) {
-        // A pattern's steps are arrays of one file: read it once, then show each step's array.
-        if (mPatternFile.mesh.triangles.empty()) {
+        // A pattern's steps are arrays of one file: read it once (again, if that was unheard, so
+        // that its notes are said), then show each step's array.
+        if (mPatternFile.mesh.triangles.empty() || (heard && !mFirstNotesSaid)) {
             SurfaceLoadOptions first = mOptions;
             first.read.scalarName = step.array;
             mPatternFile = loadSurface(step.path, first);
+            mFirstNotesSaid = heard;
         }
         SurfaceField field = mPatternFile;
         showArray(field, step.array, mOptions.read.cellToPoint);
         return field;
     }
-    // The first step, until it is loaded where the log is heard, shows its default array as
-    // loadSurface shows it (and says so); the other steps, and it after that, name the array.
+    // The first step shows its default array as loadSurface shows it, and says so, until a load
+    // whose notes are printed has said it; the other steps, and the first after that, name it.
     SurfaceLoadOptions options = mOptions;
-    if ((index > 0 || mDefaultArraySaid) && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
+    if ((index > 0 || mFirstNotesSaid) && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
     SurfaceField field = loadSurface(step.path, options);
-    if (index == 0 && logLevel() <= LogLevel::Info) mDefaultArraySaid = true;  // not under a survey's silence
+    if (index == 0 && heard) mFirstNotesSaid = true;
     return field;
 }
 

@@ -4,7 +4,6 @@
 #include <ivis/core/json_numbers.h>
 #include <ivis/render/method_registry.h>
 
-
 namespace ivis::render {
 
 nlohmann::json methodToJson(const Method& method)

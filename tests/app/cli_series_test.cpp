@@ -323,6 +323,9 @@ TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
     test::writeFile(mixed, collection({arteryStep("0200"), tet}));
     expectRejected("optimize " + quoted(mixed) + " --scalar pressure" + common,
                    {tet + ": step 1 (tet.vtp) has other geometry or values than the first step"});
+    // With no array chosen, only why (the default array's note came first).
+    expectRejected("optimize " + quoted(mixed) + common,
+                   {tet + ": step 1 (tet.vtp) has other geometry or values than the first step"});
     expectRejected("optimize " + quoted(artery()) + " --scalar pressure_t200 --fps 3" + common,
                    {"--fps: applies to a time series"});
 

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <fstream>
 #include <functional>
 
@@ -120,6 +121,9 @@ TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
         expectBadInput(result, {"bad.view.json: bad view file", problem});
     };
     rejectedWith([](nlohmann::json& v) { v["inversevis_view"] = 8.9e93; }, "'inversevis_view' must be a whole number");
+    // An integer beyond int64, read as unsigned, was named "version -1".
+    rejectedWith([](nlohmann::json& v) { v["inversevis_view"] = std::uint64_t(18446744073709551615u); },
+                 "version 18446744073709551615 (this program reads 1 to");
     rejectedWith([](nlohmann::json& v) { v["size"] = {2.5, 32}; }, "'size' must be a whole number from 1 to 32768");
     rejectedWith([](nlohmann::json& v) { v["size"] = {1e30, 32}; }, "'size' must be a whole number");
     rejectedWith([](nlohmann::json& v) { v["hotspots"] = 1e30; }, "'hotspots' must be a whole number from 0 to 6");

@@ -70,17 +70,41 @@ TEST(SurfaceSeries, PvdStepsAreItsFilesInTimeOrderEachAsThePlyStep)
 
 TEST(SurfaceSeries, TheDefaultArrayIsSaidOnce)
 {
-    // optimize loads the first step twice (its colour range, then its importance): the note came
-    // twice. A load under a silenced log (the series' survey) does not count.
+    // optimize loaded the first step twice where the log was heard (its importance, then its
+    // frame): the note came twice. A load under a silenced log (the series' survey) does not count.
     SurfaceSeries series({pvd()}, {});
-    const LogLevel level = logLevel();
-    setLogLevel(LogLevel::Silent);
-    EXPECT_EQ(series.load(0).name, "pressure");
-    setLogLevel(level);
+    {
+        const ScopedLogLevel silent(LogLevel::Silent);
+        EXPECT_EQ(series.load(0).name, "pressure");
+    }
     testing::internal::CaptureStderr();
     for (std::size_t k : {0, 0, 1}) EXPECT_EQ(series.load(k).name, "pressure");
     const std::string err = testing::internal::GetCapturedStderr();
     const std::string note = "showing the point array 'pressure'";
+    const std::size_t first = err.find(note);
+    ASSERT_NE(first, std::string::npos) << err;
+    EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;
+}
+
+TEST(SurfaceSeries, APatternFileReadUnheardIsReadAgainToSayItsNotes)
+{
+    // A pattern's file was read once, by the survey under a silenced log: its notes were never said.
+    test::TempDir dir;
+    const std::string ply = dir.file("two.ply");
+    test::writeFile(ply, "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                         "property float z\nproperty float p_t1\nproperty float p_t2\nelement face 2\n"
+                         "property list uchar int vertex_indices\nend_header\n0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n"
+                         "0 0 1 1 2\n3 0 1 2\n3 0 0 3\n");
+    SurfaceSeries series({ply}, scalar("p_t*"));
+    {
+        const ScopedLogLevel silent(LogLevel::Silent);
+        EXPECT_EQ(series.load(0).values, std::vector<float>(4, 1.0f));
+    }
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(series.load(1).values, std::vector<float>(4, 2.0f));
+    EXPECT_EQ(series.load(0).values, std::vector<float>(4, 1.0f));
+    const std::string err = testing::internal::GetCapturedStderr();
+    const std::string note = "two.ply: dropped 1 degenerate triangles";
     const std::size_t first = err.find(note);
     ASSERT_NE(first, std::string::npos) << err;
     EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;

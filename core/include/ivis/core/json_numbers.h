@@ -1,5 +1,6 @@
 /// @file json_numbers.h
-/// @brief Numbers read from JSON files, checked before they are converted (the file readers').
+/// @brief Numbers of the JSON files the program reads (view files, method JSON), checked before
+///        they are converted.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -10,7 +11,7 @@
 namespace ivis::core {
 
 /// @brief Whether @a json is a number that a float holds as a finite value (converting a larger
-///        one would give infinity).
+///        one is undefined behaviour; infinity in practice).
 inline bool isFiniteFloat(const nlohmann::json& json)
 {
     return json.is_number() && std::abs(json.get<double>()) <= double(std::numeric_limits<float>::max());

@@ -16,6 +16,19 @@ void setLogLevel(LogLevel level);
 /// @brief Current minimum level.
 LogLevel logLevel();
 
+/// @brief Sets the log level for its life and puts the previous one back (a pass that reads what
+///        a later pass reads again, and says, stays silent).
+class ScopedLogLevel {
+public:
+    explicit ScopedLogLevel(LogLevel level) : mPrevious(logLevel()) { setLogLevel(level); }
+    ~ScopedLogLevel() { setLogLevel(mPrevious); }
+    ScopedLogLevel(const ScopedLogLevel&) = delete;
+    ScopedLogLevel& operator=(const ScopedLogLevel&) = delete;
+
+private:
+    LogLevel mPrevious;
+};
+
 /// @brief Prints "inversevis: <message>" when Info is enabled.
 void logInfo(const std::string& message);
 

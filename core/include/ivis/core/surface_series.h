@@ -26,8 +26,9 @@ bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions&
 
 /// @brief The steps of a series and each step's surface, loaded as loadSurface loads a file.
 /// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
-///       when none is chosen, the array the first step shows by default (which the first load of
-///       the first step where the log is heard says, once).
+///       when none is chosen, the array the first step shows by default, which the first load of
+///       the first step made while info messages print says, once. A pattern's file, read once,
+///       is read again by the first such load, so that its notes are said.
 class SurfaceSeries {
 public:
     /// @brief Lists the steps: a .pvd's (core::readPvd), each source's in the order given, or the
@@ -54,9 +55,9 @@ private:
     std::string mSource;
     bool mTimed = false;
     SurfaceLoadOptions mOptions;
-    SurfaceField mPatternFile;  ///< the pattern's file, read once (empty for a series of files)
+    SurfaceField mPatternFile;  ///< the pattern's file, read once, or twice (empty for a series of files)
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
-    bool mDefaultArraySaid = false;  ///< whether a load has said which array every step shows by default
+    bool mFirstNotesSaid = false;  ///< whether a heard load (info printing) said the first step's notes
 };
 
 }  // namespace ivis::core

@@ -13,7 +13,8 @@ namespace ivis::render {
 nlohmann::json methodToJson(const Method& method);
 
 /// @brief The method described by @a json (missing parameters take their defaults).
-/// @throw InputError for a missing or unknown name, an unknown key or a non-numeric value;
+/// @throw InputError for a missing or unknown name, an unknown key or a value that is not a
+///        finite float;
 ///        ValueError for values out of bounds
 MethodPtr methodFromJson(const nlohmann::json& json);
 
