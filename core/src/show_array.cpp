@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cctype>
-#include <fnmatch.h>
 #include <limits>
 #include <string_view>
 
@@ -66,6 +65,31 @@ bool naturalLess(const std::string& a, const std::string& b)
     return a < b;  // equal up to leading zeros: any fixed order
 }
 
+/// Whether @a pattern matches the whole of @a name, '*' matching any run of characters and '?' any
+/// one; every other character, '[' and '\\' among them (fnmatch's classes and escapes), stands for
+/// itself, as in CFD array names such as "WSS [Pa]".
+bool wildcardMatches(const std::string& pattern, const std::string& name)
+{
+    std::size_t p = 0, n = 0;
+    std::size_t star = std::string::npos, resume = 0;  // the last '*' seen, and where its run ends in name
+    while (n < name.size()) {
+        if (p < pattern.size() && pattern[p] == '*') {
+            star = p++;
+            resume = n;
+        } else if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
+            ++p;
+            ++n;
+        } else if (star != std::string::npos) {  // let the last '*' take one more character
+            p = star + 1;
+            n = ++resume;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
 }  // namespace
 
 bool isArrayPattern(const std::string& spec) { return spec.find_first_of("*?") != std::string::npos; }
@@ -74,7 +98,7 @@ std::vector<std::string> arraysMatching(const SurfaceField& field, const std::st
 {
     std::vector<std::string> names;
     for (const DataArray& a : field.arrays)
-        if (::fnmatch(pattern.c_str(), a.name.c_str(), 0) == 0 &&
+        if (wildcardMatches(pattern, a.name) &&
             std::find(names.begin(), names.end(), a.name) == names.end())
             names.push_back(a.name);
     if (names.empty())

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fnmatch.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -133,6 +135,48 @@ TEST(ArrayPattern, MatchesWholeNamesOnceInNaturalOrder)
               (std::vector<std::string>{"p_t30", "p_t99", "p_t200", "p_t200x", "p_t0400", "p_t1000"}));
     EXPECT_EQ(arraysMatching(f, "?_t30?"), (std::vector<std::string>{"q_t300"}));
     EXPECT_EQ(arraysMatching(f, "*00"), (std::vector<std::string>{"p_t200", "p_t0400", "p_t1000", "q_t300"}));
+}
+
+TEST(ArrayPattern, BracketsAndBackslashesStandForThemselves)
+{
+    // CFD exports put units in brackets; fnmatch read "[Pa]" as one of 'P' or 'a'.
+    SurfaceField f = field();
+    f.arrays.clear();
+    for (const char* name : {"WSS [Pa]_t2", "WSS [Pa]_t1", "WSS P_t1", "WSS a_t1", "a\\b_t1", "ab_t1"})
+        f.arrays.push_back({name, Association::Point, ValueType::Float32, 1, {0, 0, 0, 0, 0}});
+    EXPECT_EQ(arraysMatching(f, "WSS [Pa]_t*"), (std::vector<std::string>{"WSS [Pa]_t1", "WSS [Pa]_t2"}));
+    EXPECT_EQ(arraysMatching(f, "a\\b_?1"), (std::vector<std::string>{"a\\b_t1"}));
+}
+
+TEST(ArrayPattern, WildcardsMatchAsFnmatchDoes)
+{
+    // Brute force: every pattern of up to 4 characters of "ab*?" against every name of up to 5 of
+    // "ab", where fnmatch (no brackets, no backslashes) is the reference.
+    auto words = [](const std::string& alphabet, std::size_t longest) {
+        std::vector<std::string> all = {""};
+        for (std::size_t k = 0; k < all.size(); ++k)
+            if (all[k].size() < longest)
+                for (char c : alphabet) all.push_back(all[k] + c);
+        return all;
+    };
+    const std::vector<std::string> names = words("ab", 5);
+    for (const std::string& pattern : words("ab*?", 4)) {
+        SurfaceField f = field();
+        f.arrays.clear();
+        std::vector<std::string> expected;
+        for (const std::string& name : names) {
+            f.arrays.push_back({name, Association::Point, ValueType::Float32, 1, {0, 0, 0, 0, 0}});
+            if (::fnmatch(pattern.c_str(), name.c_str(), 0) == 0) expected.push_back(name);
+        }
+        if (expected.empty()) {  // refused, naming the arrays
+            EXPECT_THROW(arraysMatching(f, pattern), InputError) << pattern;
+            continue;
+        }
+        std::vector<std::string> found = arraysMatching(f, pattern);
+        std::sort(found.begin(), found.end());
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(found, expected) << pattern;
+    }
 }
 
 TEST(ArrayPattern, NoMatchNamesTheArrays)
