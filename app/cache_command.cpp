@@ -24,16 +24,16 @@ struct CacheEntry {
     std::uintmax_t bytes = 0;
 };
 
-/// The volume caches of @a folder (*.vdb) and the temporaries an interrupted write left
-/// (*.vdb.tmp.*), by name.
+/// The volume caches of @a folder and the temporaries an interrupted write left, by name: only
+/// files named as this program names them (isVolumeCacheName), never another .vdb (none when
+/// the folder does not exist yet).
 std::vector<CacheEntry> cacheEntries(const std::string& folder)
 {
     std::vector<CacheEntry> entries;
+    if (!fs::exists(folder)) return entries;
     std::error_code error;
     for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
-        const std::string name = entry.path().filename().string();
-        const bool volume = name.size() > 4 && name.compare(name.size() - 4, 4, ".vdb") == 0;
-        if (!entry.is_regular_file() || !(volume || name.find(".vdb.tmp.") != std::string::npos)) continue;
+        if (!entry.is_regular_file() || !isVolumeCacheName(entry.path().filename().string())) continue;
         entries.push_back({entry.path(), entry.file_size()});
     }
     if (error) throw InputError(folder + ": cannot list the cache folder (" + error.message() + ")");
@@ -58,13 +58,14 @@ Command addCacheCommand(CLI::App& app)
     CLI::App* command = app.add_subcommand("cache", "List or clear the volume caches shared by every command and the viewer");
     command->add_option("--cache-dir", *cacheDir, kCacheDirHelp);
     CLI::App* list = command->add_subcommand("list", "Each cached volume with its size, and the total");
-    CLI::App* clear = command->add_subcommand("clear", "Remove every cached volume (and leftover temporaries)");
+    CLI::App* clear = command->add_subcommand(
+        "clear", "Remove every cached volume (and leftover temporaries): the files named as this program names them");
     command->require_subcommand(1);
     list->fallthrough();  // --cache-dir may follow list / clear
     clear->fallthrough();
 
     return {command, [cacheDir, list, clear] {
-        const std::string folder = cacheFolder(*cacheDir);
+        const std::string folder = cacheFolder(*cacheDir, false);
         const std::vector<CacheEntry> entries = cacheEntries(folder);
         std::uintmax_t total = 0;
         for (const CacheEntry& e : entries) total += e.bytes;

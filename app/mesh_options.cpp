@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 
 namespace ivis::app {
 
@@ -98,13 +99,18 @@ void MeshOptions::fitReachTo(const std::vector<render::MethodPtr>& methods)
     for (const render::MethodPtr& method : methods) checkMethodFitsVolume(*method, options);
 }
 
-std::string cacheFolder(const std::string& cacheDir)
+std::string cacheFolder(const std::string& cacheDir, bool create)
 {
     namespace fs = std::filesystem;
     fs::path folder = ".";
     if (!cacheDir.empty()) folder = cacheDir;
     else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) folder = fs::path(xdg) / "inversevis";
     else if (const char* home = std::getenv("HOME"); home && *home) folder = fs::path(home) / ".cache" / "inversevis";
+    if (!create) {
+        if (!cacheDir.empty() && !fs::is_directory(folder))
+            throw InputError(folder.string() + ": --cache-dir names no folder");
+        return folder.string();
+    }
     std::error_code error;
     fs::create_directories(folder, error);
     if (error || !fs::is_directory(folder))
@@ -121,6 +127,13 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
     const std::string name = core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" +
                              std::to_string(options.resolution) + reach + ".vdb";
     return (std::filesystem::path(folder) / name).string();
+}
+
+bool isVolumeCacheName(const std::string& fileName)
+{
+    // The reach is optional: the names before 2026-11-27 had none.
+    static const std::regex name(R"(.+\.[0-9a-f]{16}\.res[0-9]+(\.reach[0-9.e+-]+)?\.vdb(\.tmp\.[0-9]+\.[0-9]+)?)");
+    return std::regex_match(fileName, name);
 }
 
 }  // namespace ivis::app

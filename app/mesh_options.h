@@ -45,10 +45,11 @@ inline constexpr const char* kCacheDirHelp =
     "Folder for volume caches, shared by every command and the viewer (default: $XDG_CACHE_HOME/inversevis, "
     "else ~/.cache/inversevis)";
 
-/// @brief The folder of volume caches, created when missing: @a cacheDir when given, else
-///        $XDG_CACHE_HOME/inversevis, else $HOME/.cache/inversevis, else ".".
-/// @throw InputError naming the folder when it cannot be created
-std::string cacheFolder(const std::string& cacheDir);
+/// @brief The folder of volume caches: @a cacheDir when given, else $XDG_CACHE_HOME/inversevis,
+///        else $HOME/.cache/inversevis, else "."; created when missing and @a create is set.
+/// @throw InputError naming the folder when it cannot be created, or (not created) when
+///        @a cacheDir names no folder
+std::string cacheFolder(const std::string& cacheDir, bool create = true);
 
 /// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source built
 ///        with @a options: "<stem>.<mesh hash>.res<N>.reach<R>.vdb", so that every geometry of a time
@@ -56,5 +57,10 @@ std::string cacheFolder(const std::string& cacheDir);
 ///        reach (the curved-ray methods' volumes reach further than the others').
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
                               const vdb::VolumeOptions& options);
+
+/// @brief Whether @a fileName is a name defaultVolumePath makes (or made before the reach joined
+///        it), or the temporary name of one being written ("<name>.tmp.<pid>.<n>", core::AtomicFile's):
+///        what `cache` lists and clears.
+bool isVolumeCacheName(const std::string& fileName);
 
 }  // namespace ivis::app

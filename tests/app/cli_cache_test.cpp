@@ -42,6 +42,31 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(test::runCli("cache"), {"subcommand"});
 }
 
+TEST_F(Cli, CacheClearRemovesOnlyCaches)
+{
+    // `cache clear --cache-dir .` in a project folder removed every .vdb in it, the user's own too.
+    const std::string folder = output("project");
+    fs::create_directories(folder);
+    const std::vector<std::string> caches = {"sphere.0123456789abcdef.res48.reach1.vdb",
+                                             "sphere.0123456789abcdef.res48.vdb",  // the name before the reach
+                                             "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.42.0"};
+    const std::vector<std::string> others = {"my_simulation.vdb", "results.vdb.tmp.1.0", "sphere.0123.res48.vdb",
+                                             "notes.txt"};
+    for (const std::string& name : caches) test::writeFile(folder + "/" + name, "v");
+    for (const std::string& name : others) test::writeFile(folder + "/" + name, "v");
+    const test::CliResult listed = test::runCli("cache list --cache-dir " + quoted(folder));
+    ASSERT_EQ(listed.status, 0) << listed.err;
+    EXPECT_NE(listed.out.find("in 3 files"), std::string::npos) << listed.out;
+    ASSERT_EQ(test::runCli("cache clear --cache-dir " + quoted(folder)).status, 0);
+    EXPECT_EQ(contents(folder), (std::vector<std::string>{"my_simulation.vdb", "notes.txt", "results.vdb.tmp.1.0",
+                                                          "sphere.0123.res48.vdb"}));
+    // Listing or clearing a folder creates none.
+    const std::string missing = output("missing");
+    expectBadInput(test::runCli("cache clear --cache-dir " + quoted(missing)), {missing + ": --cache-dir names no folder"});
+    expectBadInput(test::runCli("cache list --cache-dir " + quoted(missing)), {missing + ": --cache-dir names no folder"});
+    EXPECT_FALSE(fs::exists(missing));
+}
+
 // Each far-field reach keeps a cache of its own: switching between the curved-ray methods (reach 1)
 // and the others (0.6) reuses both volumes (one file was rebuilt at every switch).
 TEST_F(Cli, MethodsOfTwoReachesKeepTwoCaches)
