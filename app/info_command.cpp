@@ -38,7 +38,8 @@ void printJson(const core::MeshInfo& info)
                           {"components", a.components},
                           {"min", a.min},
                           {"max", a.max},
-                          {"nan_count", a.nanCount}});
+                          {"nan_count", a.nanCount},
+                          {"shown_by_default", a.shownByDefault}});
     const nlohmann::json out = {{"path", info.path},
                                 {"format", info.format},
                                 {"vertices", info.vertices},
@@ -79,6 +80,7 @@ void printText(const core::MeshInfo& info)
                   << std::right << "  " << a.components << (a.components == 1 ? " component " : " components")
                   << "  " << (a.components == 1 ? "" : "magnitude ") << "min " << a.min << "  max " << a.max;
         if (a.nanCount > 0) std::cout << "  (" << a.nanCount << " NaN)";
+        if (a.shownByDefault) std::cout << "  (shown by default)";
         std::cout << "\n";
     }
     for (const std::string& note : info.report.notes) std::cout << "  note: " << note << "\n";

@@ -133,8 +133,9 @@ MeshInfo describeMesh(const std::string& path)
     info.boundaryEdges = boundaryEdgeCount(mesh);
     info.components = componentCount(mesh);
     info.report = std::move(loaded.report);
+    const DataArray* shown = loaded.field.arrays.empty() ? nullptr : &defaultArray(loaded.field);
     for (const DataArray& array : loaded.field.arrays) {
-        ArrayInfo a{array.name, array.association, array.type, array.components, 0.0, 0.0, 0};
+        ArrayInfo a{array.name, array.association, array.type, array.components, 0.0, 0.0, 0, &array == shown};
         std::tie(a.min, a.max) = finiteRange(array, array.defaultComponent());
         for (std::size_t t = 0; t < array.tuples(); ++t) a.nanCount += std::isnan(array.at(t, kMagnitude)) ? 1 : 0;
         info.arrays.push_back(a);

@@ -163,8 +163,12 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 const DataArray& defaultArray(const SurfaceField& field)
 {
     IVIS_CHECK(!field.arrays.empty());
-    const auto point = std::find_if(field.arrays.begin(), field.arrays.end(),
-                                    [](const DataArray& a) { return a.association == Association::Point; });
+    auto first = [&](auto chosen) { return std::find_if(field.arrays.begin(), field.arrays.end(), chosen); };
+    for (const Association association : {Association::Point, Association::Cell}) {
+        const auto active = first([&](const DataArray& a) { return a.activeScalars && a.association == association; });
+        if (active != field.arrays.end()) return *active;
+    }
+    const auto point = first([](const DataArray& a) { return a.association == Association::Point; });
     return point != field.arrays.end() ? *point : field.arrays.front();
 }
 

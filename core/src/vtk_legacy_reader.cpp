@@ -232,6 +232,7 @@ private:
         }
         mAssociation = association;
         mTuples = n;
+        mActiveScalarsRead = false;
     }
 
     void addArray(std::string name, ValueType type, std::size_t components, const std::string& what)
@@ -257,6 +258,9 @@ private:
                 fail(what + ": " + std::to_string(components) + " components (1 to 4 allowed)");
             if (mIn.peekWord() == "lookup_table") mIn.words();
             addArray(w[1], type(w, 2), components, what);
+            // vtkDataReader makes the section's first SCALARS its active scalars.
+            mMesh.arrays.back().activeScalars = !mActiveScalarsRead;
+            mActiveScalarsRead = true;
         } else {
             const std::size_t components = key == "tensors"                               ? 9
                                    : key == "tensors6"                            ? 6
@@ -303,6 +307,7 @@ private:
     std::size_t mCellCount = 0;
     std::optional<Association> mAssociation;
     std::size_t mTuples = 0;
+    bool mActiveScalarsRead = false;  ///< whether the section's first SCALARS came
 };
 
 }  // namespace

@@ -143,6 +143,8 @@ private:
     void readArrays(const char* section, Association association, std::size_t tuples, const std::string& declaredBy)
     {
         int index = 0;
+        const std::string active = mPiece.child(section).attribute("Scalars").value();
+        bool activeFound = false;
         for (const pugi::xml_node& node : mPiece.child(section).children("DataArray")) {
             std::string name = node.attribute("Name").value();
             if (name.empty()) name = std::string(associationName(association)) + "_array_" + std::to_string(index);
@@ -156,6 +158,8 @@ private:
             DataArray array = readVtkXmlDataArray(mPath, what, node, mEncoding, tuples, declaredBy);
             array.name = name;
             array.association = association;
+            array.activeScalars = !activeFound && !active.empty() && name == active;
+            activeFound = activeFound || array.activeScalars;
             mMesh.arrays.push_back(std::move(array));
         }
     }

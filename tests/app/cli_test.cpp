@@ -385,7 +385,15 @@ TEST_F(Cli, InfoJsonReportsCountsAndPressureScalars)
         EXPECT_EQ(scalars[i].at("association"), "point") << expected[i].name;
         EXPECT_EQ(scalars[i].at("type"), "Float32") << expected[i].name;
         EXPECT_EQ(scalars[i].at("components"), 1) << expected[i].name;
+        EXPECT_EQ(scalars[i].at("shown_by_default"), i == 0) << expected[i].name;  // a PLY: the first
     }
+    // A VMTK file's active scalars (<PointData Scalars="ClippingArray">), the third point array.
+    const CliResult vmtk = runCli("info " + quoted(sharedMesh("vtk/vmtk_aorta_branch_split.vtp")));
+    ASSERT_EQ(vmtk.status, 0) << vmtk.err;
+    const std::size_t marked = vmtk.out.find("  (shown by default)");
+    ASSERT_NE(marked, std::string::npos) << vmtk.out;
+    EXPECT_EQ(vmtk.out.rfind("ClippingArray", marked), vmtk.out.rfind("\n", marked) + 5) << vmtk.out;
+    EXPECT_EQ(vmtk.out.find("(shown by default)", marked + 3), std::string::npos) << vmtk.out;
 }
 
 TEST_F(Cli, InfoReportsTheOpenLeftAtrium)

@@ -115,6 +115,16 @@ TEST(ShowArray, DefaultIsTheFirstPointArrayElseTheFirstCellArray)
     EXPECT_EQ(&defaultArray(f), &f.arrays[0]);
 }
 
+TEST(ShowArray, DefaultIsTheFilesActiveScalarsPointBeforeCell)
+{
+    // The VMTK files name ClippingArray their active scalars; their first point array is 0 everywhere.
+    SurfaceField f = field();  // p, v (point), c, p, a:b (cell)
+    f.arrays[2].activeScalars = true;
+    EXPECT_EQ(&defaultArray(f), &f.arrays[2]);
+    f.arrays[1].activeScalars = true;
+    EXPECT_EQ(&defaultArray(f), &f.arrays[1]);
+}
+
 
 TEST(ArrayPattern, StarAndQuestionMarkMakeAPattern)
 {

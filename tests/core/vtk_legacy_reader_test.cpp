@@ -2,6 +2,7 @@
 // the OFFSETS/CONNECTIVITY lists of version 5, POLYDATA and UNSTRUCTURED_GRID, attribute arrays.
 #include <ivis/core/errors.h>
 #include <ivis/core/mesh_reader.h>
+#include <ivis/core/surface_source.h>
 
 #include "test_support.h"
 #include "vtk_files.h"
@@ -172,6 +173,7 @@ TEST(VtkLegacyReader, StripsNormalsTensorsAndEncodedNames)
             .line("POINT_DATA 4")
             .section("NORMALS normals float", {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "float")
             .section("SCALARS wall%20shear%20stress float 2\nLOOKUP_TABLE default", {1, 2, 3, 4, 5, 6, 7, 8}, "float")
+            .section("SCALARS second float 1\nLOOKUP_TABLE default", {1, 2, 3, 4}, "float")
             .line("CELL_DATA 1")
             .section("TENSORS stress double", {1, 0, 0, 0, 2, 0, 0, 0, 3}, "double")
             .str();
@@ -182,12 +184,15 @@ TEST(VtkLegacyReader, StripsNormalsTensorsAndEncodedNames)
     EXPECT_EQ(field.mesh.triangles[1], (std::array<std::uint32_t, 3>{2, 1, 3}));
     EXPECT_EQ(field.triangleCells, (std::vector<std::uint32_t>{0, 0}));
     EXPECT_EQ(field.values, (std::vector<float>{2, 4, 6, 8}));
-    ASSERT_EQ(field.arrays.size(), 3u);
+    ASSERT_EQ(field.arrays.size(), 4u);
     EXPECT_EQ(field.arrays[0].components, 3);
     EXPECT_EQ(field.arrays[1].name, "wall shear stress");
     EXPECT_EQ(field.arrays[1].components, 2);
-    EXPECT_EQ(field.arrays[2].components, 9);
-    EXPECT_EQ(field.arrays[2].association, Association::Cell);
+    EXPECT_EQ(field.arrays[3].components, 9);
+    EXPECT_EQ(field.arrays[3].association, Association::Cell);
+    // The section's first SCALARS are its active scalars (vtkDataReader's), shown by default.
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(field.arrays[i].activeScalars, i == 1) << i;
+    EXPECT_EQ(loadSurface(dir.file("s.vtk")).name, "wall shear stress magnitude");
 }
 
 TEST(VtkLegacyReader, UnstructuredTetrahedraShowTheirBoundary)

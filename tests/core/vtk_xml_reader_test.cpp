@@ -2,6 +2,7 @@
 // point and cell arrays, cell numbering, volume boundaries, VMTK's and the series' real files.
 #include <ivis/core/errors.h>
 #include <ivis/core/mesh_reader.h>
+#include <ivis/core/surface_source.h>
 #include <ivis/core/show_array.h>
 
 #include "test_support.h"
@@ -505,6 +506,10 @@ TEST(VtkXmlReader, VmtkCompressedInlineWithInt64Connectivity)
     EXPECT_NEAR(info.arrays[2].max, 2174.4532371, 1e-7);
     EXPECT_NEAR(info.arrays[3].min, 0.93662568108, 1e-6);  // |normal|
     EXPECT_NEAR(info.arrays[3].max, 1.0000000407, 1e-6);
+    // <PointData Scalars="ClippingArray">: the active scalars, shown when no array is chosen.
+    const SurfaceField shown = loadSurface(split);
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(shown.arrays[i].activeScalars, i == 2) << i;
+    EXPECT_EQ(shown.name, "ClippingArray");
 
     // The metrics file is the same surface with two more arrays.
     const SurfaceField a = readMesh(split);

@@ -28,6 +28,9 @@ struct DataArray {
     ValueType type = ValueType::Float32;
     int components = 1;
     std::vector<double> values;  ///< tuple after tuple: values[tuple * components + component]
+    /// The file's active scalars of its association, which ParaView colours by: a VTK XML file's
+    /// PointData / CellData "Scalars" attribute, a legacy file's first SCALARS of the section.
+    bool activeScalars = false;
 
     /// @brief Number of tuples.
     std::size_t tuples() const { return components > 0 ? values.size() / std::size_t(components) : 0; }

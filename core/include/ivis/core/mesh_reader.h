@@ -45,6 +45,7 @@ struct ArrayInfo {
     double min = 0.0;  ///< finite minimum of the default component (DataArray::defaultComponent)
     double max = 0.0;
     std::size_t nanCount = 0;  ///< tuples with a NaN component
+    bool shownByDefault = false;  ///< the array shown when none is chosen (core::defaultArray)
 };
 
 /// @brief What `inversevis info` prints about a mesh file.

@@ -20,8 +20,9 @@ namespace ivis::core {
 ///        not exist
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
 
-/// @brief The array shown when a file carries arrays and none is chosen: the first point array,
-///        else the first cell array (ParaView's habit).
+/// @brief The array shown when a file carries arrays and none is chosen: the active point scalars,
+///        else the active cell scalars (DataArray::activeScalars: what ParaView colours by), else
+///        the first point array, else the first cell array.
 /// @note Call only when field.arrays is not empty.
 const DataArray& defaultArray(const SurfaceField& field);
 

@@ -20,8 +20,8 @@ struct SurfaceLoadOptions {
 };
 
 /// @brief Reads the file (or generates the scene), logs the reader's notes and dropped degenerate
-///        triangles, shows the file's first array when it carries arrays and none is chosen (and
-///        says so), caps holes when asked, normalises into [-1,1]^3 and, when asked, puts hot
+///        triangles, shows the file's default array (core::defaultArray) when it carries arrays
+///        and none is chosen (and says so), caps holes when asked, normalises into [-1,1]^3 and, when asked, puts hot
 ///        spots on it as its scalar ("hotspots", in [0, 1]; cap vertices included, caps are never
 ///        coloured).
 /// @throw InputError for bad files or scene names, and for a time series (a .pvd, whose message
