@@ -149,7 +149,9 @@ Command addEvaluateCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
         const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
-        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}});
+        // --json may name the results --resume reads: that file is meant to be rewritten.
+        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}},
+                         readFiles(options->meshes, "", "", ""));
         if (!options->pictures.empty()) {
             checkOutputFolder(options->pictures);
             if (std::filesystem::exists(options->pictures) && !std::filesystem::is_directory(options->pictures))

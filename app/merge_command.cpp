@@ -55,7 +55,9 @@ Command addMergeCommand(CLI::App& app)
     command->add_option("--markdown", options->markdown, "The tables as Markdown (also printed)");
 
     return {command, [options] {
-        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}});
+        std::vector<InputFile> parts;
+        for (const std::string& part : options->parts) parts.push_back({part, "a part"});
+        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}}, parts);
         nlohmann::json results = nlohmann::json::object();
         ReportLayout layout;
         std::set<std::string> methodsSeen;

@@ -79,8 +79,12 @@ Command addOptimizeCommand(CLI::App& app)
                           {options->json, "--json", {}},
                           {options->plot, "--plot", {".png"}},
                           {options->exr, "--exr", {".exr"}},
-                          {options->cameraOut, "--camera-out", {}},
-                          {options->viewOut, "--view-out", {}}});
+                          {options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut,
+                           options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
+                          {options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
+                           options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out", {}}},
+                         readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,
+                                   options->view.viewFile));
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});

@@ -1,6 +1,7 @@
 #include "output_files.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/surface_source.h>
 
 #include <algorithm>
 #include <cctype>
@@ -15,8 +16,23 @@ void checkOutputFolder(const std::string& path)
         throw InputError(path + ": cannot write (folder '" + folder.string() + "' does not exist)");
 }
 
-void checkOutputFiles(const std::vector<OutputFile>& outputs)
+std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const std::string& scalarFile,
+                                 const std::string& cameraFile, const std::string& viewFile)
 {
+    std::vector<InputFile> inputs;
+    for (const std::string& mesh : meshes)
+        if (mesh.rfind(core::kScenePrefix, 0) != 0) inputs.push_back({mesh, "the mesh"});
+    inputs.push_back({scalarFile, "--scalar-file"});
+    inputs.push_back({cameraFile, "--camera"});
+    inputs.push_back({viewFile, "--view"});
+    return inputs;
+}
+
+void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs)
+{
+    auto fileOf = [](const std::string& path) {
+        return std::filesystem::weakly_canonical(std::filesystem::absolute(path));
+    };
     std::vector<std::pair<std::filesystem::path, const OutputFile*>> seen;
     for (const OutputFile& output : outputs) {
         if (output.path.empty()) continue;
@@ -33,11 +49,15 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs)
                 throw InputError(output.path + ": " + output.option + " writes " + names + " files (name it so)");
             }
         }
-        const std::filesystem::path file = std::filesystem::weakly_canonical(std::filesystem::absolute(output.path));
+        const std::filesystem::path file = fileOf(output.path);
         for (const auto& [other, named] : seen)
             if (other == file)
                 throw InputError(output.path + ": named by both " + named->option + " and " + output.option +
                                  " (one would overwrite the other)");
+        for (const InputFile& input : inputs)
+            if (!input.path.empty() && fileOf(input.path) == file)
+                throw InputError(output.path + ": " + output.option + " would overwrite " + input.option +
+                                 ", which this command reads");
         seen.emplace_back(file, &output);
     }
 }

@@ -21,10 +21,21 @@ struct OutputFile {
 /// @throw InputError "<path>: cannot write (folder '<folder>' does not exist)"
 void checkOutputFolder(const std::string& path);
 
+/// @brief A file a command reads: its path (empty: not given) and what gives it ("the mesh", "--scalar-file").
+struct InputFile {
+    std::string path;
+    std::string option;
+};
+
+/// @brief The files a render or an optimisation reads: its meshes (a .pvd, not its steps),
+///        --scalar-file, --camera and --view (each empty when not given).
+std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const std::string& scalarFile,
+                                 const std::string& cameraFile, const std::string& viewFile);
+
 /// @brief Checks each of @a outputs that is asked for: its folder exists, it is not a folder, its name ends in one of
-///        its extensions (in any case: -o writes PNG, so "x.jpg" would be a PNG misnamed), and no two
-///        name the same file (one would overwrite the other).
+///        its extensions (in any case: -o writes PNG, so "x.jpg" would be a PNG misnamed), no two
+///        name the same file (one would overwrite the other), and none names one of @a inputs.
 /// @throw InputError naming the file and the problem
-void checkOutputFiles(const std::vector<OutputFile>& outputs);
+void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs = {});
 
 }  // namespace ivis::app

@@ -110,18 +110,23 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
+        // One picture writes its camera beside it unless told where (a series writes none unasked).
+        const bool defaultCamera = options->cameraOut.empty() && !core::isSeries(options->sources, options->mesh.load);
+        checkOutputFiles({{options->output, "-o", {".png"}},
+                          {options->exr, "--exr", {".exr"}},
+                          {options->statsJson, "--stats-json", {}},
+                          {defaultCamera ? options->output + ".camera.json" : options->cameraOut,
+                           defaultCamera ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
+                          {options->legendOnly, "--legend-only", {".svg", ".png"}},
+                          {options->viewOut, "--view-out", {}},
+                          {options->tearMap, "--tear-map", {".png"}},
+                          {options->unseenMap, "--unseen-map", {".png"}}},
+                         readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,
+                                   options->view.viewFile));
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
         const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
         const bool chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
-        checkOutputFiles({{options->output, "-o", {".png"}},
-                          {options->exr, "--exr", {".exr"}},
-                          {options->statsJson, "--stats-json", {}},
-                          {options->cameraOut, "--camera-out", {}},
-                          {options->legendOnly, "--legend-only", {".svg", ".png"}},
-                          {options->viewOut, "--view-out", {}},
-                          {options->tearMap, "--tear-map", {".png"}},
-                          {options->unseenMap, "--unseen-map", {".png"}}});
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         SeriesRenderRequest frameRange;  // --frames, checked before anything is read

@@ -141,6 +141,9 @@ ViewFile detail::parseViewFile(const std::string& path, const std::string& text)
     } catch (const std::exception& e) {
         std::string why = e.what();
         std::replace(why.begin(), why.end(), '\n', ' ');  // one line, whatever the parser quotes
+        // nlohmann's "[json.exception.out_of_range.403] key 'camera' not found": the words only.
+        if (why.rfind("[json.exception.", 0) == 0 && why.find("] ") != std::string::npos)
+            why = why.substr(why.find("] ") + 2);
         throw InputError(path + ": bad view file (" + why + ")");
     }
 }

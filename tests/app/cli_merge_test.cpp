@@ -45,6 +45,11 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
 
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("p1.json"))),
                    {"sphere:front is in", "p1.json too"});
+    // The tables written over a part (it was replaced, status 0).
+    const std::string before = test::readFile(output("p1.json"));
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " --markdown " + quoted(output("p1.json"))),
+                   {"p1.json: --markdown would overwrite a part, which this command reads"});
+    EXPECT_EQ(test::readFile(output("p1.json")), before);
     expectBadInput(test::runCli(common + " --only sphere"), {"--only 'sphere': expected MESH:METHOD"});
     expectBadInput(test::runCli(common + " --only cube:front"), {"no mesh 'cube'"});
     expectBadInput(test::runCli(common + " --only sphere:mirror"), {"method 'mirror' is not among --methods"});

@@ -310,6 +310,23 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     expectRejected(render("scene:sphere", "--camera-out " + quoted(output("c.json")) + " --view-out " +
                                               quoted(output(".") + "/c.json")),
                    {"named by both --camera-out and --view-out"});
+    // The files a command writes by itself, and the files it reads, are never overwritten.
+    expectRejected(render("scene:sphere", "--stats-json " + quoted(output("x.png.camera.json"))),
+                   {"x.png.camera.json: named by both --stats-json and the camera file (-o's name + .camera.json)"});
+    expectRejected("optimize scene:sphere --volume-res 48 -o " + quoted(output("b.png")) + " --json " +
+                       quoted(output("b.png.view.json")),
+                   {"b.png.view.json: named by both --json and the view file (-o's name + .view.json)"});
+    const std::string mesh = input("m.obj");
+    test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string values = input("v.txt");
+    test::writeFile(values, "1\n2\n3\n");
+    expectRejected(render(mesh, "--scalar-file " + quoted(values) + " --stats-json " + quoted(values)),
+                   {values + ": --stats-json would overwrite --scalar-file, which this command reads"});
+    expectRejected(render(mesh, "--stats-json " + quoted(mesh)),
+                   {mesh + ": --stats-json would overwrite the mesh, which this command reads"});
+    test::writeFile(input("v.json"), "{}");
+    expectRejected(render("scene:sphere", "--view-out " + quoted(input("v.json")) + " --view " + quoted(input("v.json"))),
+                   {"--view-out would overwrite --view"});
     fs::create_directory(input("folder.png"));
     expectRejected(render("scene:sphere", "--tear-map " + quoted(input("folder.png"))),
                    {input("folder.png") + ": --tear-map names a folder, not a file"});
