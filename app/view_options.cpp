@@ -34,7 +34,10 @@ void ViewOptions::addTo(CLI::App& command)
         ->excludes("--phi")
         ->excludes("--fov");
     command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
-    command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")->capture_default_str();
+    // Checked here: the renderer's own check came after the volume was built and the rule chosen.
+    command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")
+        ->check(CLI::Range(1, 1024))
+        ->capture_default_str();
     method.addTo(command);
     std::string names;
     for (const std::string& name : core::colormapNames()) names += (names.empty() ? "" : ", ") + name;

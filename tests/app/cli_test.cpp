@@ -893,6 +893,8 @@ TEST_F(Cli, OptionsRejectNaNAndValuesOutOfRange)
         expectRejected("optimize scene:sphere " + std::string(option) + " -o " + quoted(output("best.png")), {name});
     }
     expectRejected(render("scene:sphere", "--min-coherence nan"), {"--min-coherence"});
+    // Refused before the volume is built (it was refused after, and left a cache and three lines).
+    expectRejected(render("scene:sphere", "--spp 0"), {"--spp"});
 }
 
 }  // namespace
