@@ -106,8 +106,11 @@ TEST(VolumeCache, TruncatedFileIsDetectedAndRebuilt)
     fs::resize_file(path, fs::file_size(path) / 2);
     EXPECT_THROW(readVolume(path), InputError);
     CacheOutcome outcome{};
-    loadOrBuildVolume(mesh, smallOptions(), path, nullptr, &outcome);
+    std::string reason;
+    loadOrBuildVolume(mesh, smallOptions(), path, nullptr, &outcome, &reason);
     EXPECT_EQ(outcome, CacheOutcome::RebuiltCorrupt);
+    // Told by the checksum, before OpenVDB reads a byte (it said "Cannot read grid. Grid type is not registered.").
+    EXPECT_NE(reason.find("no content checksum"), std::string::npos) << reason;
     EXPECT_NO_THROW(readVolume(path));
 }
 

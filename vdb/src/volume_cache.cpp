@@ -229,11 +229,11 @@ void checkVolumeChecksum(const std::string& path)
         throw InputError(path + ": corrupt or truncated volume file (content checksum mismatch)");
 }
 
-SurfaceVolume readVolume(const std::string& path)
+namespace {
+
+/// readVolume once the file's checksum has been checked.
+SurfaceVolume readCheckedVolume(const std::string& path)
 {
-    detail::initializeOpenVdb();
-    if (!fs::exists(path)) throw InputError(path + ": file not found");
-    checkVolumeChecksum(path);
     SurfaceVolume volume;
     CacheKey key;
     try {
@@ -276,6 +276,16 @@ SurfaceVolume readVolume(const std::string& path)
     return volume;
 }
 
+}  // namespace
+
+SurfaceVolume readVolume(const std::string& path)
+{
+    detail::initializeOpenVdb();
+    if (!fs::exists(path)) throw InputError(path + ": file not found");
+    checkVolumeChecksum(path);
+    return readCheckedVolume(path);
+}
+
 SurfaceVolume loadOrBuildVolume(const core::TriangleMesh& mesh, const VolumeOptions& options,
                                 const std::string& path, core::Interrupter* interrupter,
                                 CacheOutcome* outcome, std::string* reason)
@@ -285,9 +295,11 @@ SurfaceVolume loadOrBuildVolume(const core::TriangleMesh& mesh, const VolumeOpti
     std::string why;
     if (fs::exists(path)) {
         try {
+            // The checksum first: a truncated or damaged file never reaches OpenVDB's reader.
+            checkVolumeChecksum(path);
             why = staleReason(readCacheKey(path), mesh, options);
             if (why.empty()) {
-                SurfaceVolume cached = readVolume(path);
+                SurfaceVolume cached = readCheckedVolume(path);
                 if (outcome) *outcome = CacheOutcome::Reused;
                 if (reason) reason->clear();
                 return cached;
