@@ -1,5 +1,7 @@
 #include "viewer_options.h"
 
+#include "../output_files.h"
+
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
 
@@ -53,6 +55,10 @@ void ViewerOptions::validate()
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
+    checkOutputFiles({{screenshot, "--screenshot", {".png"}},
+                      {regionPng, "--region-png", {".png"}},
+                      {uiScreenshot, "--ui-screenshot", {".png"}}},
+                     readFiles(sources, mesh.load.read.scalarFile, view.cameraFile, view.viewFile));
     mesh.fitReachTo({view.renderOptions().method});
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
         throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");

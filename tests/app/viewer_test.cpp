@@ -411,6 +411,22 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
         EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
         EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     }
+    // Outputs are checked as the CLI checks them: named for their format, apart, not an input.
+    writeFile(dir.file("v.png"), "{}");
+    const std::string sphere = "scene:sphere --volume-res 32 --cache-dir '" + dir.path() + "' ";
+    for (const auto& [arguments, problem] : std::vector<std::pair<std::string, std::string>>{
+             {sphere + "--screenshot '" + dir.file("s.jpg") + "'", "s.jpg: --screenshot writes .png files"},
+             {sphere + "--screenshot '" + dir.file("s.png") + "' --region-png '" + dir.file("s.png") + "'",
+              "s.png: named by both --screenshot and --region-png"},
+             {sphere + "--view '" + dir.file("v.png") + "' --screenshot '" + dir.file("v.png") + "'",
+              "v.png: --screenshot would overwrite --view, which this command reads"}}) {
+        const RunResult run = runViewer(arguments, false, dir);
+        EXPECT_EQ(run.status, 2) << run.output;
+        EXPECT_NE(run.output.find(problem), std::string::npos) << run.output;
+        EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("s.jpg")));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("s.png")));
     // No display at all: a clear error, not a crash.
     const RunResult run = runViewer("scene:sphere --screenshot '" + dir.file("x.png") + "' --cache-dir '" + dir.path() + "'",
                                     false, dir);
