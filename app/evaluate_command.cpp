@@ -179,6 +179,7 @@ Command addEvaluateCommand(CLI::App& app)
                 core::loadSurface(mesh, options->mesh.load);
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
+        const std::string cacheFolder = optionalCacheFolder(options->cacheDir);
 
         for (const std::string& mesh : options->meshes) {
             std::vector<std::string> methods;  // of this mesh, as --only selects them
@@ -194,7 +195,7 @@ Command addEvaluateCommand(CLI::App& app)
             progress.setContext(meshLabel);
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(cacheFolder(options->cacheDir), mesh, field.mesh, volumeOptions),
+                field.mesh, volumeOptions, defaultVolumePath(cacheFolder, mesh, field.mesh, volumeOptions),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);

@@ -5,12 +5,17 @@
 
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/log.h>
 #include <ivis/render/method_registry.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <regex>
+
+#include <unistd.h>
 
 namespace ivis::app {
 
@@ -119,9 +124,24 @@ std::string cacheFolder(const std::string& cacheDir, bool create)
     return folder.string();
 }
 
+std::string optionalCacheFolder(const std::string& cacheDir)
+{
+    std::string why;
+    try {
+        const std::string folder = cacheFolder(cacheDir);
+        if (::access(folder.c_str(), W_OK) == 0) return folder;
+        why = "cache folder " + folder + " cannot be written (" + std::strerror(errno) + ")";
+    } catch (const InputError& e) {
+        why = e.what();
+    }
+    core::logWarning(why + ": the volume is built for this run and not kept (--cache-dir chooses another folder)");
+    return "";
+}
+
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
                               const vdb::VolumeOptions& options)
 {
+    if (folder.empty()) return "";
     char reach[32];
     std::snprintf(reach, sizeof reach, ".reach%g", options.farFieldReach);
     const std::string name = core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" +

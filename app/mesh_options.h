@@ -51,7 +51,13 @@ inline constexpr const char* kCacheDirHelp =
 ///        @a cacheDir names no folder
 std::string cacheFolder(const std::string& cacheDir, bool create = true);
 
-/// @brief Default cache file inside @a folder for the normalised mesh @a mesh of @a source built
+/// @brief The cache folder of a command that can do without one (render, optimize, evaluate, the
+///        viewer; not sdf, whose output the cache is): cacheFolder's, or "" with a warning when
+///        it cannot be created or written (a read-only home on a cluster), so that the volume is
+///        built for the run and not kept.
+std::string optionalCacheFolder(const std::string& cacheDir);
+
+/// @brief Default cache file inside @a folder ("" for the folder "": no cache) for the normalised mesh @a mesh of @a source built
 ///        with @a options: "<stem>.<mesh hash>.res<N>.reach<R>.vdb", so that every geometry of a time
 ///        series (and every mesh of one name) keeps a cache of its own, and so does each far-field
 ///        reach (the curved-ray methods' volumes reach further than the others').

@@ -116,7 +116,7 @@ Command addOptimizeCommand(CLI::App& app)
         render::RenderOptions renderOptions = options->view.renderOptions(field);
         const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.scale.range;
         const std::string source = isSeries ? series->source() : options->mesh.source;
-        const std::string folder = cacheFolder(options->cacheDir);
+        const std::string folder = optionalCacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(source));
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(

@@ -140,7 +140,7 @@ Command addRenderCommand(CLI::App& app)
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
-        const std::string folder = cacheFolder(options->cacheDir);
+        const std::string folder = optionalCacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));
         if (core::isSeries(options->sources, options->mesh.load)) {

@@ -124,7 +124,7 @@ void ViewerApp::startLoading()
 {
     const vdb::VolumeOptions volumeOptions = mOptions.mesh.volumeOptions();
     const std::string cachePath =
-        defaultVolumePath(cacheFolder(mOptions.cacheDir), mOptions.mesh.source, mField->mesh, volumeOptions);
+        defaultVolumePath(optionalCacheFolder(mOptions.cacheDir), mOptions.mesh.source, mField->mesh, volumeOptions);
     DenseSliceOptions slices;
     slices.budgetBytes = std::size_t(mOptions.textureBudgetMiB) << 20;
     GLint maxSize = 0;

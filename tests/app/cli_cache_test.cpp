@@ -42,6 +42,25 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(test::runCli("cache"), {"subcommand"});
 }
 
+TEST_F(Cli, AnUnusableCacheFolderBuildsAndKeepsNothing)
+{
+    // A read-only home on a cluster: render refused to run ("cache folder ... cannot be created").
+    const std::string file = input("plain-file");
+    test::writeFile(file, "x");
+    const std::string folder = file + "/cache";  // cannot be created, even by root
+    const test::CliResult result =
+        test::runCli("render scene:sphere --volume-res 48 --res 32x32 --cache-dir " + quoted(folder) + " -o " +
+                     quoted(output("x.png")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find("warning: cache folder " + folder + " cannot be created"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("the volume is built for this run and not kept"), std::string::npos) << result.err;
+    EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"x.png", "x.png.camera.json"}));
+    EXPECT_EQ(contents(mInputs.path()), std::vector<std::string>{"plain-file"});
+    // sdf, whose output the cache is, still refuses.
+    expectBadInput(test::runCli("sdf scene:sphere --volume-res 48 --cache-dir " + quoted(folder)),
+                   {"cache folder " + folder + " cannot be created"});
+}
+
 TEST_F(Cli, CacheClearRemovesOnlyCaches)
 {
     // `cache clear --cache-dir .` in a project folder removed every .vdb in it, the user's own too.

@@ -313,7 +313,7 @@ SurfaceVolume loadOrBuildVolume(const core::TriangleMesh& mesh, const VolumeOpti
         }
     }
     SurfaceVolume volume = buildSurfaceVolume(mesh, options, interrupter);
-    writeVolume(volume, path);
+    if (!path.empty()) writeVolume(volume, path);
     if (outcome) *outcome = result;
     if (reason) *reason = why;
     return volume;

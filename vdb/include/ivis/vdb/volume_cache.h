@@ -33,7 +33,8 @@ void checkVolumeChecksum(const std::string& path);
 SurfaceVolume readVolume(const std::string& path);
 
 /// @brief Reuses the cache at @a path when it matches the mesh and options, else builds the
-///        volume and (re)writes the cache. A corrupt or stale cache is reported and rebuilt.
+///        volume and (re)writes the cache; an empty @a path builds and keeps nothing. A corrupt
+///        or stale cache is reported and rebuilt.
 /// @param reason optional output: why the cache was not reused ("" when reused or absent)
 SurfaceVolume loadOrBuildVolume(const core::TriangleMesh& mesh, const VolumeOptions& options,
                                 const std::string& path, core::Interrupter* interrupter = nullptr,
