@@ -5,6 +5,7 @@
 #include "../version.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/core/surface_series.h>
 #include <ivis/core/surface_source.h>
 
@@ -31,6 +32,8 @@ int main(int argc, char** argv)
         app.parse(argc, argv);
         options.takeSources();
         options.validate();
+        // Headless, Ctrl-C ends the run between frames and leaves no screenshot (a window closes).
+        if (options.headless()) ivis::core::installInterruptHandler();
         if (const ivis::app::ViewFile* view = options.view.view())
             options.mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {

@@ -9,6 +9,7 @@
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/method_json.h>
@@ -27,6 +28,7 @@
 #include <cstdio>
 #include <iostream>
 #include <thread>
+#include <vector>
 
 namespace ivis::app {
 namespace {
@@ -195,6 +197,7 @@ void ViewerApp::waitForScene()
     while (!pollLoader()) {
         glfwPollEvents();
         if (glfwWindowShouldClose(mWindow)) throw Cancelled("window closed while loading");
+        if (core::interruptRequested()) throw Cancelled("interrupted");
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
 }
@@ -246,7 +249,9 @@ void ViewerApp::takeNumberedScreenshot()
     const std::string path =
         "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mScreenshots) + ".png";
     try {
-        writeScreenshot(path, "");
+        core::AtomicFileSet files;
+        writeScreenshot(files, path, "");
+        files.commit();
         mStatus = "wrote " + path;
     } catch (const std::exception& e) {
         mStatus = e.what();
@@ -273,15 +278,21 @@ void ViewerApp::saveView()
     }
 }
 
-void ViewerApp::writeScreenshot(const std::string& path, const std::string& regionPath)
+void ViewerApp::writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath)
 {
     const core::Image picture = mRenderer->readColour();
     const bool legend = mShowLegend && mField->hasScalar();
-    core::writePng(legend ? core::withColorBar(picture, legendContent(), mLegendSide, glm::vec4(mShading.background, 1.0f))
-                          : picture,
-                   path, false);
+    files.write(path, [&](const std::string& temporary) {
+        core::writePng(legend ? core::withColorBar(picture, legendContent(), mLegendSide,
+                                                   glm::vec4(mShading.background, 1.0f))
+                              : picture,
+                       temporary, false);
+    });
     if (!regionPath.empty()) {
-        core::writePng(regionImage(mRenderer->readRegion(), mRenderer->width(), mRenderer->height()), regionPath, false);
+        files.write(regionPath, [&](const std::string& temporary) {
+            core::writePng(regionImage(mRenderer->readRegion(), mRenderer->width(), mRenderer->height()), temporary,
+                           false);
+        });
     }
 }
 
@@ -297,8 +308,11 @@ int ViewerApp::run()
 int ViewerApp::runHeadlessScreenshot()
 {
     waitForScene();
-    // A series: every step in turn, as the time slider shows it, one numbered screenshot each.
+    // A series: every step in turn, as the time slider shows it, one numbered screenshot each,
+    // renamed into place together once all are written (Ctrl-C leaves none, as render's frames).
     const std::size_t steps = mSeries ? mSeries->steps().size() : 1;
+    core::AtomicFileSet files;
+    std::vector<std::string> written;
     for (std::size_t step = 0; step < steps; ++step) {
         if (step > 0) showStep(step);
         if (mLoader) waitForScene();
@@ -311,16 +325,21 @@ int ViewerApp::runHeadlessScreenshot()
             mRenderer->blitTo(0, 0, fbWidth, fbHeight);
             glfwSwapBuffers(mWindow);
             glfwPollEvents();
+            if (core::interruptRequested()) throw Cancelled("interrupted");
         }
         const auto numbered = [&](const std::string& path) {
             return mSeries && !path.empty() ? framePath(path, step, steps) : path;
         };
         const std::string path = numbered(mOptions.screenshot);
-        writeScreenshot(path, numbered(mOptions.regionPng));
-        std::printf("inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n", path.c_str(),
-                    mOptions.width, mOptions.height, mMethod->name().c_str(), mOptions.frames, mLastFrameMs,
-                    mGlRenderer.c_str());
+        writeScreenshot(files, path, numbered(mOptions.regionPng));
+        char line[512];
+        std::snprintf(line, sizeof line, "inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n",
+                      path.c_str(), mOptions.width, mOptions.height, mMethod->name().c_str(), mOptions.frames,
+                      mLastFrameMs, mGlRenderer.c_str());
+        written.push_back(line);
     }
+    files.commit();
+    for (const std::string& line : written) std::fputs(line.c_str(), stdout);
     return 0;
 }
 
@@ -344,6 +363,7 @@ int ViewerApp::runBenchmark()
         glfwSwapBuffers(mWindow);
         glfwPollEvents();
         if (glfwWindowShouldClose(mWindow)) break;
+        if (core::interruptRequested()) throw Cancelled("interrupted");
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("inversevis-view: benchmark: %d frames orbiting 360 degrees at theta %.0f, %dx%d, %s, %s: %.2f fps "

@@ -13,6 +13,7 @@
 #include "viewer_options.h"
 #include "../series_survey.h"
 
+#include <ivis/core/atomic_file.h>
 #include <ivis/core/surface_field.h>
 #include <ivis/core/surface_series.h>
 #include <ivis/render/method.h>
@@ -64,7 +65,9 @@ private:
     /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
     void frameOrbit(int width, int height);
     void renderFrame(int width, int height);
-    void writeScreenshot(const std::string& path, const std::string& regionPath);
+    /// Writes the picture shown (with its colour bar) to @a path and, unless empty, its regions to
+    /// @a regionPath, into @a files (renamed into place when the caller commits them).
+    void writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath);
     /// Writes inversevis-view-<mesh>-<n>.png and reports it (or the error) in the panel.
     void takeNumberedScreenshot();
     /// Writes the view file of the picture shown (inversevis-view-<stem>-<n>.view.json).

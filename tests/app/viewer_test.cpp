@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -323,6 +324,33 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
 
 // A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
 // shows meanwhile); back on the artery, the artery's cache is read again.
+TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    // Killed by the signal, it left the steps written so far (s_0000.png, s_0001.png).
+    TempDir dir;
+    const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
+    const std::string log = dir.file("viewer.log");
+    const std::string script =
+        "xvfb-run -a -s '-screen 0 1280x1024x24' '" + std::string(IVIS_VIEW_PATH) + "' '" + pvd +
+        "' --width 200 --height 200 --volume-res 64 --frames 20 --cache-dir '" + dir.path() + "' --screenshot '" +
+        dir.file("s.png") + "' >'" + log + "' 2>&1 & pid=$!; for i in $(seq 1 1200); do grep -q 'step 2/5' '" + log +
+        "' && break; sleep 0.1; done; pkill -INT -f -- '--cache-dir " + dir.path() + "'; wait $pid; echo $? >'" +
+        dir.file("status") + "'";
+    writeFile(dir.file("run.sh"), script + "\n");
+    ASSERT_EQ(std::system(("bash '" + dir.file("run.sh") + "'").c_str()), 0);
+    const std::string output = readFile(log);
+    ASSERT_NE(output.find("step 2/5"), std::string::npos) << output;
+    EXPECT_EQ(readFile(dir.file("status")), "130\n") << output;
+    EXPECT_NE(output.find("inversevis-view: interrupted"), std::string::npos) << output;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+        EXPECT_EQ(entry.path().filename().string().find("s_"), std::string::npos) << entry.path() << " left behind";
+#endif
+}
+
 TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
 {
 #ifndef IVIS_VIEW_PATH
