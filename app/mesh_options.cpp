@@ -28,7 +28,8 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
         command.add_option("mesh", source, help)->required();
     auto* scalar = command.add_option("--scalar", load.read.scalarName,
                                       "Point or cell array to show: NAME (a vector by its magnitude), "
-                                      "NAME:magnitude or NAME:0, NAME:1, ... for one component");
+                                      "NAME:magnitude or NAME:0, NAME:1, ... for one component; cell:NAME or "
+                                      "point:NAME for the one of that association");
     auto* scalarFile =
         command
             .add_option("--scalar-file", load.read.scalarFile,

@@ -8,17 +8,20 @@
 #include <charconv>
 #include <cctype>
 #include <limits>
+#include <optional>
 #include <string_view>
 
 namespace ivis::core {
 namespace {
 
-/// The array named @a name, a point array before a cell array; nullptr when there is none.
-const DataArray* findArray(const SurfaceField& field, const std::string& name)
+/// The array named @a name (of association @a only, when given), a point array before a cell
+/// array; nullptr when there is none.
+const DataArray* findArray(const SurfaceField& field, const std::string& name,
+                           std::optional<Association> only = std::nullopt)
 {
     const DataArray* found = nullptr;
     for (const DataArray& a : field.arrays) {
-        if (a.name == name &&
+        if (a.name == name && (!only || a.association == *only) &&
             (found == nullptr || (found->association == Association::Cell && a.association == Association::Point))) {
             found = &a;
         }
@@ -29,10 +32,13 @@ const DataArray* findArray(const SurfaceField& field, const std::string& name)
 std::string availableArrays(const SurfaceField& field)
 {
     std::string list;
+    bool twoOfAName = false;
     for (const DataArray& a : field.arrays) {
         list += (list.empty() ? "" : ", ") + a.name + " (" + associationName(a.association) +
                 (a.components > 1 ? ", " + std::to_string(a.components) + " components" : "") + ")";
+        twoOfAName = twoOfAName || findArray(field, a.name) != &a;
     }
+    if (twoOfAName) list += " (of a point and a cell array of one name, cell:NAME chooses the cell array)";
     return list.empty() ? "none" : list;
 }
 
@@ -107,14 +113,29 @@ std::vector<std::string> arraysMatching(const SurfaceField& field, const std::st
     return names;
 }
 
+std::string qualifiedArrayName(const DataArray& array)
+{
+    return std::string(associationName(array.association)) + ":" + array.name;
+}
+
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 {
-    const DataArray* array = findArray(field, spec);
+    // "point:" or "cell:" before the name chooses the association, unless the whole names an array.
+    std::string name = spec;
+    std::optional<Association> only;
+    for (const Association association : {Association::Point, Association::Cell}) {
+        const std::string prefix = std::string(associationName(association)) + ":";
+        if (findArray(field, spec) == nullptr && spec.size() > prefix.size() && spec.rfind(prefix, 0) == 0) {
+            name = spec.substr(prefix.size());
+            only = association;
+        }
+    }
+    const DataArray* array = findArray(field, name, only);
     int component = array != nullptr ? array->defaultComponent() : kMagnitude;
-    const std::size_t colon = spec.rfind(':');
+    const std::size_t colon = name.rfind(':');
     if (array == nullptr && colon != std::string::npos) {
-        array = findArray(field, spec.substr(0, colon));
-        const std::string part = spec.substr(colon + 1);
+        array = findArray(field, name.substr(0, colon), only);
+        const std::string part = name.substr(colon + 1);
         if (array != nullptr && part != "magnitude") {
             const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), component);
             if (ec != std::errc() || end != part.data() + part.size() || component < 0 ||

@@ -49,7 +49,7 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         }
         if (!field.hasScalar() && options.hotSpots == 0 && !field.arrays.empty()) {
             const DataArray& shown = defaultArray(field);
-            showArray(field, shown.name, options.read.cellToPoint);
+            showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
             logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
                     "' (choose another with --scalar NAME; `inversevis info` lists them)");
         }

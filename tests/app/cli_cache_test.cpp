@@ -52,7 +52,8 @@ TEST_F(Cli, AnUnusableCacheFolderBuildsAndKeepsNothing)
         test::runCli("render scene:sphere --volume-res 48 --res 32x32 --cache-dir " + quoted(folder) + " -o " +
                      quoted(output("x.png")));
     ASSERT_EQ(result.status, 0) << result.err;
-    EXPECT_NE(result.err.find("warning: cache folder " + folder + " cannot be created"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("warning: cache folder " + folder + " cannot be created"), std::string::npos)
+        << result.err;
     EXPECT_NE(result.err.find("the volume is built for this run and not kept"), std::string::npos) << result.err;
     EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"x.png", "x.png.camera.json"}));
     EXPECT_EQ(contents(mInputs.path()), std::vector<std::string>{"plain-file"});
@@ -81,8 +82,9 @@ TEST_F(Cli, CacheClearRemovesOnlyCaches)
                                                           "sphere.0123.res48.vdb"}));
     // Listing or clearing a folder creates none.
     const std::string missing = output("missing");
-    expectBadInput(test::runCli("cache clear --cache-dir " + quoted(missing)), {missing + ": --cache-dir names no folder"});
-    expectBadInput(test::runCli("cache list --cache-dir " + quoted(missing)), {missing + ": --cache-dir names no folder"});
+    for (const char* command : {"cache clear", "cache list"})
+        expectBadInput(test::runCli(std::string(command) + " --cache-dir " + quoted(missing)),
+                       {missing + ": --cache-dir names no folder"});
     EXPECT_FALSE(fs::exists(missing));
 }
 

@@ -325,7 +325,8 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     expectRejected(render(mesh, "--stats-json " + quoted(mesh)),
                    {mesh + ": --stats-json would overwrite the mesh, which this command reads"});
     test::writeFile(input("v.json"), "{}");
-    expectRejected(render("scene:sphere", "--view-out " + quoted(input("v.json")) + " --view " + quoted(input("v.json"))),
+    expectRejected(render("scene:sphere", "--view-out " + quoted(input("v.json")) + " --view " +
+                                              quoted(input("v.json"))),
                    {"--view-out would overwrite --view"});
     fs::create_directory(input("folder.png"));
     expectRejected(render("scene:sphere", "--tear-map " + quoted(input("folder.png"))),

@@ -102,7 +102,8 @@ TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
     const std::string bad = input("bad.view.json");
     test::writeFile(bad, R"({"inversevis_view": 1, "camera": {"eye": [0, 0, 2.5]}})");
     // The JSON library's words, without its "[json.exception.out_of_range.403]".
-    expectRejected(render("scene:sphere", "--view " + quoted(bad)), {"bad.view.json: bad view file (key 'size' not found)"});
+    expectRejected(render("scene:sphere", "--view " + quoted(bad)),
+                   {"bad.view.json: bad view file (key 'size' not found)"});
     test::writeFile(bad, R"({"inversevis_view": 7})");
     expectRejected(render("scene:sphere", "--view " + quoted(bad)), {"bad.view.json", "version 7"});
     test::writeFile(bad, "{");

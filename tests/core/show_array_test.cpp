@@ -102,7 +102,7 @@ TEST(ShowArray, NamesWithAColonAndUnknownNames)
     EXPECT_EQ(f.values, (std::vector<float>{7, 7, 8}));
     EXPECT_EQ(errorOf(f, "wss"),
               "f.vtp: no array 'wss'; available: p (point), v (point, 3 components), c (cell), "
-              "p (cell), a:b (cell)");
+              "p (cell), a:b (cell) (of a point and a cell array of one name, cell:NAME chooses the cell array)");
     EXPECT_EQ(errorOf(f, "wss:1").rfind("f.vtp: no array 'wss:1'", 0), 0u);
 }
 
@@ -113,6 +113,29 @@ TEST(ShowArray, DefaultIsTheFirstPointArrayElseTheFirstCellArray)
     EXPECT_EQ(&defaultArray(f), &f.arrays[3]);
     f.arrays.resize(3);
     EXPECT_EQ(&defaultArray(f), &f.arrays[0]);
+}
+
+TEST(ShowArray, PointOrCellBeforeTheNameChoosesTheAssociation)
+{
+    // ParaView's Cell Data to Point Data, passing the cell data, leaves a point and a cell
+    // "pressure": the cell one could not be chosen.
+    SurfaceField f = field();  // p, v (point), c, p, a:b (cell)
+    showArray(f, "cell:p", false);
+    EXPECT_EQ(f.valuesOn, Association::Cell);
+    EXPECT_EQ(f.values, (std::vector<float>{-1, -1, -1}));
+    showArray(f, "point:p", false);
+    EXPECT_EQ(f.valuesOn, Association::Point);
+    showArray(f, "point:v:1", false);
+    EXPECT_EQ(f.values[0], 4.0f);
+    showArray(f, "cell:a:b", false);  // a cell array whose name holds a colon
+    EXPECT_EQ(f.values, (std::vector<float>{7, 7, 8}));
+    EXPECT_EQ(errorOf(f, "cell:v").rfind("f.vtp: no array 'cell:v'", 0), 0u);  // v is a point array
+    EXPECT_NE(errorOf(f, "cell:v").find("cell:NAME chooses the cell array"), std::string::npos);
+    EXPECT_EQ(qualifiedArrayName(f.arrays[3]), "cell:p");
+    // The default array is shown by its qualified name: the cell p when it is the active scalars.
+    f.arrays[3].activeScalars = true;
+    showArray(f, qualifiedArrayName(defaultArray(f)), false);
+    EXPECT_EQ(f.valuesOn, Association::Cell);
 }
 
 TEST(ShowArray, DefaultIsTheFilesActiveScalarsPointBeforeCell)
@@ -198,7 +221,7 @@ TEST(ArrayPattern, NoMatchNamesTheArrays)
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "f.vtp: no array matches 'wss_*'; available: p (point), v (point, 3 components), c (cell), "
-                  "p (cell), a:b (cell)");
+                  "p (cell), a:b (cell) (of a point and a cell array of one name, cell:NAME chooses the cell array)");
     }
 }
 

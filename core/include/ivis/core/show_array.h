@@ -12,13 +12,17 @@ namespace ivis::core {
 
 /// @brief Shows the array @a spec names: sets field.values, valuesOn and name.
 /// @param spec "NAME" (a vector by its magnitude), "NAME:magnitude" or "NAME:<k>" for component
-///        k; a name that exists as it is wins over a split at its last ':', a point array over a
-///        cell array of the same name
+///        k, each after "point:" or "cell:" to choose the association; a name that exists as it
+///        is wins over a split at its last ':' or its first, a point array over a cell array of
+///        the same name
 /// @param cellToPoint show a cell array averaged onto the vertices (cellToPoint) instead of one
 ///        flat value per triangle; no effect on a point array
 /// @throw InputError "<source>: no array 'x'; available: ..." or naming a component that does
 ///        not exist
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
+
+/// @brief The spec that names @a array and no other of its name: "point:NAME" or "cell:NAME".
+std::string qualifiedArrayName(const DataArray& array);
 
 /// @brief The array shown when a file carries arrays and none is chosen: the active point scalars,
 ///        else the active cell scalars (DataArray::activeScalars: what ParaView colours by), else
