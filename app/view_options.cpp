@@ -1,5 +1,7 @@
 #include "view_options.h"
 
+#include "cli_checks.h"
+
 #include <ivis/core/errors.h>
 #include <ivis/core/log.h>
 #include <ivis/render/framing.h>
@@ -11,8 +13,12 @@ namespace ivis::app {
 void ViewOptions::addTo(CLI::App& command)
 {
     mCommand = &command;
-    command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")->capture_default_str();
-    command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")->capture_default_str();
+    command.add_option("--theta", theta, "Camera polar angle from +y (degrees)")
+        ->check(finiteRange(-1e6, 1e6))
+        ->capture_default_str();
+    command.add_option("--phi", phi, "Camera azimuth around y from +z toward +x (degrees)")
+        ->check(finiteRange(-1e6, 1e6))
+        ->capture_default_str();
     auto* fovOption = command.add_option("--fov", fovYDeg,
                                          "Vertical field of view (degrees); default: fitted to each picture, the "
                                          "object and the method's whole indirect region with a margin");

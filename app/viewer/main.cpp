@@ -6,6 +6,7 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/interrupt_signal.h>
+#include <ivis/core/log.h>
 #include <ivis/core/surface_series.h>
 #include <ivis/core/surface_source.h>
 
@@ -24,6 +25,7 @@ extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 int main(int argc, char** argv)
 {
     CLI::App app{"inversevis-view: both sides of a surface, live, on the GPU"};
+    ivis::core::setLogProgram("inversevis-view");  // the libraries' notes name this program
     ivis::app::ViewerOptions options;
     options.addTo(app);
     app.set_version_flag("--version", ivis::app::versionText("inversevis-view"),

@@ -8,14 +8,21 @@ namespace ivis::core {
 namespace {
 std::atomic<LogLevel> gLevel{LogLevel::Info};
 std::mutex gMutex;
+std::string gProgram = "inversevis";  // guarded by gMutex
 
 void emit(LogLevel level, const char* tag, const std::string& message)
 {
     if (level < gLevel.load()) return;
     std::lock_guard<std::mutex> lock(gMutex);
-    std::cerr << "inversevis: " << tag << message << '\n';
+    std::cerr << gProgram << ": " << tag << message << '\n';
 }
 }  // namespace
+
+void setLogProgram(const std::string& name)
+{
+    std::lock_guard<std::mutex> lock(gMutex);
+    gProgram = name;
+}
 
 void setLogLevel(LogLevel level) { gLevel = level; }
 LogLevel logLevel() { return gLevel.load(); }

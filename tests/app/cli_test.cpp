@@ -894,6 +894,7 @@ TEST_F(Cli, OptionsRejectNaNAndValuesOutOfRange)
         expectRejected("optimize scene:sphere " + std::string(option) + " -o " + quoted(output("best.png")), {name});
     }
     expectRejected(render("scene:sphere", "--min-coherence nan"), {"--min-coherence"});
+    expectRejected(render("scene:sphere", "--theta nan"), {"--theta"});  // it said "camera eye ... must be finite"
     // Refused before the volume is built (it was refused after, and left a cache and three lines).
     expectRejected(render("scene:sphere", "--spp 0"), {"--spp"});
 }

@@ -29,13 +29,16 @@ private:
     LogLevel mPrevious;
 };
 
-/// @brief Prints "inversevis: <message>" when Info is enabled.
+/// @brief Sets the program named before each message ("inversevis" unless set).
+void setLogProgram(const std::string& name);
+
+/// @brief Prints "<program>: <message>" when Info is enabled.
 void logInfo(const std::string& message);
 
-/// @brief Prints "inversevis: warning: <message>" when Warning is enabled.
+/// @brief Prints "<program>: warning: <message>" when Warning is enabled.
 void logWarning(const std::string& message);
 
-/// @brief Prints "inversevis: debug: <message>" when Debug is enabled.
+/// @brief Prints "<program>: debug: <message>" when Debug is enabled.
 void logDebug(const std::string& message);
 
 }  // namespace ivis::core
