@@ -29,6 +29,7 @@ nlohmann::json readPart(const std::string& path)
     if (!in) throw InputError(path + ": cannot open");
     nlohmann::json part = nlohmann::json::parse(in, nullptr, false);
     if (!part.is_object()) throw InputError(path + ": not the JSON of an evaluation");
+    if (part.empty()) throw InputError(path + ": holds no evaluation (an empty object)");  // made empty tables
     for (const auto& [stem, methods] : part.items()) {
         if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
         for (const auto& [method, entry] : methods.items())

@@ -45,6 +45,8 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
 
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("p1.json"))),
                    {"sphere:front is in", "p1.json too"});
+    test::writeFile(output("empty.json"), "{}");
+    expectBadInput(test::runCli("merge " + quoted(output("empty.json"))), {"empty.json: holds no evaluation"});
     // The tables written over a part (it was replaced, status 0).
     const std::string before = test::readFile(output("p1.json"));
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " --markdown " + quoted(output("p1.json"))),
