@@ -1,6 +1,7 @@
 // `inversevis info MESH`: what a mesh file (or a time series) carries.
 #include "commands.h"
 
+#include <ivis/core/errors.h>
 #include <ivis/core/mesh_reader.h>
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/surface_source.h>
@@ -102,6 +103,9 @@ Command addInfoCommand(CLI::App& app)
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {
+        if (options->path.rfind(core::kScenePrefix, 0) == 0)  // it said "file not found"
+            throw InputError(options->path + ": a generated scene, not a file: info lists what a mesh file carries "
+                                             "(render it, or `sdf " + options->path + " --json` for its volume)");
         if (core::isTimeSeries(options->path)) {
             printTimeSeries(options->path, options->json);
             return;

@@ -412,6 +412,8 @@ TEST_F(Cli, InfoJsonReportsCountsAndPressureScalars)
     ASSERT_NE(marked, std::string::npos) << vmtk.out;
     EXPECT_EQ(vmtk.out.rfind("ClippingArray", marked), vmtk.out.rfind("\n", marked) + 5) << vmtk.out;
     EXPECT_EQ(vmtk.out.find("(shown by default)", marked + 3), std::string::npos) << vmtk.out;
+    // A generated scene is no file (info said "file not found").
+    expectBadInput(runCli("info scene:vessel-tree"), {"scene:vessel-tree: a generated scene, not a file"});
 }
 
 TEST_F(Cli, InfoReportsTheOpenLeftAtrium)
