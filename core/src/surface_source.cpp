@@ -34,8 +34,8 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
     } else if (isTimeSeries(source)) {
         const std::vector<TimeStep> steps = readPvd(source);
         throw InputError(source + ": a time series of " + std::to_string(steps.size()) +
-                         " steps; this command takes one step's file, such as " + steps.front().path +
-                         " (render, optimize and the viewer take series)");
+                         (steps.size() == 1 ? " step" : " steps") + "; this command takes one step's file, such as " +
+                         steps.front().path + " (render, optimize and the viewer take series)");
     } else if (isArrayPattern(options.read.scalarName)) {
         throw InputError(source + ": --scalar '" + options.read.scalarName +
                          "' is a pattern, which makes a time series of the arrays it matches; this command shows "
