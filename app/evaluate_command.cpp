@@ -151,7 +151,7 @@ Command addEvaluateCommand(CLI::App& app)
         const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
         // --json may name the results --resume reads: that file is meant to be rewritten.
         checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}},
-                         readFiles(options->meshes, "", "", ""));
+                         readFiles(options->meshes, options->mesh.load.read.scalarFile, "", ""));
         if (!options->pictures.empty()) {
             checkOutputFolder(options->pictures);
             if (std::filesystem::exists(options->pictures) && !std::filesystem::is_directory(options->pictures))

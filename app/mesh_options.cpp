@@ -125,18 +125,23 @@ std::string cacheFolder(const std::string& cacheDir, bool create)
     return folder.string();
 }
 
+std::string writableCacheFolder(const std::string& cacheDir)
+{
+    const std::string folder = cacheFolder(cacheDir);
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throw InputError("cache folder " + folder + " cannot be written (" + std::strerror(errno) + ")");
+    return folder;
+}
+
 std::string optionalCacheFolder(const std::string& cacheDir)
 {
-    std::string why;
     try {
-        const std::string folder = cacheFolder(cacheDir);
-        if (::access(folder.c_str(), W_OK) == 0) return folder;
-        why = "cache folder " + folder + " cannot be written (" + std::strerror(errno) + ")";
+        return writableCacheFolder(cacheDir);
     } catch (const InputError& e) {
-        why = e.what();
+        core::logWarning(std::string(e.what()) +
+                         ": the volume is built for this run and not kept (--cache-dir chooses another folder)");
+        return "";
     }
-    core::logWarning(why + ": the volume is built for this run and not kept (--cache-dir chooses another folder)");
-    return "";
 }
 
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
@@ -152,8 +157,10 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
 
 bool isVolumeCacheName(const std::string& fileName)
 {
-    // The reach is optional: the names before 2026-11-27 had none.
-    static const std::regex name(R"(.+\.[0-9a-f]{16}\.res[0-9]+(\.reach[0-9.e+-]+)?\.vdb(\.tmp\.[0-9]+\.[0-9]+)?)");
+    // The reach is optional, as the hash is: the names before 2026-11-27 had no reach, and those
+    // before 2026-11-24 no hash.
+    static const std::regex name(
+        R"(.+(\.[0-9a-f]{16})?\.res[0-9]+(\.reach[0-9.e+-]+)?\.vdb(\.tmp\.[0-9]+\.[0-9]+)?)");
     return std::regex_match(fileName, name);
 }
 

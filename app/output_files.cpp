@@ -30,8 +30,14 @@ std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const s
 
 void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs)
 {
+    // The file a path names, symbolic links and ".." resolved where they can be (an unreadable
+    // folder, a loop: the path as written, made absolute).
     auto fileOf = [](const std::string& path) {
-        return std::filesystem::weakly_canonical(std::filesystem::absolute(path));
+        std::error_code error;
+        const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+        if (error) return std::filesystem::path(path).lexically_normal();
+        const std::filesystem::path file = std::filesystem::weakly_canonical(absolute, error);
+        return error ? absolute.lexically_normal() : file;
     };
     std::vector<std::pair<std::filesystem::path, const OutputFile*>> seen;
     for (const OutputFile& output : outputs) {

@@ -27,8 +27,8 @@ struct InputFile {
     std::string option;
 };
 
-/// @brief The files a render or an optimisation reads: its meshes (a .pvd, not its steps),
-///        --scalar-file, --camera and --view (each empty when not given).
+/// @brief The files a command reads, for checkOutputFiles: its meshes (a .pvd, not its steps),
+///        --scalar-file, --camera and --view (each empty when not given or not taken).
 std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const std::string& scalarFile,
                                  const std::string& cameraFile, const std::string& viewFile);
 

@@ -110,8 +110,8 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
-        // One picture writes its camera beside it unless told where (a series writes none unasked).
-        const bool defaultCamera = options->cameraOut.empty() && !core::isSeries(options->sources, options->mesh.load);
+        // The camera is written beside the picture (a series': beside its frames) unless told where.
+        const bool defaultCamera = options->cameraOut.empty();
         checkOutputFiles({{options->output, "-o", {".png"}},
                           {options->exr, "--exr", {".exr"}},
                           {options->statsJson, "--stats-json", {}},
@@ -140,7 +140,6 @@ Command addRenderCommand(CLI::App& app)
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
-        const std::string folder = optionalCacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));
         if (core::isSeries(options->sources, options->mesh.load)) {
@@ -165,7 +164,7 @@ Command addRenderCommand(CLI::App& app)
                 return;
             }
             request.volume = volumeOptions;
-            request.cacheFolder = folder;
+            request.cacheFolder = optionalCacheFolder(options->cacheDir);  // after the checks: their one line
             request.png = options->output;
             request.exr = options->exr;
             request.cameraOut = options->cameraOut;
@@ -198,7 +197,8 @@ Command addRenderCommand(CLI::App& app)
             return;
         }
 
-        const std::string volumePath = defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions);
+        const std::string volumePath =
+            defaultVolumePath(optionalCacheFolder(options->cacheDir), options->mesh.source, field.mesh, volumeOptions);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
         core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,
@@ -261,7 +261,8 @@ Command addRenderCommand(CLI::App& app)
                                       {"fov_y_deg", camera.fovYDeg},
                                       {"framed", options->view.framed()},
                                       {"volume_resolution", volume.options.resolution},
-                                      {"volume_cache", volumePath},
+                                      {"volume_cache",  // null: no cache folder could be written
+                                       volumePath.empty() ? nlohmann::json() : nlohmann::json(volumePath)},
                                       {"output", options->output},
                                       {"camera", cameraPath}};
         const nlohmann::json method = render::methodToJson(*renderOptions.method);

@@ -38,10 +38,11 @@ Command addSdfCommand(CLI::App& app)
         checkOutputFiles({{options->output, "-o", {".vdb"}}});
         options->mesh.raiseReachFor({render::defaultMethod()});  // the volume `render` uses by default
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
+        // The cache is sdf's output: a folder it cannot write is refused before the mesh is read.
+        const std::string folder = options->output.empty() ? writableCacheFolder(options->cacheDir) : "";
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
-                                     ? defaultVolumePath(cacheFolder(options->cacheDir), options->mesh.source, field.mesh,
-                                                         volumeOptions)
+                                     ? defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions)
                                      : options->output;
         vdb::CacheOutcome outcome{};
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);

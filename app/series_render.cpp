@@ -132,7 +132,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"output", png},
                           {"exr", exr.empty() ? nlohmann::json() : nlohmann::json(exr)},
                           {"volume", volume},
-                          {"volume_cache", current.volumePath()},
+                          {"volume_cache",  // null: no cache folder could be written
+                           current.volumePath().empty() ? nlohmann::json() : nlohmann::json(current.volumePath())},
                           {"range", {options.shading.scale.range.lo, options.shading.scale.range.hi}},
                           {"seconds", s.seconds},
                           {"pixels_direct", s.pixelsDirect},

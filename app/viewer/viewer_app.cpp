@@ -52,7 +52,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     : mOptions(options),
       mField(std::make_unique<core::SurfaceField>(std::move(field))),
       mSeries(std::move(series)),
-      mSurvey(std::move(survey))
+      mSurvey(std::move(survey)),
+      mCacheFolder(optionalCacheFolder(options.cacheDir))  // once: a series' every geometry would warn
 {
     mOptions.view.resolution = std::to_string(options.width) + "x" + std::to_string(options.height);
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
@@ -126,7 +127,7 @@ void ViewerApp::startLoading()
 {
     const vdb::VolumeOptions volumeOptions = mOptions.mesh.volumeOptions();
     const std::string cachePath =
-        defaultVolumePath(optionalCacheFolder(mOptions.cacheDir), mOptions.mesh.source, mField->mesh, volumeOptions);
+        defaultVolumePath(mCacheFolder, mOptions.mesh.source, mField->mesh, volumeOptions);
     DenseSliceOptions slices;
     slices.budgetBytes = std::size_t(mOptions.textureBudgetMiB) << 20;
     GLint maxSize = 0;
@@ -179,7 +180,8 @@ bool ViewerApp::pollLoader()
     const float interiorStep = float(volume.options.bandVoxels * volume.voxelSize());
     mRenderer->setVolume(mLoaded->slices, float(volume.voxelSize()), interiorStep);
     mVolumeText = mLoaded->slices.describe();
-    std::printf("inversevis-view: volume %s (%s, %.1f s)\n", mLoaded->cachePath.c_str(),
+    std::printf("inversevis-view: volume %s (%s, %.1f s)\n",
+                mLoaded->cachePath.empty() ? "not kept" : mLoaded->cachePath.c_str(),
                 vdb::toString(mLoaded->cacheOutcome), mLoaded->seconds);
     std::printf("inversevis-view: %s\n", mVolumeText.c_str());
     std::fflush(stdout);
@@ -332,11 +334,12 @@ int ViewerApp::runHeadlessScreenshot()
         };
         const std::string path = numbered(mOptions.screenshot);
         writeScreenshot(files, path, numbered(mOptions.regionPng));
-        char line[512];
-        std::snprintf(line, sizeof line, "inversevis-view: wrote %s (%dx%d, %s, %d frames, last frame %.1f ms, %s)\n",
-                      path.c_str(), mOptions.width, mOptions.height, mMethod->name().c_str(), mOptions.frames,
-                      mLastFrameMs, mGlRenderer.c_str());
-        written.push_back(line);
+        char frame[64];
+        std::snprintf(frame, sizeof frame, "%.1f ms", mLastFrameMs);
+        written.push_back("inversevis-view: wrote " + path + " (" + std::to_string(mOptions.width) + "x" +
+                          std::to_string(mOptions.height) + ", " + mMethod->name() + ", " +
+                          std::to_string(mOptions.frames) + " frames, last frame " + frame + ", " + mGlRenderer +
+                          ")\n");
     }
     files.commit();
     for (const std::string& line : written) std::fputs(line.c_str(), stdout);

@@ -92,6 +92,7 @@ private:
     std::vector<glm::vec3> mNormals;             ///< vertex normals of mField's mesh
     std::unique_ptr<core::SurfaceSeries> mSeries;  ///< the time series shown (null for one surface)
     SeriesSurvey mSurvey;
+    std::string mCacheFolder;  ///< where volumes are cached; "" when none can be written (optionalCacheFolder)
     std::size_t mStep = 0;                         ///< the step of mSeries shown
     render::MethodPtr mMethod;
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases

@@ -36,7 +36,9 @@ std::string availableArrays(const SurfaceField& field)
     for (const DataArray& a : field.arrays) {
         list += (list.empty() ? "" : ", ") + a.name + " (" + associationName(a.association) +
                 (a.components > 1 ? ", " + std::to_string(a.components) + " components" : "") + ")";
-        twoOfAName = twoOfAName || findArray(field, a.name) != &a;
+        twoOfAName = twoOfAName || std::any_of(field.arrays.begin(), field.arrays.end(), [&](const DataArray& b) {
+                         return b.name == a.name && b.association != a.association;
+                     });
     }
     if (twoOfAName) list += " (of a point and a cell array of one name, cell:NAME chooses the cell array)";
     return list.empty() ? "none" : list;
@@ -120,17 +122,25 @@ std::string qualifiedArrayName(const DataArray& array)
 
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 {
-    // "point:" or "cell:" before the name chooses the association, unless the whole names an array.
+    // In order: the whole spec as a name; "point:" or "cell:" and what follows (a name, or a name
+    // and a component); the whole spec split at its last ':' into a name and a component.
+    const DataArray* array = findArray(field, spec);
     std::string name = spec;
     std::optional<Association> only;
+    auto splitFinds = [&](const std::string& text, std::optional<Association> association) {
+        const std::size_t colon = text.rfind(':');
+        return findArray(field, text, association) != nullptr ||
+               (colon != std::string::npos && findArray(field, text.substr(0, colon), association) != nullptr);
+    };
     for (const Association association : {Association::Point, Association::Cell}) {
         const std::string prefix = std::string(associationName(association)) + ":";
-        if (findArray(field, spec) == nullptr && spec.size() > prefix.size() && spec.rfind(prefix, 0) == 0) {
+        if (array == nullptr && !only && spec.size() > prefix.size() && spec.rfind(prefix, 0) == 0 &&
+            splitFinds(spec.substr(prefix.size()), association)) {
             name = spec.substr(prefix.size());
             only = association;
         }
     }
-    const DataArray* array = findArray(field, name, only);
+    if (array == nullptr) array = findArray(field, name, only);
     int component = array != nullptr ? array->defaultComponent() : kMagnitude;
     const std::size_t colon = name.rfind(':');
     if (array == nullptr && colon != std::string::npos) {

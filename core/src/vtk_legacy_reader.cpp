@@ -250,6 +250,9 @@ private:
         const std::string what = w[0] + " " + w[1];
         if (key == "color_scalars") {
             addArray(w[1], mIsBinary ? ValueType::UInt8 : ValueType::Float32, count(w, 2), what);
+            // vtkDataReader sets COLOR_SCALARS as the section's scalars too, the first of either.
+            mMesh.arrays.back().activeScalars = !mActiveScalarsRead;
+            mActiveScalarsRead = true;
         } else if (key == "texture_coordinates") {
             addArray(w[1], type(w, 3), count(w, 2), what);
         } else if (key == "scalars") {
@@ -258,7 +261,7 @@ private:
                 fail(what + ": " + std::to_string(components) + " components (1 to 4 allowed)");
             if (mIn.peekWord() == "lookup_table") mIn.words();
             addArray(w[1], type(w, 2), components, what);
-            // vtkDataReader makes the section's first SCALARS its active scalars.
+            // vtkDataReader makes the section's first SCALARS (or COLOR_SCALARS) its active scalars.
             mMesh.arrays.back().activeScalars = !mActiveScalarsRead;
             mActiveScalarsRead = true;
         } else {
@@ -307,7 +310,7 @@ private:
     std::size_t mCellCount = 0;
     std::optional<Association> mAssociation;
     std::size_t mTuples = 0;
-    bool mActiveScalarsRead = false;  ///< whether the section's first SCALARS came
+    bool mActiveScalarsRead = false;  ///< whether the section's first SCALARS or COLOR_SCALARS came
 };
 
 }  // namespace

@@ -50,13 +50,14 @@ TEST_F(Cli, AnUnusableCacheFolderBuildsAndKeepsNothing)
     const std::string folder = file + "/cache";  // cannot be created, even by root
     const test::CliResult result =
         test::runCli("render scene:sphere --volume-res 48 --res 32x32 --cache-dir " + quoted(folder) + " -o " +
-                     quoted(output("x.png")));
+                     quoted(output("x.png")) + " --stats-json " + quoted(output("s.json")));
     ASSERT_EQ(result.status, 0) << result.err;
     EXPECT_NE(result.err.find("warning: cache folder " + folder + " cannot be created"), std::string::npos)
         << result.err;
     EXPECT_NE(result.err.find("the volume is built for this run and not kept"), std::string::npos) << result.err;
-    EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"x.png", "x.png.camera.json"}));
+    EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"s.json", "x.png", "x.png.camera.json"}));
     EXPECT_EQ(contents(mInputs.path()), std::vector<std::string>{"plain-file"});
+    EXPECT_TRUE(nlohmann::json::parse(test::readFile(output("s.json"))).at("volume_cache").is_null());
     // sdf, whose output the cache is, still refuses.
     expectBadInput(test::runCli("sdf scene:sphere --volume-res 48 --cache-dir " + quoted(folder)),
                    {"cache folder " + folder + " cannot be created"});
@@ -69,17 +70,18 @@ TEST_F(Cli, CacheClearRemovesOnlyCaches)
     fs::create_directories(folder);
     const std::vector<std::string> caches = {"sphere.0123456789abcdef.res48.reach1.vdb",
                                              "sphere.0123456789abcdef.res48.vdb",  // the name before the reach
+                                             "sphere.res48.vdb",                   // and before the hash
                                              "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.42.0"};
-    const std::vector<std::string> others = {"my_simulation.vdb", "results.vdb.tmp.1.0", "sphere.0123.res48.vdb",
+    const std::vector<std::string> others = {"my_simulation.vdb", "results.vdb.tmp.1.0", "sphere.res48x.vdb",
                                              "notes.txt"};
     for (const std::string& name : caches) test::writeFile(folder + "/" + name, "v");
     for (const std::string& name : others) test::writeFile(folder + "/" + name, "v");
     const test::CliResult listed = test::runCli("cache list --cache-dir " + quoted(folder));
     ASSERT_EQ(listed.status, 0) << listed.err;
-    EXPECT_NE(listed.out.find("in 3 files"), std::string::npos) << listed.out;
+    EXPECT_NE(listed.out.find("in 4 files"), std::string::npos) << listed.out;
     ASSERT_EQ(test::runCli("cache clear --cache-dir " + quoted(folder)).status, 0);
     EXPECT_EQ(contents(folder), (std::vector<std::string>{"my_simulation.vdb", "notes.txt", "results.vdb.tmp.1.0",
-                                                          "sphere.0123.res48.vdb"}));
+                                                          "sphere.res48x.vdb"}));
     // Listing or clearing a folder creates none.
     const std::string missing = output("missing");
     for (const char* command : {"cache clear", "cache list"})

@@ -322,8 +322,6 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
 #endif
 }
 
-// A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
-// shows meanwhile); back on the artery, the artery's cache is read again.
 TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
 {
 #ifndef IVIS_VIEW_PATH
@@ -355,6 +353,8 @@ TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
 #endif
 }
 
+// A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
+// shows meanwhile); back on the artery, the artery's cache is read again.
 TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
 {
 #ifndef IVIS_VIEW_PATH

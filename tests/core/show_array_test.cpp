@@ -132,6 +132,14 @@ TEST(ShowArray, PointOrCellBeforeTheNameChoosesTheAssociation)
     EXPECT_EQ(errorOf(f, "cell:v").rfind("f.vtp: no array 'cell:v'", 0), 0u);  // v is a point array
     EXPECT_NE(errorOf(f, "cell:v").find("cell:NAME chooses the cell array"), std::string::npos);
     EXPECT_EQ(qualifiedArrayName(f.arrays[3]), "cell:p");
+    // A name that only looks prefixed: as it is, and split at its last ':' when no point "vel" is there.
+    f.arrays.push_back({"point:vel", Association::Cell, ValueType::Float32, 3, {1, 2, 3, 4, 5, 6}});
+    showArray(f, "point:vel:1", false);
+    EXPECT_EQ(f.valuesOn, Association::Cell);
+    EXPECT_EQ(f.values, (std::vector<float>{2, 2, 5}));
+    showArray(f, "point:vel", false);
+    EXPECT_EQ(f.name, "point:vel magnitude");
+    f.arrays.pop_back();
     // The default array is shown by its qualified name: the cell p when it is the active scalars.
     f.arrays[3].activeScalars = true;
     showArray(f, qualifiedArrayName(defaultArray(f)), false);

@@ -176,6 +176,7 @@ TEST(VtkLegacyReader, StripsNormalsTensorsAndEncodedNames)
             .section("SCALARS second float 1\nLOOKUP_TABLE default", {1, 2, 3, 4}, "float")
             .line("CELL_DATA 1")
             .section("TENSORS stress double", {1, 0, 0, 0, 2, 0, 0, 0, 3}, "double")
+            .section("SCALARS cell_id float\nLOOKUP_TABLE default", {5}, "float")
             .str();
     TempDir dir;
     writeFile(dir.file("s.vtk"), text);
@@ -184,14 +185,15 @@ TEST(VtkLegacyReader, StripsNormalsTensorsAndEncodedNames)
     EXPECT_EQ(field.mesh.triangles[1], (std::array<std::uint32_t, 3>{2, 1, 3}));
     EXPECT_EQ(field.triangleCells, (std::vector<std::uint32_t>{0, 0}));
     EXPECT_EQ(field.values, (std::vector<float>{2, 4, 6, 8}));
-    ASSERT_EQ(field.arrays.size(), 4u);
+    ASSERT_EQ(field.arrays.size(), 5u);
     EXPECT_EQ(field.arrays[0].components, 3);
     EXPECT_EQ(field.arrays[1].name, "wall shear stress");
     EXPECT_EQ(field.arrays[1].components, 2);
     EXPECT_EQ(field.arrays[3].components, 9);
     EXPECT_EQ(field.arrays[3].association, Association::Cell);
-    // The section's first SCALARS are its active scalars (vtkDataReader's), shown by default.
-    for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(field.arrays[i].activeScalars, i == 1) << i;
+    // Each section's first SCALARS are its active scalars (vtkDataReader's); the point data's are
+    // shown by default.
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(field.arrays[i].activeScalars, i == 1 || i == 4) << i;
     EXPECT_EQ(loadSurface(dir.file("s.vtk")).name, "wall shear stress magnitude");
 }
 

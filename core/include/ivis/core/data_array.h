@@ -29,7 +29,8 @@ struct DataArray {
     int components = 1;
     std::vector<double> values;  ///< tuple after tuple: values[tuple * components + component]
     /// The file's active scalars of its association, which ParaView colours by: a VTK XML file's
-    /// PointData / CellData "Scalars" attribute, a legacy file's first SCALARS of the section.
+    /// PointData / CellData "Scalars" attribute, a legacy file's first SCALARS (or COLOR_SCALARS)
+    /// of the section.
     bool activeScalars = false;
 
     /// @brief Number of tuples.
