@@ -26,6 +26,14 @@ SurfaceLoadOptions scalar(const std::string& name)
     return options;
 }
 
+/// Expects @a note in @a err exactly once.
+void expectSaidOnce(const std::string& err, const std::string& note)
+{
+    const std::size_t first = err.find(note);
+    ASSERT_NE(first, std::string::npos) << err;
+    EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;
+}
+
 /// The message of the InputError @a f throws, or a marker.
 template <typename F>
 std::string errorOf(F f)
@@ -79,11 +87,7 @@ TEST(SurfaceSeries, TheDefaultArrayIsSaidOnce)
     }
     testing::internal::CaptureStderr();
     for (std::size_t k : {0, 0, 1}) EXPECT_EQ(series.load(k).name, "pressure");
-    const std::string err = testing::internal::GetCapturedStderr();
-    const std::string note = "showing the point array 'pressure'";
-    const std::size_t first = err.find(note);
-    ASSERT_NE(first, std::string::npos) << err;
-    EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;
+    expectSaidOnce(testing::internal::GetCapturedStderr(), "showing the point array 'pressure'");
 }
 
 TEST(SurfaceSeries, APatternFileReadUnheardIsReadAgainToSayItsNotes)
@@ -103,11 +107,7 @@ TEST(SurfaceSeries, APatternFileReadUnheardIsReadAgainToSayItsNotes)
     testing::internal::CaptureStderr();
     EXPECT_EQ(series.load(1).values, std::vector<float>(4, 2.0f));
     EXPECT_EQ(series.load(0).values, std::vector<float>(4, 1.0f));
-    const std::string err = testing::internal::GetCapturedStderr();
-    const std::string note = "two.ply: dropped 1 degenerate triangles";
-    const std::size_t first = err.find(note);
-    ASSERT_NE(first, std::string::npos) << err;
-    EXPECT_EQ(err.find(note, first + 1), std::string::npos) << err;
+    expectSaidOnce(testing::internal::GetCapturedStderr(), "two.ply: dropped 1 degenerate triangles");
 }
 
 TEST(SurfaceSeries, PatternStepsAreTheMatchingArraysOfOneFile)
