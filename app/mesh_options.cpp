@@ -36,15 +36,20 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
                         "Text file with one value per vertex, in the file's vertex order (STL: the order in which "
                         "each merged corner first appears)")
             ->excludes(scalar);
-    command.add_flag("--cell-to-point", load.read.cellToPoint,
-                     "Show a cell array averaged onto the vertices (area-weighted) instead of flat per triangle");
+    auto* cellToPoint =
+        command
+            .add_flag("--cell-to-point", load.read.cellToPoint,
+                      "Show a cell array averaged onto the vertices (area-weighted) instead of flat per triangle "
+                      "(without --scalar: the file's active cell scalars, else its first cell array)")
+            ->excludes(scalarFile);
     command
         .add_option("--hotspots", load.hotSpots,
                     "Show N Gaussian hot spots instead of a scalar: the first two at the ends of the mesh's thinnest "
                     "principal axis, the next along the middle and the longest axis (reveal measure)")
         ->check(CLI::Range(1, 6))
         ->excludes(scalar)
-        ->excludes(scalarFile);
+        ->excludes(scalarFile)
+        ->excludes(cellToPoint);
     command.add_flag("--cap-holes", load.capHoles, "Close open boundary loops (caps are never coloured)");
     command.add_option("--volume-res", volume.resolution,
                        "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +

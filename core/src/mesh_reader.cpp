@@ -107,6 +107,9 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options, M
     if (!options.scalarName.empty() && !options.scalarFile.empty()) {
         failInput(path, "choose either a scalar name or a scalar file, not both");
     }
+    if (options.cellToPoint && !options.scalarFile.empty()) {
+        failInput(path, "--cell-to-point averages a cell array; a scalar file gives one value per vertex");
+    }
     LoadedMesh loaded = loadMesh(path);
     SurfaceField& field = loaded.field;
     if (!options.scalarName.empty()) {

@@ -168,6 +168,10 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
         field.name += component == kMagnitude ? " magnitude" : "[" + std::to_string(component) + "]";
     }
     const TriangleMesh& mesh = field.mesh;
+    if (cellToPoint && array->association == Association::Point) {
+        detail::failInput(field.sourcePath, "--cell-to-point averages a cell array; '" + array->name +
+                                                "' is a point array (a cell array by name: --scalar cell:NAME)");
+    }
     if (array->association == Association::Point) {
         // Vertices beyond the file's points (hole caps) have no value.
         field.values.assign(mesh.positions.size(), std::numeric_limits<float>::quiet_NaN());
@@ -191,10 +195,17 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
     }
 }
 
-const DataArray& defaultArray(const SurfaceField& field)
+const DataArray& defaultArray(const SurfaceField& field, bool cellToPoint)
 {
-    IVIS_CHECK(!field.arrays.empty());
     auto first = [&](auto chosen) { return std::find_if(field.arrays.begin(), field.arrays.end(), chosen); };
+    if (cellToPoint) {
+        const auto active = first([](const DataArray& a) { return a.activeScalars && a.association == Association::Cell; });
+        if (active != field.arrays.end()) return *active;
+        const auto cell = first([](const DataArray& a) { return a.association == Association::Cell; });
+        if (cell == field.arrays.end()) detail::failInput(field.sourcePath, "--cell-to-point averages a cell array, and the file has none");
+        return *cell;
+    }
+    IVIS_CHECK(!field.arrays.empty());
     for (const Association association : {Association::Point, Association::Cell}) {
         const auto active = first([&](const DataArray& a) { return a.activeScalars && a.association == association; });
         if (active != field.arrays.end()) return *active;

@@ -52,7 +52,8 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
     const bool chosen = !scalar.empty() || mOptions.hotSpots > 0;
     if (!pattern && !chosen && mSteps.front().path.rfind(kScenePrefix, 0) != 0) {
         const SurfaceField first = readMesh(mSteps.front().path, mOptions.read);
-        if (!first.arrays.empty()) mDefaultArray = qualifiedArrayName(defaultArray(first));
+        if (!first.arrays.empty() || mOptions.read.cellToPoint)
+            mDefaultArray = qualifiedArrayName(defaultArray(first, mOptions.read.cellToPoint));
     }
 }
 

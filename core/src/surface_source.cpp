@@ -40,6 +40,8 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         throw InputError(source + ": --scalar '" + options.read.scalarName +
                          "' is a pattern, which makes a time series of the arrays it matches; this command shows "
                          "one array (render, optimize and the viewer take series)");
+    } else if (options.hotSpots > 0 && options.read.cellToPoint) {
+        throw InputError(source + ": --cell-to-point averages a cell array; hot spots are one value per vertex");
     } else {
         MeshReadReport report;
         field = readMesh(source, options.read, &report);
@@ -47,8 +49,8 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         if (report.degenerateDropped > 0) {
             logInfo(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles");
         }
-        if (!field.hasScalar() && options.hotSpots == 0 && !field.arrays.empty()) {
-            const DataArray& shown = defaultArray(field);
+        if (!field.hasScalar() && options.hotSpots == 0 && (!field.arrays.empty() || options.read.cellToPoint)) {
+            const DataArray& shown = defaultArray(field, options.read.cellToPoint);
             showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
             logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
                     "' (choose another with --scalar NAME; `inversevis info` lists them)");

@@ -107,6 +107,20 @@ TEST_F(Cli, CellArrayIsFlatPerTriangleAndAveragedOnRequest)
     EXPECT_GT(blended, shown / 2) << "averaged onto vertices, the values vary across a triangle";
 }
 
+TEST_F(Cli, CellToPointAveragesACellArrayOrIsRefused)
+{
+    // It used to be ignored on a point array, on hot spots and on a file without cell arrays.
+    expectRejected(render(arteryStep(), "--scalar pressure --cell-to-point"),
+                   {arteryStep() + ": --cell-to-point averages a cell array; 'pressure' is a point array"});
+    expectRejected(render(arteryStep(), "--hotspots 2 --cell-to-point"), {"--cell-to-point excludes --hotspots"});
+    expectRejected(render(sharedMesh("stanford_bunny.ply"), "--cell-to-point"),
+                   {"stanford_bunny.ply: --cell-to-point averages a cell array, and the file has none"});
+    // Without --scalar it averages the file's cell array, not the point pressure shown by default.
+    const CliResult result = runCli(render(arteryStep(), "--cell-to-point"));
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find(": showing the cell array 'pressure_cell (averaged)'"), std::string::npos) << result.err;
+}
+
 TEST_F(Cli, EveryCommandTakesTheArrayOptions)
 {
     for (const char* command : {"render", "optimize", "evaluate", "sdf"}) {

@@ -156,6 +156,29 @@ TEST(ShowArray, DefaultIsTheFilesActiveScalarsPointBeforeCell)
     EXPECT_EQ(&defaultArray(f), &f.arrays[1]);
 }
 
+TEST(ShowArray, CellToPointTakesCellArraysOnly)
+{
+    SurfaceField f = field();  // p, v (point), c, p, a:b (cell)
+    f.arrays[1].activeScalars = true;
+    EXPECT_EQ(&defaultArray(f, true), &f.arrays[2]);  // the first cell array, not the active point v
+    f.arrays[3].activeScalars = true;
+    EXPECT_EQ(&defaultArray(f, true), &f.arrays[3]);  // the active cell scalars
+    showArray(f, "c", true);
+    EXPECT_EQ(f.valuesOn, Association::Point);
+    EXPECT_EQ(f.name, "c (averaged)");
+    try {
+        showArray(f, "v", true);
+        ADD_FAILURE() << "a point array is averaged from no cells";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "f.vtp: --cell-to-point averages a cell array; 'v' is a point array (a cell array "
+                               "by name: --scalar cell:NAME)");
+    }
+    f.arrays.resize(2);
+    EXPECT_THROW(defaultArray(f, true), InputError);
+    f.arrays.clear();
+    EXPECT_THROW(defaultArray(f, true), InputError);
+}
+
 
 TEST(ArrayPattern, StarAndQuestionMarkMakeAPattern)
 {

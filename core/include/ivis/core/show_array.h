@@ -16,9 +16,9 @@ namespace ivis::core {
 ///        is wins over a split at its last ':' or its first, a point array over a cell array of
 ///        the same name
 /// @param cellToPoint show a cell array averaged onto the vertices (cellToPoint) instead of one
-///        flat value per triangle; no effect on a point array
-/// @throw InputError "<source>: no array 'x'; available: ..." or naming a component that does
-///        not exist
+///        flat value per triangle
+/// @throw InputError "<source>: no array 'x'; available: ...", naming a component that does
+///        not exist, or when @a cellToPoint and the array is a point array
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
 
 /// @brief The spec that names @a array and no other of its name: "point:NAME" or "cell:NAME".
@@ -26,9 +26,11 @@ std::string qualifiedArrayName(const DataArray& array);
 
 /// @brief The array shown when a file carries arrays and none is chosen: the active point scalars,
 ///        else the active cell scalars (DataArray::activeScalars: what ParaView colours by), else
-///        the first point array, else the first cell array.
-/// @note Call only when field.arrays is not empty.
-const DataArray& defaultArray(const SurfaceField& field);
+///        the first point array, else the first cell array. With @a cellToPoint only the cell
+///        arrays count: the active cell scalars, else the first cell array.
+/// @note Without @a cellToPoint call only when field.arrays is not empty.
+/// @throw InputError when @a cellToPoint and the field has no cell array
+const DataArray& defaultArray(const SurfaceField& field, bool cellToPoint = false);
 
 /// @brief True when @a spec is a pattern of array names: it holds '*' (any run of characters) or
 ///        '?' (one character).
