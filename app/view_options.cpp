@@ -39,7 +39,8 @@ void ViewOptions::addTo(CLI::App& command)
         ->excludes("--theta")
         ->excludes("--phi")
         ->excludes("--fov");
-    command.add_option("--res", resolution, "Image size WxH")->capture_default_str();
+    command.add_option("--res", resolution,
+                       "Picture size WxH (the colour bar's margin is added beside it; --no-legend for exactly WxH)")->capture_default_str();
     // Checked here: the renderer's own check came after the volume was built and the rule chosen.
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")
         ->check(CLI::Range(1, 1024))
@@ -83,7 +84,10 @@ const ViewFile* ViewOptions::view() const
 core::Camera ViewOptions::camera() const
 {
     if (const ViewFile* v = view()) return v->camera;
-    if (!cameraFile.empty()) return core::readCameraJson(cameraFile);
+    if (!cameraFile.empty()) {
+        if (!mCameraFileCamera) mCameraFileCamera = core::readCameraJson(cameraFile);
+        return *mCameraFileCamera;
+    }
     core::Camera camera =
         core::Camera::fromAngles(theta, phi, core::kCameraDistance, fovYDeg.value_or(core::kDefaultFovYDeg));
     camera.orthographic = orthographic;

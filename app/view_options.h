@@ -92,6 +92,7 @@ private:
 
     CLI::App* mCommand = nullptr;
     mutable std::shared_ptr<const ViewFile> mView;  ///< --view's file, once read
+    mutable std::optional<core::Camera> mCameraFileCamera;  ///< --camera's file, once read
 };
 
 }  // namespace ivis::app

@@ -152,9 +152,25 @@ int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOpti
         // + triangle; per far voxel 16 bytes.
         const std::size_t bytes = 16 * farCount + 20 * voxelCount(band, resolution, largest);
         if (bytes <= options.budgetBytes && largest <= options.maxTextureSize) return resolution;
-        if (resolution <= 16)
-            throw ValueError("the volume textures do not fit " + std::to_string(options.budgetBytes >> 20) +
-                             " MiB even at resolution 16");
+        if (resolution <= 16) {
+            char text[400];
+            if (farLargest > options.maxTextureSize)
+                std::snprintf(text, sizeof text,
+                              "the far field's textures are %d voxels across, more than the GPU's largest 3D texture "
+                              "(%d): lower --reach",
+                              farLargest, options.maxTextureSize);
+            else if (farCount > 0)
+                std::snprintf(text, sizeof text,
+                              "the volume textures need %.1f MiB even at resolution 16, more than --texture-budget %zu "
+                              "MiB: the far field (reach %g) alone takes %.1f MiB; raise the budget or lower --reach",
+                              double(bytes) / double(1 << 20), options.budgetBytes >> 20,
+                              volume.options.farFieldReach, double(16 * farCount) / double(1 << 20));
+            else
+                std::snprintf(text, sizeof text,
+                              "the volume textures need %.1f MiB even at resolution 16, more than --texture-budget %zu MiB",
+                              double(bytes) / double(1 << 20), options.budgetBytes >> 20);
+            throw ValueError(text);
+        }
         // Bytes scale with N^3 and dims with N: jump close to the answer, then creep down.
         const double room = double(options.budgetBytes) - 16.0 * double(farCount);
         const double scale = std::min(std::cbrt(std::max(room, 1.0) / double(bytes - 16 * farCount)),

@@ -22,8 +22,11 @@ void ViewerOptions::addTo(CLI::App& app)
     // Flags of `inversevis render` that have no meaning in a window.
     for (const char* name : {"--res", "--spp", "--transparent"})
         app.remove_option(app.get_option(name));
-    app.add_option("--width", width, "Window width in pixels (headless: the image width)")->capture_default_str();
-    app.add_option("--height", height, "Window height in pixels (headless: the image height)")->capture_default_str();
+    app.add_option("--width", width,
+                   "Window width in pixels (headless: the picture's width; the colour bar's margin is added beside it, "
+                   "as render's --res)")
+        ->capture_default_str();
+    app.add_option("--height", height, "Window height in pixels (headless: the picture's height)")->capture_default_str();
     app.add_option("--screenshot", screenshot,
                    "Render without input, write this PNG and exit; of a series, one per step, numbered as render "
                    "numbers frames (shot_0000.png, ...), each step shown as the time slider shows it");
@@ -60,6 +63,7 @@ void ViewerOptions::validate()
                       {uiScreenshot, "--ui-screenshot", {".png"}}},
                      readFiles(sources, mesh.load.read.scalarFile, view.cameraFile, view.viewFile));
     mesh.fitReachTo({view.renderOptions().method});
+    view.camera();  // reads --camera or --view now: a bad file fails alone, before the mesh's notes
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)
         throw InputError("--screenshot, --ui-screenshot and --benchmark exclude each other");
 }

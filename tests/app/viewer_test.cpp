@@ -433,11 +433,14 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
         EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     }
     // A series with a bad step, or a pattern matching no array: every step is checked before a word.
+    // A bad camera file fails before the note naming the file's default array.
+    writeFile(dir.file("cam.json"), "{bad");
     writeFile(dir.file("late.pvd"), "<VTKFile type=\"Collection\"><Collection>\n<DataSet file=\"" +
                                         sharedMesh("vtk/artery_series/artery_t0200.vtp") +
                                         "\"/>\n<DataSet file=\"broken.obj\"/>\n</Collection></VTKFile>\n");
     for (const std::string& arguments :
-         {"'" + dir.file("late.pvd") + "'", "'" + sharedMesh("vampy_artery_cfd_pressure.ply") + "' --scalar 'velocity*'"}) {
+         {"'" + dir.file("late.pvd") + "'", "'" + sharedMesh("vampy_artery_cfd_pressure.ply") + "' --scalar 'velocity*'",
+          "'" + sharedMesh("vtk/artery_series/artery_t0200.vtp") + "' --camera '" + dir.file("cam.json") + "'"}) {
         const RunResult run = runViewer(arguments + " --screenshot '" + dir.file("x.png") + "'", false, dir);
         EXPECT_EQ(run.status, 2) << run.output;
         EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
@@ -457,6 +460,15 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
         EXPECT_NE(run.output.find(problem), std::string::npos) << run.output;
         EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     }
+    // A far field larger than the texture budget is named as the cause (it was "do not fit").
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    const RunResult budget = runViewer("scene:sphere --volume-res 256 --reach 2 --texture-budget 16 --cache-dir '" +
+                                           dir.path() + "' --screenshot '" + dir.file("s.png") + "'",
+                                       true, dir);
+    EXPECT_EQ(budget.status, 2) << budget.output;
+    EXPECT_NE(budget.output.find("more than --texture-budget 16 MiB: the far field (reach 2) alone takes"),
+              std::string::npos)
+        << budget.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("s.jpg")));
     EXPECT_FALSE(std::filesystem::exists(dir.file("s.png")));
     // No display at all: a clear error, not a crash.
