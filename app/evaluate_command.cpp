@@ -163,6 +163,22 @@ Command addEvaluateCommand(CLI::App& app)
             results = nlohmann::json::parse(in, nullptr, false);
             if (!results.is_object()) throw InputError(options->json + ": not the JSON of an evaluation (--resume)");
         }
+        // What the figures depend on, kept in every entry: merge and --resume join only entries of one evaluation.
+        nlohmann::json settings = options->mesh.settingsJson();
+        settings.update(options->optimization.settingsJson());
+        settings.update({{"--opt-res", options->optResolutions},
+                         {"--display-res", options->displayResolution},
+                         {"--fov", options->fovYDeg ? nlohmann::json(*options->fovYDeg) : nlohmann::json()}});
+        for (const auto& [stem, methods] : results.items()) {
+            if (!methods.is_object())
+                throw InputError(options->json + ": '" + stem + "' is not an object of methods (--resume)");
+            for (const auto& [method, entry] : methods.items())
+                if (const std::string difference = settingsDifference(
+                        entry.is_object() ? entry.value("settings", nlohmann::json()) : nlohmann::json(), settings, true);
+                    !difference.empty())
+                    throw InputError(options->json + ": " + stem + ":" + method + " was evaluated with " + difference +
+                                     " in this run; --resume continues an evaluation with its options");
+        }
         ReportLayout layout{{}, options->methods, options->optResolutions, options->displayResolution};
         for (const std::string& mesh : options->meshes) {
             const std::string stem = core::sourceStem(mesh);
@@ -209,7 +225,7 @@ Command addEvaluateCommand(CLI::App& app)
             for (const std::string& methodName : methods) {
                 progress.setContext(meshLabel + ", " + methodName);
                 const render::MethodPtr start = render::makeMethod(methodName);
-                nlohmann::json entry = {{"seconds", nlohmann::json::object()}};
+                nlohmann::json entry = {{"seconds", nlohmann::json::object()}, {"settings", settings}};
                 optimize::VisitedView best;
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];

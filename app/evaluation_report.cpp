@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <set>
 #include <sstream>
 
 namespace ivis::app {
@@ -105,6 +106,23 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
         markdown += "\n## Hot-spot reveal in percent of the important surface: total (direct) [each region]\n\n" +
                     methodTable(results, layout, revealText);
     return markdown + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + secondsTable(results, layout);
+}
+
+std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b, bool sameMesh)
+{
+    if (a == b) return "";
+    if (!a.is_object() || !b.is_object()) return "no settings recorded";
+    const std::set<std::string> meshSettings{"--scalar",   "--scalar-file", "--cell-to-point",
+                                             "--hotspots", "--cap-holes",   "--distance"};
+    auto value = [](const nlohmann::json& settings, const std::string& flag) {
+        const nlohmann::json shown = settings.value(flag, nlohmann::json());
+        return shown.is_null() ? std::string("unset") : shown.dump();
+    };
+    nlohmann::json flags = a;
+    flags.update(b);
+    for (const auto& [flag, ignored] : flags.items())
+        if ((sameMesh || meshSettings.count(flag) == 0) && value(a, flag) != value(b, flag)) return flag + " " + value(a, flag) + " against " + value(b, flag);
+    return "";
 }
 
 }  // namespace ivis::app

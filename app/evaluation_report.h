@@ -24,4 +24,12 @@ struct ReportLayout {
 ///        evaluate writes it); a method the row lacks (a partial job's) shows "-".
 std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout);
 
+/// @brief How the settings @a a differ from @a b (an evaluation entry's "settings": options keyed
+///        by their flags): "" when they are the same, else the first flag that differs with both
+///        values, as "--steps 10 against 20", or "no settings recorded" when one side has none.
+/// @param sameMesh false for the entries of two meshes, which may differ in what each mesh shows
+///        and how it is read (--scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes,
+///        --distance), as docs/results.md's runs show the artery's pressure and hot spots elsewhere
+std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b, bool sameMesh);
+
 }  // namespace ivis::app

@@ -65,6 +65,8 @@ Command addMergeCommand(CLI::App& app)
         std::set<int> resolutions;
         std::vector<int> displayResolutions;
         std::map<std::string, std::string> source;  // "stem:method" -> the part that holds it
+        std::map<std::string, std::string> firstOf;  // stem ("" for any) -> "stem:method" of its first entry
+        std::map<std::string, nlohmann::json> settingsOf;  // "stem:method" -> its settings
         for (const std::string& path : options->parts) {
             const nlohmann::json part = readPart(path);
             for (const auto& [stem, methods] : part.items()) {
@@ -76,6 +78,17 @@ Command addMergeCommand(CLI::App& app)
                     const std::string key = stem + ":" + method;
                     if (source.count(key)) throw InputError(path + ": " + key + " is in " + source.at(key) + " too");
                     source[key] = path;
+                    // Every entry shares the first one's settings, and its mesh's first entry's all of them.
+                    settingsOf[key] = entry.value("settings", nlohmann::json());
+                    for (const std::string& of : {std::string(), stem}) {
+                        const std::string& first = firstOf.emplace(of, key).first->second;
+                        if (const std::string difference =
+                                settingsDifference(settingsOf[key], settingsOf.at(first), !of.empty());
+                            !difference.empty())
+                            throw InputError(path + ": " + key + " was evaluated with " + difference + " in " +
+                                             source.at(first) + " (" + first +
+                                             "); merge parts of one evaluation, evaluated with the same options");
+                    }
                     results[stem][method] = entry;
                     methodsSeen.insert(method);
                     for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));

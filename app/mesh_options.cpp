@@ -75,6 +75,19 @@ void MeshOptions::useViewScalar(const std::string& scalarName, const std::string
     load.hotSpots = hotSpots;
 }
 
+nlohmann::json MeshOptions::settingsJson() const
+{
+    return {{"--scalar", load.read.scalarName},
+            {"--scalar-file", load.read.scalarFile},
+            {"--cell-to-point", load.read.cellToPoint},
+            {"--hotspots", load.hotSpots},
+            {"--cap-holes", load.capHoles},
+            {"--volume-res", volume.resolution},
+            {"--band", volume.bandVoxels},
+            {"--reach", reachOption && reachOption->count() > 0 ? nlohmann::json(volume.farFieldReach) : nlohmann::json()},
+            {"--distance", distance}};
+}
+
 vdb::VolumeOptions MeshOptions::volumeOptions() const
 {
     vdb::VolumeOptions options = volume;

@@ -7,6 +7,7 @@
 #include <ivis/vdb/surface_volume.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct MeshOptions {
     /// @brief Shows the scalar a view file chose (--scalar NAME, --scalar-file FILE or --hotspots N)
     ///        unless this command line chose one itself.
     void useViewScalar(const std::string& scalarName, const std::string& scalarFile, int hotSpots);
+    /// @brief The loading and volume settings keyed by their flags ({"--volume-res": 200, ...});
+    ///        --reach null unless given (each method's own, raiseReachFor's).
+    nlohmann::json settingsJson() const;
     /// @brief Volume options with the distance mode parsed.
     vdb::VolumeOptions volumeOptions() const;
     /// @brief Unless --reach was given, raises the far field's reach to the most that @a methods'

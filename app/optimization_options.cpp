@@ -65,6 +65,26 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->capture_default_str();
 }
 
+nlohmann::json OptimizationOptions::settingsJson() const
+{
+    auto unlessZero = [](int value) { return value == 0 ? nlohmann::json() : nlohmann::json(value); };
+    return {{"--energy", energy},
+            {"--gamma", gamma},
+            {"--visibility-res", visibilityResolution},
+            {"--opt-visibility-res", unlessZero(optVisibilityResolution)},
+            {"--seed", seed},
+            {"--steps", steps},
+            {"--cooling", cooling},
+            {"--polish", polishDeg},
+            {"--gradient", gradient},
+            {"--ascent-iterations", ascentIterations},
+            {"--ascent-res", unlessZero(ascentResolution)},
+            {"--alpha-scan", unlessZero(alphaScan)},
+            {"--finalists", finalists},
+            {"--finalist-res", finalistResolution},
+            {"--min-coherence", minCoherence}};
+}
+
 optimize::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const
 {
     optimize::EnergyOptions options;

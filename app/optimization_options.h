@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -37,6 +38,8 @@ struct OptimizationOptions {
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
     ///        --finalist-res, --min-coherence.
     void addTo(CLI::App& command);
+    /// @brief These settings keyed by their flags ({"--steps": 20, ...}; an unset default null).
+    nlohmann::json settingsJson() const;
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
     ///        most --visibility-res: a grid with more marked voxels than rays rewards spreading the

@@ -45,6 +45,29 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
 
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("p1.json"))),
                    {"sphere:front is in", "p1.json too"});
+    // Parts of other evaluations: other options, or none recorded (they used to be joined).
+    nlohmann::json other = nlohmann::json::parse(std::ifstream(output("p2.json")));
+    other.at("torus").at("front").at("settings")["--steps"] = 2;
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"other.json: torus:front was evaluated with --steps 2 against 1 in", "p1.json (sphere:front); merge "
+                                                                                         "parts of one evaluation"});
+    // The meshes of one evaluation may show other scalars (docs/results.md: the artery's pressure,
+    // hot spots elsewhere), each mesh one for all its methods.
+    other = nlohmann::json::parse(std::ifstream(output("p2.json")));
+    nlohmann::json hot = nlohmann::json::parse(std::ifstream(output("p1.json")));
+    other.at("torus").at("front").at("settings")["--hotspots"] = 2;
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"torus:front was evaluated with --hotspots 2 against 0 in", "(torus:inversevis)"});
+    hot.at("torus").at("inversevis").at("settings")["--hotspots"] = 2;
+    test::writeFile(output("hot.json"), hot.dump());
+    const test::CliResult rows = test::runCli("merge " + quoted(output("hot.json")) + " " + quoted(output("other.json")));
+    EXPECT_EQ(rows.status, 0) << rows.err;
+    other.at("torus").at("front").erase("settings");
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"torus:front was evaluated with no settings recorded"});
     test::writeFile(output("empty.json"), "{}");
     expectBadInput(test::runCli("merge " + quoted(output("empty.json"))), {"empty.json: holds no evaluation"});
     // The tables written over a part (it was replaced, status 0).

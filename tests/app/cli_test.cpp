@@ -821,6 +821,9 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
     EXPECT_EQ(test::readFile(output("e.md")).substr(0, tables.find("## Viewpoint")), tables.substr(0, tables.find("## Viewpoint")))
         << "the same tables (the seconds may differ)";
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
+    // Resumed with other options, the kept meshes' figures would not be this run's (they were kept).
+    expectBadInput(runCli(common + " --resume --seed 2"),
+                   {"e.json: sphere:front was evaluated with --seed 1 against 2 in this run; --resume continues"});
 }
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -837,6 +840,9 @@ TEST_F(Cli, EvaluateStopsOnCtrlCKeepingTheFinishedMeshes)
     const std::string common = "--volume-res 64 --methods inversevis-adaptive --opt-res 100 --display-res 32 "
                                "--cache-dir " + quoted(output("")) + " --json " + quoted(json);
     ASSERT_EQ(runCli("evaluate scene:sphere --steps 1 " + common).status, 0);
+    nlohmann::json finished = nlohmann::json::parse(std::ifstream(json));  // as if of 1000 steps, resumed with them
+    finished.at("sphere").at("inversevis-adaptive").at("settings")["--steps"] = 1000;
+    std::ofstream(json) << finished.dump();
     // The sphere is kept; Ctrl-C arrives in the vessel tree's long annealing.
     const test::Child child = test::startCli("evaluate scene:sphere scene:vessel-tree --resume --steps 1000 " + common);
     usleep(2000000);
