@@ -1,10 +1,10 @@
 #include "output_files.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/file_extension.h>
 #include <ivis/core/surface_source.h>
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 namespace ivis::app {
@@ -46,9 +46,7 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
         if (std::filesystem::is_directory(output.path))
             throw InputError(output.path + ": " + output.option + " names a folder, not a file");
         if (!output.extensions.empty()) {
-            std::string extension = std::filesystem::path(output.path).extension().string();
-            std::transform(extension.begin(), extension.end(), extension.begin(),
-                           [](unsigned char c) { return char(std::tolower(c)); });
+            const std::string extension = core::lowerCaseExtension(output.path);
             if (std::find(output.extensions.begin(), output.extensions.end(), extension) == output.extensions.end()) {
                 std::string names;
                 for (const std::string& e : output.extensions) names += (names.empty() ? "" : " or ") + e;

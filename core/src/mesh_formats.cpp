@@ -1,9 +1,7 @@
 #include <ivis/core/mesh_formats.h>
 
+#include <ivis/core/file_extension.h>
 #include <ivis/core/raw_mesh_import.h>
-
-#include <algorithm>
-#include <filesystem>
 
 namespace ivis::core::detail {
 namespace {
@@ -32,8 +30,7 @@ const std::vector<MeshFileFormat>& meshFileFormats()
 
 const MeshFileFormat& meshFileFormat(const std::string& path)
 {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerCaseExtension(path);
     std::string known;
     for (const MeshFileFormat& format : meshFileFormats()) {
         if (ext == format.extension) return format;

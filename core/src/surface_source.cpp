@@ -1,6 +1,7 @@
 #include <ivis/core/surface_source.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/file_extension.h>
 #include <ivis/core/hole_capping.h>
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/log.h>
@@ -8,7 +9,6 @@
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/show_array.h>
 
-#include <cctype>
 #include <filesystem>
 
 namespace ivis::core {
@@ -18,9 +18,7 @@ bool isScene(const std::string& source) { return source.rfind(kScenePrefix, 0) =
 
 bool isTimeSeries(const std::string& source)
 {
-    std::string ext = std::filesystem::path(source).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".pvd";
+    return lowerCaseExtension(source) == ".pvd";
 }
 
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options)

@@ -48,6 +48,10 @@ TEST_F(Cli, LegendOnlyWritesTheBarAloneAsSvgOrPng)
     EXPECT_EQ(bar.width(), 400);     // below a 400-pixel-wide picture
     EXPECT_LT(bar.height(), 150);
     EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"bar.png", "bar.svg"}));  // nothing else, no volume
+    // The extension in any case, as the mesh readers take it (.SVG was accepted, then refused after the read).
+    const test::CliResult upper = test::runCli(render(kArtery, "--legend-only " + quoted(output("BAR.SVG"))));
+    ASSERT_EQ(upper.status, 0) << upper.err;
+    EXPECT_NE(fileText(output("BAR.SVG")).find("<linearGradient"), std::string::npos);
 }
 
 TEST_F(Cli, TheColourBarWidensThePngButNotTheExr)
