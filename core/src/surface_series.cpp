@@ -38,8 +38,8 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
                                                "arrays of a mesh file");
         MeshReadOptions arraysOnly = mOptions.read;
         arraysOnly.scalarName.clear();
-        const SurfaceField file = readMesh(sources.front(), arraysOnly);
-        for (const std::string& name : arraysMatching(file, scalar))
+        mPatternRead = readMesh(sources.front(), arraysOnly, &mPatternReport);
+        for (const std::string& name : arraysMatching(mPatternRead, scalar))
             mSteps.push_back({sources.front(), name, double(mSteps.size()), name});
     } else if (isTimeSeries(sources.front())) {
         mTimed = true;
@@ -63,13 +63,14 @@ SurfaceField SurfaceSeries::load(std::size_t index)
     const SeriesStep& step = mSteps[index];
     const bool heard = logLevel() <= LogLevel::Info;  // whether the notes of this load are printed
     if (!step.array.empty()) {
-        // A pattern's steps are arrays of one file: read it once (again, if that was unheard, so
-        // that its notes are said), then show each step's array.
+        // A pattern's steps are arrays of one file, read once: loaded from that read (again, if
+        // that load was unheard, so that its notes are said), then each step shows its array.
         if (mPatternFile.mesh.triangles.empty() || (heard && !mFirstNotesSaid)) {
-            SurfaceLoadOptions first = mOptions;
-            first.read.scalarName = step.array;
-            mPatternFile = loadSurface(step.path, first);
+            SurfaceField read = mPatternRead;
+            showArray(read, step.array, mOptions.read.cellToPoint);
+            mPatternFile = loadReadSurface(step.path, std::move(read), mPatternReport, mOptions);
             mFirstNotesSaid = heard;
+            if (heard) mPatternRead = SurfaceField();  // not needed again
         }
         SurfaceField field = mPatternFile;
         showArray(field, step.array, mOptions.read.cellToPoint);

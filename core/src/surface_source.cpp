@@ -14,46 +14,11 @@
 namespace ivis::core {
 namespace {
 bool isScene(const std::string& source) { return source.rfind(kScenePrefix, 0) == 0; }
-}  // namespace
 
-bool isTimeSeries(const std::string& source)
+/// Caps holes when asked, normalises and puts the hot spots on: the steps after a surface is read
+/// or generated.
+SurfaceField finishSurface(const std::string& source, SurfaceField field, const SurfaceLoadOptions& options)
 {
-    return lowerCaseExtension(source) == ".pvd";
-}
-
-SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options)
-{
-    SurfaceField field;
-    if (isScene(source)) {
-        if (!options.read.scalarName.empty() || !options.read.scalarFile.empty() || options.read.cellToPoint)
-            throw InputError(source + ": generated scenes carry their own scalar; --scalar, --scalar-file and "
-                                      "--cell-to-point apply to mesh files only");
-        field = makeScene(source.substr(std::string(kScenePrefix).size()));
-    } else if (isTimeSeries(source)) {
-        const std::vector<TimeStep> steps = readPvd(source);
-        throw InputError(source + ": a time series of " + std::to_string(steps.size()) +
-                         (steps.size() == 1 ? " step" : " steps") + "; this command takes one step's file, such as " +
-                         steps.front().path + " (render, optimize and the viewer take series)");
-    } else if (isArrayPattern(options.read.scalarName)) {
-        throw InputError(source + ": --scalar '" + options.read.scalarName +
-                         "' is a pattern, which makes a time series of the arrays it matches; this command shows "
-                         "one array (render, optimize and the viewer take series)");
-    } else if (options.hotSpots > 0 && options.read.cellToPoint) {
-        throw InputError(source + ": --cell-to-point averages a cell array; hot spots are one value per vertex");
-    } else {
-        MeshReadReport report;
-        field = readMesh(source, options.read, &report);
-        for (const std::string& note : report.notes) logInfo(source + ": " + note);
-        if (report.degenerateDropped > 0) {
-            logInfo(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles");
-        }
-        if (!field.hasScalar() && options.hotSpots == 0 && (!field.arrays.empty() || options.read.cellToPoint)) {
-            const DataArray& shown = defaultArray(field, options.read.cellToPoint);
-            showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
-            logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
-                    "' (choose another with --scalar NAME; `inversevis info` lists them)");
-        }
-    }
     if (options.capHoles) {
         const std::size_t loops = capHoles(field);
         if (loops > 0) logInfo(source + ": capped " + std::to_string(loops) + " boundary loops");
@@ -65,6 +30,54 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         field.name = "hotspots";
     }
     return field;
+}
+
+}  // namespace
+
+bool isTimeSeries(const std::string& source)
+{
+    return lowerCaseExtension(source) == ".pvd";
+}
+
+SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options)
+{
+    if (isScene(source)) {
+        if (!options.read.scalarName.empty() || !options.read.scalarFile.empty() || options.read.cellToPoint)
+            throw InputError(source + ": generated scenes carry their own scalar; --scalar, --scalar-file and "
+                                      "--cell-to-point apply to mesh files only");
+        return finishSurface(source, makeScene(source.substr(std::string(kScenePrefix).size())), options);
+    }
+    if (isTimeSeries(source)) {
+        const std::vector<TimeStep> steps = readPvd(source);
+        throw InputError(source + ": a time series of " + std::to_string(steps.size()) +
+                         (steps.size() == 1 ? " step" : " steps") + "; this command takes one step's file, such as " +
+                         steps.front().path + " (render, optimize and the viewer take series)");
+    }
+    if (isArrayPattern(options.read.scalarName)) {
+        throw InputError(source + ": --scalar '" + options.read.scalarName +
+                         "' is a pattern, which makes a time series of the arrays it matches; this command shows "
+                         "one array (render, optimize and the viewer take series)");
+    }
+    if (options.hotSpots > 0 && options.read.cellToPoint)
+        throw InputError(source + ": --cell-to-point averages a cell array; hot spots are one value per vertex");
+    MeshReadReport report;
+    SurfaceField field = readMesh(source, options.read, &report);
+    return loadReadSurface(source, std::move(field), report, options);
+}
+
+SurfaceField loadReadSurface(const std::string& source, SurfaceField field, const MeshReadReport& report,
+                             const SurfaceLoadOptions& options)
+{
+    for (const std::string& note : report.notes) logInfo(source + ": " + note);
+    if (report.degenerateDropped > 0)
+        logInfo(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles");
+    if (!field.hasScalar() && options.hotSpots == 0 && (!field.arrays.empty() || options.read.cellToPoint)) {
+        const DataArray& shown = defaultArray(field, options.read.cellToPoint);
+        showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
+        logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
+                "' (choose another with --scalar NAME; `inversevis info` lists them)");
+    }
+    return finishSurface(source, std::move(field), options);
 }
 
 std::string sourceStem(const std::string& source)

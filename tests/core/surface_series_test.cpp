@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -90,9 +91,10 @@ TEST(SurfaceSeries, TheDefaultArrayIsSaidOnce)
     expectSaidOnce(testing::internal::GetCapturedStderr(), "showing the point array 'pressure'");
 }
 
-TEST(SurfaceSeries, APatternFileReadUnheardIsReadAgainToSayItsNotes)
+TEST(SurfaceSeries, APatternFileIsReadOnceAndItsNotesSaidOnce)
 {
-    // A pattern's file was read once, by the survey under a silenced log: its notes were never said.
+    // A pattern's file was loaded once, by the survey under a silenced log: its notes were never
+    // said. Then it was read again to say them; it is read once, when the series is made.
     test::TempDir dir;
     const std::string ply = dir.file("two.ply");
     test::writeFile(ply, "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
@@ -100,6 +102,7 @@ TEST(SurfaceSeries, APatternFileReadUnheardIsReadAgainToSayItsNotes)
                          "property list uchar int vertex_indices\nend_header\n0 0 0 1 2\n1 0 0 1 2\n0 1 0 1 2\n"
                          "0 0 1 1 2\n3 0 1 2\n3 0 0 3\n");
     SurfaceSeries series({ply}, scalar("p_t*"));
+    std::filesystem::remove(ply);
     {
         const ScopedLogLevel silent(LogLevel::Silent);
         EXPECT_EQ(series.load(0).values, std::vector<float>(4, 1.0f));

@@ -55,7 +55,9 @@ private:
     std::string mSource;
     bool mTimed = false;
     SurfaceLoadOptions mOptions;
-    SurfaceField mPatternFile;  ///< the pattern's file, read once, or twice (empty for a series of files)
+    SurfaceField mPatternRead;     ///< the pattern's file as read, until a heard load has said its notes
+    MeshReadReport mPatternReport;  ///< what reading it reported
+    SurfaceField mPatternFile;     ///< the pattern's file loaded (empty for a series of files)
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
     bool mFirstNotesSaid = false;  ///< whether a heard load (info printing) said the first step's notes
 };

@@ -29,6 +29,12 @@ struct SurfaceLoadOptions {
 ///        message naming the source
 SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& options = {});
 
+/// @brief loadSurface's work after it reads a mesh file: @a field and @a report as readMesh gave
+///        them for @a source (with @a options.read), for a file read once and shown again (the steps
+///        of a --scalar pattern, core::SurfaceSeries).
+SurfaceField loadReadSurface(const std::string& source, SurfaceField field, const MeshReadReport& report,
+                             const SurfaceLoadOptions& options);
+
 /// @brief True when @a source is a time series (a ParaView collection, `.pvd`).
 bool isTimeSeries(const std::string& source);
 
