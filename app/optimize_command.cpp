@@ -75,17 +75,18 @@ Command addOptimizeCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
-        checkOutputFiles({{options->output, "-o", {".png"}},
-                          {options->json, "--json", {}},
-                          {options->plot, "--plot", {".png"}},
-                          {options->exr, "--exr", {".exr"}},
-                          {options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut,
-                           options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out",
-                           {}},
-                          {options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
-                           options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out", {}}},
-                         readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,
-                                   options->view.viewFile));
+        const std::vector<OutputFile> outputs = {
+            {options->output, "-o", {".png"}},
+            {options->json, "--json", {}},
+            {options->plot, "--plot", {".png"}},
+            {options->exr, "--exr", {".exr"}},
+            {options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut,
+             options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
+            {options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
+             options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out", {}}};
+        const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
+                                                        options->view.cameraFile, options->view.viewFile);
+        checkOutputFiles(outputs, inputs);
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
@@ -105,6 +106,11 @@ Command addOptimizeCommand(CLI::App& app)
         core::ColorScale seriesScale;
         if (isSeries) {
             series.emplace(options->sources, options->mesh.load);
+            SeriesRenderRequest frames;  // the names renderSeries gives the frames
+            frames.png = options->output;
+            frames.exr = options->exr;
+            frames.video = !options->noVideo;
+            checkSeriesOutputFiles(frames, series->steps().size(), outputs, inputs);
             seriesScale = options->view.colorScaleRequest().resolve(surveySeries(*series).sample);
             // Silent, as the survey: the frames load the steps again and say their notes (a refused
             // series says only why).

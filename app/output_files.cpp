@@ -2,6 +2,7 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/file_extension.h>
+#include <ivis/core/pvd_reader.h>
 #include <ivis/core/surface_source.h>
 
 #include <algorithm>
@@ -20,8 +21,12 @@ std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const s
                                  const std::string& cameraFile, const std::string& viewFile)
 {
     std::vector<InputFile> inputs;
-    for (const std::string& mesh : meshes)
-        if (mesh.rfind(core::kScenePrefix, 0) != 0) inputs.push_back({mesh, "the mesh"});
+    for (const std::string& mesh : meshes) {
+        if (mesh.rfind(core::kScenePrefix, 0) == 0) continue;
+        inputs.push_back({mesh, "the mesh"});
+        if (core::isTimeSeries(mesh))
+            for (const core::TimeStep& step : core::readPvd(mesh)) inputs.push_back({step.path, "a step of " + mesh});
+    }
     inputs.push_back({scalarFile, "--scalar-file"});
     inputs.push_back({cameraFile, "--camera"});
     inputs.push_back({viewFile, "--view"});

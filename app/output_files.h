@@ -27,8 +27,9 @@ struct InputFile {
     std::string option;
 };
 
-/// @brief The files a command reads, for checkOutputFiles: its meshes (a .pvd, not its steps),
+/// @brief The files a command reads, for checkOutputFiles: its meshes (a .pvd and its steps' files),
 ///        --scalar-file, --camera and --view (each empty when not given or not taken).
+/// @throw InputError for a .pvd that cannot be read
 std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const std::string& scalarFile,
                                  const std::string& cameraFile, const std::string& viewFile);
 

@@ -112,17 +112,19 @@ Command addRenderCommand(CLI::App& app)
     return {command, [options] {
         // The camera is written beside the picture (a series': beside its frames) unless told where.
         const bool defaultCamera = options->cameraOut.empty();
-        checkOutputFiles({{options->output, "-o", {".png"}},
-                          {options->exr, "--exr", {".exr"}},
-                          {options->statsJson, "--stats-json", {}},
-                          {defaultCamera ? options->output + ".camera.json" : options->cameraOut,
-                           defaultCamera ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
-                          {options->legendOnly, "--legend-only", {".svg", ".png"}},
-                          {options->viewOut, "--view-out", {}},
-                          {options->tearMap, "--tear-map", {".png"}},
-                          {options->unseenMap, "--unseen-map", {".png"}}},
-                         readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,
-                                   options->view.viewFile));
+        const std::vector<OutputFile> outputs = {
+            {options->output, "-o", {".png"}},
+            {options->exr, "--exr", {".exr"}},
+            {options->statsJson, "--stats-json", {}},
+            {defaultCamera ? options->output + ".camera.json" : options->cameraOut,
+             defaultCamera ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
+            {options->legendOnly, "--legend-only", {".svg", ".png"}},
+            {options->viewOut, "--view-out", {}},
+            {options->tearMap, "--tear-map", {".png"}},
+            {options->unseenMap, "--unseen-map", {".png"}}};
+        const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
+                                                        options->view.cameraFile, options->view.viewFile);
+        checkOutputFiles(outputs, inputs);
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
         const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
         const bool chooseRule =
@@ -149,6 +151,12 @@ Command addRenderCommand(CLI::App& app)
                 throw InputError("--unseen-map: a series has one picture per step; render the step alone");
             core::SurfaceSeries series(options->sources, options->mesh.load);
             SeriesRenderRequest request;
+            request.png = options->output;
+            request.exr = options->exr;
+            request.video = !options->noVideo && options->frames.empty();  // a job's part: no video
+            request.firstStep = frameRange.firstStep;
+            request.lastStep = frameRange.lastStep;
+            if (options->legendOnly.empty()) checkSeriesOutputFiles(request, series.steps().size(), outputs, inputs);
             request.method = options->view.renderOptions().method;
             request.camera = requested;
             // Loads every step: a bad one fails before anything is written.
@@ -165,12 +173,7 @@ Command addRenderCommand(CLI::App& app)
             }
             request.volume = volumeOptions;
             request.cacheFolder = optionalCacheFolder(options->cacheDir);  // after the checks: their one line
-            request.png = options->output;
-            request.exr = options->exr;
             request.cameraOut = options->cameraOut;
-            request.video = !options->noVideo && options->frames.empty();  // a job's part: no video
-            request.firstStep = frameRange.firstStep;
-            request.lastStep = frameRange.lastStep;
             request.fps = options->fps;
             request.measure = options->measure;
             request.minCoherence = chooseRule ? options->minCoherence : 0.0;

@@ -59,6 +59,18 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
                                                 "pattern); " + source + " is one mesh");
 }
 
+void checkSeriesOutputFiles(const SeriesRenderRequest& request, std::size_t steps, std::vector<OutputFile> others,
+                            const std::vector<InputFile>& inputs)
+{
+    for (std::size_t k = request.firstStep; k <= std::min(request.lastStep, steps - 1); ++k) {
+        const std::string frame = " (frame " + std::to_string(k) + ")";
+        others.push_back({framePath(request.png, k, steps), "-o" + frame, {}});
+        if (!request.exr.empty()) others.push_back({framePath(request.exr, k, steps), "--exr" + frame, {}});
+    }
+    if (request.video) others.push_back({videoPath(request.png), "the video (-o's name as .mp4)", {}});
+    checkOutputFiles(others, inputs);
+}
+
 nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view, SeriesRenderRequest& request,
                             core::ProgressBar* progress)
 {

@@ -5,6 +5,7 @@
 ///        then an MP4 when ffmpeg is on PATH.
 #pragma once
 
+#include "output_files.h"
 #include "view_options.h"
 
 #include <ivis/core/colormap.h>
@@ -49,6 +50,13 @@ void parseFrameRange(const std::string& text, SeriesRenderRequest& request);
 /// @brief Rejects the first of @a seriesFlags that was given: they apply to a time series only.
 /// @throw InputError "--fps: applies to a time series (...); <source> is one mesh"
 void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source);
+
+/// @brief Checks the files a render of @a request writes of a series of @a steps steps, before one
+///        is read: each frame's PNG and EXR, the video, and the command's @a others (its statistics,
+///        its camera, ...), none the same as another nor one of @a inputs (checkOutputFiles).
+/// @throw InputError naming the file and the problem
+void checkSeriesOutputFiles(const SeriesRenderRequest& request, std::size_t steps, std::vector<OutputFile> others,
+                            const std::vector<InputFile>& inputs);
 
 /// @brief Renders every step of @a series as @a view and @a request say.
 /// @return the statistics: the series, its range, the volumes loaded, the camera, the video, and

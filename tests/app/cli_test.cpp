@@ -324,6 +324,23 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
                    {values + ": --stats-json would overwrite --scalar-file, which this command reads"});
     expectRejected(render(mesh, "--stats-json " + quoted(mesh)),
                    {mesh + ": --stats-json would overwrite the mesh, which this command reads"});
+    // A series: its steps' files are read, and its frames and video are written (they were
+    // overwritten by --stats-json, --json, --camera-out and --view-out).
+    const std::string step = input("m2.obj"), pvd = input("s.pvd");
+    test::writeFile(step, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+    test::writeFile(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\" file=\"m.obj\"/>"
+                         "<DataSet timestep=\"1\" file=\"m2.obj\"/></Collection></VTKFile>");
+    expectRejected(render(pvd, "--stats-json " + quoted(step)),
+                   {step + ": --stats-json would overwrite a step of " + pvd + ", which this command reads"});
+    expectRejected(render(pvd, "--no-video --stats-json " + quoted(output("x_0001.png"))),
+                   {"x_0001.png: named by both --stats-json and -o (frame 1)"});
+    expectRejected(render(pvd, "--exr " + quoted(output("x.exr")) + " --view-out " + quoted(output("x_0000.exr"))),
+                   {"x_0000.exr: named by both --view-out and --exr (frame 0)"});
+    expectRejected(render(pvd, "--camera-out " + quoted(output("x.mp4"))),
+                   {"x.mp4: named by both --camera-out and the video (-o's name as .mp4)"});
+    expectRejected("optimize " + quoted(pvd) + " --volume-res 48 -o " + quoted(output("b.png")) + " --json " +
+                       quoted(output("b_0000.png")),
+                   {"b_0000.png: named by both --json and -o (frame 0)"});
     test::writeFile(input("v.json"), "{}");
     expectRejected(render("scene:sphere", "--view-out " + quoted(input("v.json")) + " --view " +
                                               quoted(input("v.json"))),
