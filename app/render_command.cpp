@@ -110,6 +110,7 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
+        options->view.rangeOfEachPicture = options->rangePerFrame;
         // The camera is written beside the picture (a series': beside its frames) unless told where.
         const bool defaultCamera = options->cameraOut.empty();
         const std::vector<OutputFile> outputs = {
@@ -160,8 +161,9 @@ Command addRenderCommand(CLI::App& app)
             request.method = options->view.renderOptions().method;
             request.camera = requested;
             // Loads every step: a bad one fails before anything is written.
-            const SeriesSurvey survey = surveySeries(series);
-            request.stepRanges = survey.stepRanges;
+            const core::ColorScaleRequest eachFrame = options->view.colorScaleRequest();
+            const SeriesSurvey survey = surveySeries(series, options->rangePerFrame ? &eachFrame : nullptr);
+            request.stepScales = survey.stepScales;
             if (!options->rangePerFrame || !options->legendOnly.empty())
                 request.scale = options->view.colorScaleRequest().resolve(survey.sample);
             if (!options->legendOnly.empty()) {

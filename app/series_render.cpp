@@ -23,9 +23,9 @@ namespace {
 
 /// The widest colour-bar margin over the steps of @a series, so that every frame has the same size:
 /// each step's title (of the scalar @a name) with the look of @a options and the series' one scale,
-/// or, when each frame has its own range, each step's data range (@a stepRanges).
+/// or, when each frame has its own range, each step's own scale (@a stepScales).
 int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOptions& options, const std::string& name,
-                       const std::vector<core::ScalarRange>& stepRanges)
+                       const std::vector<core::ColorScale>& stepScales)
 {
     if (!options.legend) return 0;
     int margin = 0;
@@ -33,7 +33,7 @@ int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOp
         const core::SeriesStep& step = series.steps()[k];
         core::ColorBarContent content{options.shading.colormap, options.shading.scale,
                                       seriesStepTitle(series, step, step.array.empty() ? name : step.array), options.units};
-        if (k < stepRanges.size()) content.scale.range = stepRanges[k];
+        if (k < stepScales.size()) content.scale = stepScales[k];
         margin = std::max(margin, core::colorBarMargin(content, options.width, options.height, options.legendSide));
     }
     return margin;
@@ -111,7 +111,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         options.scalarName = seriesStepTitle(series, step, current.field().name);
         if (k == first)
             legendMargin = seriesLegendMargin(series, options, current.field().name,
-                                              request.scale ? std::vector<core::ScalarRange>{} : request.stepRanges);
+                                              request.scale ? std::vector<core::ColorScale>{} : request.stepScales);
         options.legendMinimumMargin = legendMargin;
         width = options.width;
         height = options.height;

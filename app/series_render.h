@@ -27,7 +27,7 @@ struct SeriesRenderRequest {
     render::MethodPtr method;                ///< the method and its parameters, the same for every frame
     core::Camera camera;                     ///< framed on the first step's picture when the view is framed
     std::optional<core::ColorScale> scale;   ///< every frame's colour scale; none: as the view gives it per frame
-    std::vector<core::ScalarRange> stepRanges;  ///< without one scale: each step's data range (sizes the colour bars alike)
+    std::vector<core::ColorScale> stepScales;  ///< without one scale: each step's own (sizes the colour bars alike)
     vdb::VolumeOptions volume;
     std::string cacheFolder;  ///< volume caches (one per geometry, named by the mesh's content hash)
     std::string png;          ///< frame k goes to framePath(png, k, steps)

@@ -19,7 +19,7 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
     return name + ", t = " + time;
 }
 
-SeriesSurvey surveySeries(core::SurfaceSeries& series)
+SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep)
 {
     const core::ScopedLogLevel silent(core::LogLevel::Silent);  // the frames load the steps again and say their notes
     SeriesSurvey survey;
@@ -29,7 +29,7 @@ SeriesSurvey surveySeries(core::SurfaceSeries& series)
         const core::SurfaceField field = series.load(k);
         survey.meshHashes.push_back(core::meshHash(field.mesh));
         const std::size_t stride = std::max<std::size_t>(1, field.values.size() * steps / kSurveySampleSize);
-        survey.stepRanges.push_back(core::scalarRangeFromData(field.values));
+        if (eachStep) survey.stepScales.push_back(eachStep->resolve(field.values));
         for (std::size_t i = 0; i < field.values.size(); ++i) {
             const float v = field.values[i];
             if (!std::isfinite(v)) continue;

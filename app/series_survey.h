@@ -3,6 +3,7 @@
 ///        range shared by all steps and each step's geometry.
 #pragma once
 
+#include <ivis/core/color_scale.h>
 #include <ivis/core/colormap.h>
 #include <ivis/core/surface_series.h>
 
@@ -18,7 +19,7 @@ inline constexpr std::size_t kSurveySampleSize = 4000000;
 /// @brief The facts of a series that take every step to know.
 struct SeriesSurvey {
     core::ScalarRange range{0.0f, 0.0f};    ///< finite range of the shown scalars over all steps ({0, 0}: none)
-    std::vector<core::ScalarRange> stepRanges;  ///< each step's finite range ({0, 0}: none)
+    std::vector<core::ColorScale> stepScales;   ///< each step's own scale (surveySeries' eachStep; else empty)
     std::vector<float> sample;              ///< the shown scalars of all steps for the colour scale: all of
                                             ///< them up to kSurveySampleSize, else an even subsample plus the
                                             ///< extremes (the smallest positive value included)
@@ -31,8 +32,10 @@ struct SeriesSurvey {
 std::string seriesStepTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name);
 
 /// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
-///        is written or said) and surveys them.
-/// @throw InputError naming the step's file for a step that cannot be loaded
-SeriesSurvey surveySeries(core::SurfaceSeries& series);
+///        is written or said) and surveys them; with @a eachStep, resolves each step's own scale
+///        from its values (each frame's range its own: --range-per-frame).
+/// @throw InputError naming the step's file for a step that cannot be loaded; ValueError when
+///        @a eachStep cannot resolve a step's scale (a log scale over a step without a positive value)
+SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep = nullptr);
 
 }  // namespace ivis::app

@@ -38,9 +38,12 @@ void ViewOptions::addTo(CLI::App& command)
         ->excludes(cameraOption)
         ->excludes("--theta")
         ->excludes("--phi")
-        ->excludes("--fov");
-    command.add_option("--res", resolution,
-                       "Picture size WxH (the colour bar's margin is added beside it; --no-legend for exactly WxH)")->capture_default_str();
+        ->excludes("--fov")
+        ->excludes("--ortho");
+    command
+        .add_option("--res", resolution,
+                    "Picture size WxH (the colour bar's margin is added beside it; --no-legend for exactly WxH)")
+        ->capture_default_str();
     // Checked here: the renderer's own check came after the volume was built and the rule chosen.
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")
         ->check(CLI::Range(1, 1024))
@@ -58,9 +61,10 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_flag("--log", logScale, "Logarithmic colour scale (the range's low end must be positive)");
     command.add_flag("--invert", invert, "Colour map reversed");
     command.add_option("--units", units, "Units shown on the colour bar (any Unicode, e.g. dyn/cm²)");
-    command.add_option("--legend", legendSide, "Side of the colour bar's margin: right, left or bottom")
-        ->capture_default_str();
-    command.add_flag("--no-legend", noLegend, "No colour bar");
+    auto* legendOption =
+        command.add_option("--legend", legendSide, "Side of the colour bar's margin: right, left or bottom")
+            ->capture_default_str();
+    command.add_flag("--no-legend", noLegend, "No colour bar")->excludes(legendOption);
     command.add_flag("--no-outline", noOutline, "No outline around the directly visible object");
     command.add_flag("--no-shadows", noShadows, "No shadow rays");
     command.add_flag("--unshaded-indirect", unshadedIndirect,
@@ -124,13 +128,11 @@ core::ColorScaleRequest ViewOptions::colorScaleRequest() const
     request.symmetric = symmetric;
     request.log = logScale;
     request.invert = invert;
-    const ViewFile* v = view();
-    const bool scaleGiven = given("--range") || given("--range-percentile") || given("--symmetric") || given("--log") ||
-                            given("--invert");
-    if (v && !scaleGiven) {  // the view's scale exactly
-        request.range = v->scale.range;
-        request.log = v->scale.log;
-        request.invert = v->scale.invert;
+    if (const ViewFile* v = view()) {  // the view's scale, but for what the command line says
+        if (!given("--range") && !given("--range-percentile") && !given("--symmetric") && !rangeOfEachPicture)
+            request.range = v->scale.range;
+        if (!given("--log")) request.log = v->scale.log;
+        if (!given("--invert")) request.invert = v->scale.invert;
     }
     request.validate();
     return request;
@@ -176,7 +178,7 @@ render::RenderOptions ViewOptions::renderOptions() const
         if (!given("--colormap")) options.shading.colormap = v->colormap;
         if (!given("--units")) options.units = v->units;
         if (!given("--legend")) options.legendSide = v->legendSide;
-        if (!given("--no-legend")) options.legend = v->legend;
+        if (!given("--no-legend") && !given("--legend")) options.legend = v->legend;  // a side given shows it
         if (!given("--no-outline")) options.outline = v->outline;
         if (!given("--no-shadows")) options.shading.shadows = v->shadows;
         if (!given("--unshaded-indirect")) options.shading.shadeIndirect = v->shadeIndirect;

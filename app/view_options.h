@@ -47,6 +47,7 @@ struct ViewOptions {
     bool noShadows = false;
     bool unshadedIndirect = false;
     bool transparent = false;
+    bool rangeOfEachPicture = false;  ///< each picture's range from its data, never the view file's (--range-per-frame)
 
 
     /// @brief Registers every option on @a command (which must outlive this object's use).
@@ -66,7 +67,9 @@ struct ViewOptions {
                                const render::Method& method, int width, int height) const;
     /// @brief "field of view 52.3 degrees, framed" (or "fixed"; orthographic: its half height).
     std::string describeFraming(const core::Camera& camera) const;
-    /// @brief The colour-scale flags (--range, --range-percentile, --symmetric, --log, --invert).
+    /// @brief The colour-scale flags (--range, --range-percentile, --symmetric, --log, --invert);
+    ///        with --view, the file's range, log and invert for those the flags do not give (its
+    ///        range not with rangeOfEachPicture).
     /// @throw ValueError when they contradict each other
     core::ColorScaleRequest colorScaleRequest() const;
     /// @brief Render options from the flags alone, every value checked, so that a bad flag fails

@@ -1,5 +1,7 @@
 #include <ivis/core/color_bar.h>
 
+#include <ivis/core/errors.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -93,6 +95,7 @@ std::vector<ColorBarTick> linearTicks(const ColorScale& scale)
 std::vector<ColorBarTick> logTicks(const ColorScale& scale)
 {
     const double lo = scale.range.lo, hi = scale.range.hi;
+    IVIS_CHECK(lo > 0.0 && lo <= hi && std::isfinite(hi));  // a log scale resolved (a negative end made 2^31 decades)
     std::vector<ColorBarTick> ticks;
     for (const std::vector<int>& multiples : {std::vector<int>{1}, {1, 2, 5}, {1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
         ticks.clear();

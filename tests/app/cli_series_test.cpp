@@ -277,6 +277,15 @@ TEST_F(CliSeries, PatternOnTheArteryMapsOneValueToOneColourInEveryFrame)
         sameValueColourDifference(indirectColours(mOutputs.path(), 2), indirectColours(mOutputs.path(), 3), tolerance);
     EXPECT_GT(ownPairs, 50);
     EXPECT_GT(ownWorst, 10);
+    // Beside a view file (its range was every frame's), and on a log scale over steps with negative
+    // values (the colour bars were sized on the raw ranges: "out of memory").
+    const std::string view = quoted(output("v.json"));
+    ASSERT_EQ(runCli(render(arteryStep("0200"), "--view-out " + view)).status, 0);
+    ASSERT_EQ(runCli(renderSeries(quoted(artery()), flat + " --range-per-frame --view " + view, "160x160")).status, 0);
+    EXPECT_NE(stats().at("frames")[2].at("range"), stats().at("frames")[3].at("range"));
+    const CliResult logarithmic = runCli(renderSeries(quoted(pvd()), "--range-per-frame --log", "160x160"));
+    ASSERT_EQ(logarithmic.status, 0) << logarithmic.err;
+    EXPECT_GT(stats().at("frames")[0].at("range")[0].get<double>(), 0.0);
 }
 
 TEST_F(CliSeries, BadSeriesWriteNothing)

@@ -97,6 +97,33 @@ TEST_F(Cli, AViewKeepsItsScalarFile)
     EXPECT_EQ(core::readPng(output("x.png")).pixels(), picture.pixels());
 }
 
+// A colour-scale or legend flag given with --view overrides its own part of the file: --invert
+// kept the file's log scale and range (it threw the whole scale away), --legend SIDE shows a
+// legend the file had off (it stayed off), and --ortho, which the file's camera ignored, is refused.
+TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
+{
+    const std::string mesh = input("tetra.obj"), values = input("values.txt");
+    test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    test::writeFile(values, "1\n2\n3\n4\n");
+    const std::string view = quoted(output("v.json")), again = quoted(output("w.json"));
+    ASSERT_EQ(test::runCli(render(mesh, "--method front --scalar-file " + quoted(values) +
+                                            " --range 2 3 --log --no-legend --view-out " + view))
+                  .status,
+              0);
+    const int bare = core::readPng(output("x.png")).width();
+    const test::CliResult inverted = test::runCli(render(mesh, "--view " + view + " --invert --view-out " + again));
+    ASSERT_EQ(inverted.status, 0) << inverted.err;
+    const nlohmann::json scale = nlohmann::json::parse(std::ifstream(output("w.json"))).at("scale");
+    EXPECT_EQ(scale.at("range"), nlohmann::json::array({2.0, 3.0}));
+    EXPECT_EQ(scale.at("log"), true);
+    EXPECT_EQ(scale.at("invert"), true);
+    EXPECT_EQ(core::readPng(output("x.png")).width(), bare);  // the file's legend: none
+    ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --legend left")).status, 0);
+    EXPECT_GT(core::readPng(output("x.png")).width(), bare);
+    expectBadInput(test::runCli(render(mesh, "--view " + view + " --ortho")), {"--ortho excludes --view"});
+    expectBadInput(test::runCli(render(mesh, "--legend left --no-legend")), {"--legend excludes --no-legend"});
+}
+
 TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
 {
     const std::string bad = input("bad.view.json");
