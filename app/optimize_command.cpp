@@ -88,7 +88,7 @@ Command addOptimizeCommand(CLI::App& app)
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
         if (const ViewFile* view = options->view.view())
-            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();

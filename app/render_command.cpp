@@ -131,7 +131,7 @@ Command addRenderCommand(CLI::App& app)
         const bool chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         if (const ViewFile* view = options->view.view())
-            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         SeriesRenderRequest frameRange;  // --frames, checked before anything is read
         if (!options->frames.empty()) {
             parseFrameRange(options->frames, frameRange);

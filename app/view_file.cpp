@@ -63,6 +63,7 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.method = render::methodFromJson(json.at("method"));
     view.scalar = json.value("scalar", std::string());
     view.scalarFile = json.value("scalar_file", std::string());
+    view.cellToPoint = json.value("cell_to_point", false);
     view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, 6) : 0;
     view.colormap = json.at("colormap").get<std::string>();
     core::colormap(view.colormap);  // known
@@ -80,6 +81,8 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.outline = json.at("outline").get<bool>();
     view.shadows = json.at("shadows").get<bool>();
     view.shadeIndirect = json.at("shade_indirect").get<bool>();
+    view.samplesPerPixel = json.contains("spp") ? wholeNumber(json.at("spp"), "spp", 1, 1024) : 1;
+    view.transparent = json.value("transparent", false);
     return view;
 }
 
@@ -96,6 +99,7 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
     view.method = options.method;
     view.scalar = load.read.scalarName;
     if (!load.read.scalarFile.empty()) view.scalarFile = std::filesystem::absolute(load.read.scalarFile).string();
+    view.cellToPoint = load.read.cellToPoint;
     view.hotSpots = load.hotSpots;
     view.colormap = options.shading.colormap;
     view.scale = options.shading.scale;
@@ -105,6 +109,8 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
     view.outline = options.outline;
     view.shadows = options.shading.shadows;
     view.shadeIndirect = options.shading.shadeIndirect;
+    view.samplesPerPixel = options.samplesPerPixel;
+    view.transparent = options.shading.transparentBackground;
     return view;
 }
 
@@ -116,6 +122,7 @@ nlohmann::json viewToJson(const ViewFile& view)
             {"method", render::methodToJson(*view.method)},
             {"scalar", view.scalar},
             {"scalar_file", view.scalarFile},
+            {"cell_to_point", view.cellToPoint},
             {"hotspots", view.hotSpots},
             {"colormap", view.colormap},
             {"scale", {{"range", {view.scale.range.lo, view.scale.range.hi}}, {"log", view.scale.log}, {"invert", view.scale.invert}}},
@@ -124,6 +131,8 @@ nlohmann::json viewToJson(const ViewFile& view)
             {"outline", view.outline},
             {"shadows", view.shadows},
             {"shade_indirect", view.shadeIndirect},
+            {"spp", view.samplesPerPixel},
+            {"transparent", view.transparent},
             {"mesh_units", core::meshUnitsJson(view.meshUnits)}};
 }
 

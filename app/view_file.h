@@ -25,6 +25,7 @@ struct ViewFile {
     render::MethodPtr method = render::defaultMethod();
     std::string scalar;   ///< --scalar as given ("" = the mesh's default array)
     std::string scalarFile;  ///< --scalar-file, as an absolute path ("" = none)
+    bool cellToPoint = false;  ///< --cell-to-point
     int hotSpots = 0;     ///< --hotspots as given (0 = none)
     std::string colormap = core::kDefaultColormap;
     core::ColorScale scale;
@@ -34,6 +35,8 @@ struct ViewFile {
     bool outline = true;
     bool shadows = true;
     bool shadeIndirect = true;
+    int samplesPerPixel = 1;    ///< --spp
+    bool transparent = false;   ///< --transparent
     core::Similarity meshUnits;  ///< the mesh's normalising transform (written for reference; never read)
 };
 
@@ -46,13 +49,14 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
                        const core::Similarity& meshUnits);
 
 /// @brief The view as JSON: {"inversevis_view": 1, "camera": {...}, "size": [w, h], "method": {...},
-///        "scalar", "scalar_file", "hotspots",
+///        "scalar", "scalar_file", "cell_to_point", "hotspots",
 ///        "colormap", "scale": {"range": [lo, hi], "log", "invert"}, "units", "legend": side or
-///        null, "outline", "shadows", "shade_indirect"}.
+///        null, "outline", "shadows", "shade_indirect", "spp", "transparent"}.
 nlohmann::json viewToJson(const ViewFile& view);
 
 /// @brief Reads a view file written by viewToJson (every key required but "units", "scalar",
-///        "scalar_file" and "hotspots").
+///        "scalar_file", "cell_to_point", "hotspots", "spp" and "transparent", which files of
+///        earlier versions of the program lack).
 /// @throw InputError naming @a path for unreadable JSON, a missing key, a bad value or a newer version
 ViewFile readViewFile(const std::string& path);
 

@@ -182,6 +182,8 @@ render::RenderOptions ViewOptions::renderOptions() const
         if (!given("--no-outline")) options.outline = v->outline;
         if (!given("--no-shadows")) options.shading.shadows = v->shadows;
         if (!given("--unshaded-indirect")) options.shading.shadeIndirect = v->shadeIndirect;
+        if (!given("--spp")) options.samplesPerPixel = v->samplesPerPixel;
+        if (!given("--transparent")) options.shading.transparentBackground = v->transparent;
     }
     return options;
 }

@@ -37,7 +37,7 @@ int main(int argc, char** argv)
         // Headless, Ctrl-C ends the run between frames and leaves no screenshot (a window closes).
         if (options.headless()) ivis::core::installInterruptHandler();
         if (const ivis::app::ViewFile* view = options.view.view())
-            options.mesh.useViewScalar(view->scalar, view->scalarFile, view->hotSpots);
+            options.mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
             ivis::app::ViewerApp viewer(options, ivis::core::loadSurface(options.mesh.source, options.mesh.load));
             return viewer.run();

@@ -97,6 +97,21 @@ TEST_F(Cli, AViewKeepsItsScalarFile)
     EXPECT_EQ(core::readPng(output("x.png")).pixels(), picture.pixels());
 }
 
+// A view keeps --cell-to-point, --spp and --transparent (it came back flat, aliased and opaque).
+TEST_F(Cli, AViewKeepsCellToPointSupersamplingAndTransparency)
+{
+    const std::string step = test::sharedMesh("vtk/artery_series/artery_t0200.vtp"), view = quoted(output("v.json"));
+    const test::CliResult first = test::runCli(render(step, "--method front --scalar pressure_cell --cell-to-point "
+                                                            "--spp 2 --transparent --view-out " + view));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const core::Image picture = core::readPng(output("x.png"));
+    const test::CliResult again = test::runCli(render(step, "--view " + view));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(core::readPng(output("x.png")).pixels(), picture.pixels());
+    ASSERT_EQ(test::runCli(render(step, "--view " + view + " --spp 1")).status, 0);  // a flag still overrides
+    EXPECT_NE(core::readPng(output("x.png")).pixels(), picture.pixels());
+}
+
 // A colour-scale or legend flag given with --view overrides its own part of the file: --invert
 // kept the file's log scale and range (it threw the whole scale away), --legend SIDE shows a
 // legend the file had off (it stayed off), and --ortho, which the file's camera ignored, is refused.
