@@ -146,6 +146,7 @@ Command addEvaluateCommand(CLI::App& app)
         std::vector<render::MethodPtr> methods;
         for (const std::string& m : options->methods) methods.push_back(render::makeMethod(m));
         options->mesh.fitReachTo(methods);
+        options->optimization.checkUsedBy(methods, options->optResolutions);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
         const auto pairs = onlyPairs(options->only, options->meshes, options->methods);

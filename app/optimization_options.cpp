@@ -2,6 +2,7 @@
 
 #include "cli_checks.h"
 
+#include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@ namespace ivis::app {
 
 void OptimizationOptions::addTo(CLI::App& command)
 {
+    this->command = &command;
     command.add_option("--energy", energy, "Energy to maximise: visibility or scalar")
         ->check(CLI::IsMember({"visibility", "scalar"}))
         ->capture_default_str();
@@ -83,6 +85,34 @@ nlohmann::json OptimizationOptions::settingsJson() const
             {"--finalists", finalists},
             {"--finalist-res", finalistResolution},
             {"--min-coherence", minCoherence}};
+}
+
+void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& methods,
+                                      const std::vector<int>& optResolutions) const
+{
+    auto given = [&](const char* flag) { return command && command->get_option(flag)->count() > 0; };
+    auto none = [&](auto has) {
+        return std::none_of(methods.begin(), methods.end(), [&](const render::MethodPtr& m) { return has(m->info()); });
+    };
+    const bool scalar = optimize::parseEnergyKind(energy) == optimize::EnergyKind::Scalar;
+    if (given("--gamma") && !scalar)
+        throw ValueError("--gamma weights the directly visible part of the scalar energy; --energy is " + energy);
+    if (gradient == "analytic") {
+        if (!scalar) throw ValueError("--gradient analytic: the gradient is analytic for the scalar energy only");
+        for (const render::MethodPtr& m : methods)
+            if (!m->info().tangentLinearGradient)
+                throw ValueError("--gradient analytic: " + m->name() + "'s gradient is not analytic (the curved-ray "
+                                 "methods' is)");
+    }
+    if (given("--alpha-scan") && none([](const render::MethodInfo& i) { return !i.scannedParameter.empty(); }))
+        throw ValueError("--alpha-scan: no method given has a parameter to scan (inversevis: alpha)");
+    if (given("--min-coherence") && none([](const render::MethodInfo& i) { return !i.readabilityParameter.empty(); }))
+        throw ValueError("--min-coherence: no method given has a rule for drawing rays to loosen (inversevis-wrap: "
+                         "--stable-shift)");
+    if (ascentResolution > 0 &&
+        std::none_of(optResolutions.begin(), optResolutions.end(), [&](int r) { return ascentResolution < r; }))
+        throw ValueError("--ascent-res " + std::to_string(ascentResolution) +
+                         " is not below --opt-res: the ascent runs at --opt-res");
 }
 
 optimize::EnergyOptions OptimizationOptions::energyOptions(int resolution, const core::ScalarRange& range) const

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
@@ -33,6 +34,7 @@ struct OptimizationOptions {
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 200;       ///< rays per side of that measurement
     double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
+    CLI::App* command = nullptr;        ///< the command addTo registered the flags on (what was given)
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
@@ -40,6 +42,12 @@ struct OptimizationOptions {
     void addTo(CLI::App& command);
     /// @brief These settings keyed by their flags ({"--steps": 20, ...}; an unset default null).
     nlohmann::json settingsJson() const;
+    /// @brief Refuses a flag given that no method of @a methods at any of @a optResolutions uses:
+    ///        --gamma without the scalar energy, --gradient analytic without it or with a method
+    ///        whose gradient is not analytic, --alpha-scan and --min-coherence when no method has
+    ///        the parameter they set, --ascent-res not below an --opt-res.
+    /// @throw ValueError naming the flag and why it does nothing
+    void checkUsedBy(const std::vector<render::MethodPtr>& methods, const std::vector<int>& optResolutions) const;
     /// @brief The energy the optimisation maximises at @a resolution rays per side, importance
     ///        @a range. Its visibility grid is --opt-visibility-res, by default resolution / 2 but at
     ///        most --visibility-res: a grid with more marked voxels than rays rewards spreading the

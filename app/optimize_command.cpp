@@ -54,6 +54,7 @@ Command addOptimizeCommand(CLI::App& app)
     options->view.addTo(*command);
     options->optimization.addTo(*command);
     command->add_option("--opt-res", options->optResolution, "Optimisation resolution (rays per side)")
+        ->check(CLI::Range(4, 8192))
         ->capture_default_str();
     command
         ->add_option("-o,--output", options->output,
@@ -90,6 +91,7 @@ Command addOptimizeCommand(CLI::App& app)
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
+        options->optimization.checkUsedBy({options->view.renderOptions().method}, {options->optResolution});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera start = options->view.camera();
         if (start.orthographic)

@@ -109,7 +109,7 @@ Command addRenderCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo,
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
-    return {command, [options] {
+    return {command, [options, command] {
         options->view.rangeOfEachPicture = options->rangePerFrame;
         // The camera is written beside the picture (a series': beside its frames) unless told where.
         const bool defaultCamera = options->cameraOut.empty();
@@ -128,6 +128,9 @@ Command addRenderCommand(CLI::App& app)
         checkOutputFiles(outputs, inputs);
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
         const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
+        if (readabilityKey.empty() && command->get_option("--min-coherence")->count() > 0)
+            throw ValueError("--min-coherence: " + options->view.renderOptions().method->name() +
+                             " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
         const bool chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         if (const ViewFile* view = options->view.view())

@@ -190,6 +190,12 @@ render::RenderOptions ViewOptions::renderOptions() const
 
 render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
 {
+    if (!field.hasScalar())
+        for (const char* flag :
+             {"--colormap", "--range", "--range-percentile", "--symmetric", "--log", "--invert", "--units", "--legend"})
+            if (given(flag))
+                throw InputError(field.sourcePath + ": " + flag + " colours a scalar, and the mesh shows none (give "
+                                 "--scalar, --scalar-file or --hotspots)");
     render::RenderOptions options = renderOptions();
     options.shading.scale = colorScaleRequest().resolve(field.values);
     options.scalarName = field.name;

@@ -78,7 +78,8 @@ struct ViewOptions {
     render::RenderOptions renderOptions() const;
     /// @brief Render options for @a field (its values fix the colour scale, unless --range is
     ///        given, and its name titles the colour bar).
-    /// @throw InputError / ValueError for malformed values (e.g. --res 10y10)
+    /// @throw InputError / ValueError for malformed values (e.g. --res 10y10), and InputError for
+    ///        a colour flag (--colormap, --range, ..., --legend) given for a field without a scalar
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
     /// @brief True when the method's parameter @a key is given: by its option, or by the --view
     ///        file's method (unless --method names another).
