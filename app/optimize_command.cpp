@@ -76,6 +76,7 @@ Command addOptimizeCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
 
     return {command, [options] {
+        options->view.viewIsStart = true;  // --view's angles start the search, whose views are framed
         const std::vector<OutputFile> outputs = {
             {options->output, "-o", {".png"}},
             {options->json, "--json", {}},

@@ -48,6 +48,7 @@ struct ViewOptions {
     bool unshadedIndirect = false;
     bool transparent = false;
     bool rangeOfEachPicture = false;  ///< each picture's range from its data, never the view file's (--range-per-frame)
+    bool viewIsStart = false;  ///< the --view file's camera is a search's start (optimize): each view is framed
 
 
     /// @brief Registers every option on @a command (which must outlive this object's use).
@@ -58,8 +59,9 @@ struct ViewOptions {
     /// @brief The camera: from --camera FILE, else from --theta/--phi/--fov/--ortho (75 degrees
     ///        until framed without --fov).
     core::Camera camera() const;
-    /// @brief True when each picture's field of view is fitted to it (neither --fov nor --camera).
-    bool framed() const { return !fovYDeg && cameraFile.empty() && viewFile.empty(); }
+    /// @brief True when each picture's field of view is fitted to it (neither --fov nor --camera,
+    ///        nor --view unless viewIsStart).
+    bool framed() const { return !fovYDeg && cameraFile.empty() && (viewFile.empty() || viewIsStart); }
     /// @brief @a camera for a @a width x @a height picture of @a method: its field of view fitted
     ///        to the picture (render::frameView) when framed(), else unchanged. Warns when the
     ///        picture needs more than the widest framed field of view.

@@ -222,6 +222,15 @@ TEST_F(Cli, OptimizeStartsFromTheGivenCameraAndRejectsOrthographic)
     EXPECT_NEAR(first.at("theta").get<double>(), 60.0, 1e-6);
     EXPECT_NEAR(first.at("phi").get<double>(), 0.0, 1e-6);
     EXPECT_EQ(report.at("visited").size(), 13u) << "the given view, no proposal, the compass search's 12 round it";
+    EXPECT_FALSE(report.at("framed").get<bool>()) << "a camera file's field of view is kept";
+    // A view file gives the start, and each view is framed (its fixed field of view, centred,
+    // cut the best picture off at the frame).
+    const CliResult viewed = runCli(render("scene:sphere", "--theta 60 --view-out " + quoted(output("v.json"))));
+    ASSERT_EQ(viewed.status, 0) << viewed.err;
+    ASSERT_EQ(runCli(common + " --view " + quoted(output("v.json")) + " --json " + quoted(output("b.json"))).status, 0);
+    const nlohmann::json started = nlohmann::json::parse(std::ifstream(output("b.json")));
+    EXPECT_NEAR(started.at("visited").at(0).at("theta").get<double>(), 60.0, 1e-6);
+    EXPECT_TRUE(started.at("framed").get<bool>());
     fs::remove_all(output(""));
     fs::create_directories(output(""));
     expectRejected(common + " --ortho", {"--ortho"});
