@@ -135,6 +135,8 @@ Command addRenderCommand(CLI::App& app)
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+        const bool isSeries = core::isSeries(options->sources, options->mesh.load);
+        if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         SeriesRenderRequest frameRange;  // --frames, checked before anything is read
         if (!options->frames.empty()) {
             parseFrameRange(options->frames, frameRange);
@@ -148,7 +150,7 @@ Command addRenderCommand(CLI::App& app)
         const core::Camera requested = options->view.camera();
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));
-        if (core::isSeries(options->sources, options->mesh.load)) {
+        if (isSeries) {
             if (!options->tearMap.empty())
                 throw InputError("--tear-map: a series has one picture per step; render the step alone");
             if (!options->unseenMap.empty())
@@ -194,7 +196,6 @@ Command addRenderCommand(CLI::App& app)
             if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
             return;
         }
-        rejectSeriesFlags(options->seriesFlags, options->sources.front());
         options->mesh.source = options->sources.front();
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         render::RenderOptions renderOptions = options->view.renderOptions(field);

@@ -155,6 +155,10 @@ render::RenderOptions ViewOptions::renderOptions() const
     render::RenderOptions options;
     if (!parsePictureSize(resolution, options.width, options.height))
         throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
+    if (framed() && double(options.width) <= render::kFramingMargin * options.height)
+        throw InputError("--res " + resolution + ": a framed picture needs a width above " +
+                         std::to_string(int(100 * render::kFramingMargin)) +
+                         "% of its height (its margin); widen it or fix the field of view (--fov)");
     options.samplesPerPixel = samplesPerPixel;
     options.method = method.create(view() ? view()->method.get() : nullptr);
     options.shading.colormap = colormap;

@@ -195,7 +195,8 @@ ScalarRange scalarRangeFromUser(double lo, double hi)
     auto valid = [&](double v) { return std::isfinite(v) && std::abs(v) <= biggest; };
     std::ostringstream text;
     text << "invalid range [" << lo << ", " << hi << "]: ";
-    if (!valid(lo) || !valid(hi)) throw ValueError(text.str() + "both ends must be finite numbers");
+    if (!valid(lo) || !valid(hi))
+        throw ValueError(text.str() + "both ends must be finite numbers of magnitude at most 3.4e38 (single precision)");
     if (!(float(lo) < float(hi))) throw ValueError(text.str() + "lo must be less than hi");
     return {float(lo), float(hi)};
 }

@@ -14,11 +14,17 @@ core::Camera fitCamera(const core::Camera& camera, const PictureExtent& extent, 
     // Per axis: imagePlane / halfHeight + fixed <= the image's half extent - margin (half-heights).
     const glm::dvec2 room = glm::dvec2(aspect, 1.0) - kFramingMargin - extent.fixed;
     if (!(room.x > 0.0 && room.y > 0.0)) {
-        char text[200];
-        std::snprintf(text, sizeof text,
-                      "the picture cannot be framed: its fixed-size part (the rings) reaches %.2f image half-heights, "
-                      "leaving no room for the object; fix the field of view instead",
-                      std::max(extent.fixed.x, extent.fixed.y));
+        char text[240];
+        if (std::max(extent.fixed.x, extent.fixed.y) > 0.0)
+            std::snprintf(text, sizeof text,
+                          "the picture cannot be framed: its fixed-size part (the rings) reaches %.2f image "
+                          "half-heights, leaving no room for the object; fix the field of view instead",
+                          std::max(extent.fixed.x, extent.fixed.y));
+        else
+            std::snprintf(text, sizeof text,
+                          "the picture cannot be framed: its width is %.4g of its height, which leaves no room for the "
+                          "object within the frame's margin; widen it or fix the field of view instead",
+                          aspect);
         throw ValueError(text);
     }
     // The image centred on the picture's scaling part; the fixed part lies round it on every side.

@@ -314,6 +314,8 @@ TEST_F(CliSeries, BadSeriesWriteNothing)
     expectRejected(render(arteryStep("0200"), "--range-per-frame"),
                    {"--range-per-frame: applies to a time series"});
     expectRejected(render(arteryStep("0200"), "--fps 3"), {"--fps: applies to a time series"});
+    // Said first: "give --view, --camera or --fov" came before it.
+    expectRejected(render(arteryStep("0200"), "--frames 0:1"), {"--frames: applies to a time series"});
     expectRejected(render(pvd(), "--range-per-frame --range 0 1"), {"excludes"});
     // One mesh's values for every step (each frame showed them alike).
     const std::string values = input("values.txt");

@@ -281,6 +281,11 @@ TEST_F(Cli, RangeLoMustBeBelowHi)
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
     expectRejected(render(mesh, "--range 2 1"), {"invalid range [2, 1]: lo must be less than hi"});
     expectRejected(render(mesh, "--range 1 1"), {"invalid range [1, 1]: lo must be less than hi"});
+    expectRejected(render(mesh, "--range 1e-300 1e300 --log"), {"magnitude at most 3.4e38 (single precision)"});
+    // A picture too narrow for the object named as such (it spoke of rings the method does not have).
+    expectRejected("render " + quoted(mesh) + " --volume-res 48 --method front --res 3x2000 --cache-dir " +
+                       quoted(output("")) + " -o " + quoted(output("x.png")),
+                   {"--res 3x2000: a framed picture needs a width above 5% of its height"});
 }
 
 TEST_F(Cli, BadCameraFile)
