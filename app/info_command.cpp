@@ -21,12 +21,14 @@ void printTimeSeries(const std::string& path, bool json)
     const std::vector<core::TimeStep> steps = core::readPvd(path);
     if (json) {
         nlohmann::json list = nlohmann::json::array();
-        for (const core::TimeStep& s : steps) list.push_back({{"time", s.time}, {"file", s.path}});
+        for (const core::TimeStep& s : steps)
+            list.push_back({{"time", s.timed ? nlohmann::json(s.time) : nlohmann::json()}, {"file", s.path}});
         std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}}.dump(2) << "\n";
         return;
     }
     std::cout << path << " (pvd, " << steps.size() << " time steps)\n";
-    for (const core::TimeStep& s : steps) std::cout << "  t = " << s.time << "  " << s.path << "\n";
+    for (const core::TimeStep& s : steps)
+        std::cout << "  " << (s.timed ? "t = " : "step ") << s.time << "  " << s.path << "\n";
 }
 
 void printJson(const core::MeshInfo& info)

@@ -481,10 +481,11 @@ void ViewerApp::drawPanel()
         if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp))
             switchStep(std::size_t(step));
         ImGui::EndDisabled();
-        tooltip("The steps of the time series (time of each from the .pvd; its index for files or a --scalar "
-                "pattern); one colour range over all steps; the volume stays while the geometry does. Disabled "
+        tooltip("The steps of the time series (time of each from the .pvd; its index for files, a --scalar "
+                "pattern or a .pvd without times); one colour range over all steps; the volume stays while the geometry does. Disabled "
                 "while an optimiser runs.");
-        ImGui::Text("step %zu of %zu, time %g", mStep + 1, count, shown.time);
+        if (mSeries->timed()) ImGui::Text("step %zu of %zu, time %g", mStep + 1, count, shown.time);
+        else ImGui::Text("step %zu of %zu, %s", mStep + 1, count, shown.label.c_str());
     }
     if (mLoader) {
         const int percent = mLoader->progress().percent();

@@ -38,6 +38,12 @@ std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text
         if (!time.empty() && !(detail::parseNumber(time, step.time) && std::isfinite(step.time))) {
             failInput(path, where + " has the timestep '" + time + "', which is not a finite number");
         }
+        step.timed = !dataset.attribute("timestep").empty();
+        if (!steps.empty() && step.timed != steps.front().timed)
+            failInput(path, "DataSet " + std::to_string(step.timed ? 0 : steps.size()) + " has no timestep, and DataSet " +
+                                std::to_string(step.timed ? steps.size() : 0) +
+                                " has one: give every DataSet its time, or none (the steps in the file's order)");
+        if (!step.timed) step.time = double(steps.size());
         const std::string part = dataset.attribute("part").as_string("0");
         if (part != "0") failInput(path, where + " is part " + part + " of its time step; one part per step is read");
         step.path = (folder / file).string();

@@ -42,8 +42,9 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
         for (const std::string& name : arraysMatching(mPatternRead, scalar))
             mSteps.push_back({sources.front(), name, double(mSteps.size()), name});
     } else if (isTimeSeries(sources.front())) {
-        mTimed = true;
-        for (const TimeStep& step : readPvd(sources.front()))
+        const std::vector<TimeStep> steps = readPvd(sources.front());
+        mTimed = steps.front().timed;
+        for (const TimeStep& step : steps)
             mSteps.push_back({step.path, "", step.time, std::filesystem::path(step.path).filename().string()});
     } else {
         for (const std::string& source : sources)

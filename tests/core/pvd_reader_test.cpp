@@ -47,6 +47,24 @@ TEST(PvdReader, StepsComeInTimeOrderBesideTheCollection)
     EXPECT_EQ(steps[3].time, 10.0);
 }
 
+TEST(PvdReader, WithoutTimestepsTheStepsAreTheFilesInOrder)
+{
+    // Every step was read at time 0 and its colour bar said "t = 0".
+    TempDir dir;
+    for (const char* name : {"a.vtp", "b.vtp"}) writeFile(dir.file(name), "");
+    writeFile(dir.file("s.pvd"), collection("<DataSet file=\"b.vtp\"/>\n<DataSet file=\"a.vtp\"/>\n"));
+    const std::vector<TimeStep> steps = readPvd(dir.file("s.pvd"));
+    ASSERT_EQ(steps.size(), 2u);
+    EXPECT_EQ(steps[0].path, dir.file("b.vtp"));
+    EXPECT_EQ(steps[1].time, 1.0);
+    EXPECT_FALSE(steps[0].timed);
+    EXPECT_FALSE(steps[1].timed);
+    writeFile(dir.file("s.pvd"), collection("<DataSet timestep=\"1\" file=\"b.vtp\"/>\n<DataSet file=\"a.vtp\"/>\n"));
+    EXPECT_EQ(pvdError(dir.file("s.pvd")),
+              dir.file("s.pvd") + ": DataSet 1 has no timestep, and DataSet 0 has one: give every DataSet its time, "
+                                  "or none (the steps in the file's order)");
+}
+
 TEST(PvdReader, SharedArterySeries)
 {
     const std::vector<TimeStep> steps = readPvd(test::sharedMesh("vtk/artery_series/artery.pvd"));

@@ -77,6 +77,18 @@ TEST(SurfaceSeries, PvdStepsAreItsFilesInTimeOrderEachAsThePlyStep)
     }
 }
 
+TEST(SurfaceSeries, APvdWithoutTimestepsIsNotTimed)
+{
+    test::TempDir dir;
+    const std::string step = sharedMesh("vtk/artery_series/artery_t0400.vtp");
+    test::writeFile(dir.file("s.pvd"), "<VTKFile type=\"Collection\"><Collection><DataSet file=\"" + step +
+                                           "\"/><DataSet file=\"" + step + "\"/></Collection></VTKFile>");
+    const SurfaceSeries series({dir.file("s.pvd")}, {});
+    EXPECT_FALSE(series.timed());  // its steps are named by their files, not "t = 0"
+    ASSERT_EQ(series.steps().size(), 2u);
+    EXPECT_EQ(series.steps()[1].time, 1.0);
+}
+
 TEST(SurfaceSeries, TheDefaultArrayIsSaidOnce)
 {
     // optimize loaded the first step twice where the log was heard (its importance, then its
