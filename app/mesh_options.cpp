@@ -169,10 +169,14 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
                               const vdb::VolumeOptions& options)
 {
     if (folder.empty()) return "";
-    char reach[32];
+    char reach[32], band[32] = "";
     std::snprintf(reach, sizeof reach, ".reach%g", options.farFieldReach);
+    if (options.bandVoxels != vdb::VolumeOptions().bandVoxels) std::snprintf(band, sizeof band, ".band%g", options.bandVoxels);
+    const char* sign = options.sign == vdb::DistanceSign::Signed     ? ".signed"
+                       : options.sign == vdb::DistanceSign::Unsigned ? ".unsigned"
+                                                                     : "";
     const std::string name = core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" +
-                             std::to_string(options.resolution) + reach + ".vdb";
+                             std::to_string(options.resolution) + reach + band + sign + ".vdb";
     return (std::filesystem::path(folder) / name).string();
 }
 
@@ -180,8 +184,8 @@ bool isVolumeCacheName(const std::string& fileName)
 {
     // The reach is optional, as the hash is: the names before 2026-11-27 had no reach, and those
     // before 2026-11-24 no hash.
-    static const std::regex name(
-        R"(.+(\.[0-9a-f]{16})?\.res[0-9]+(\.reach[0-9.e+-]+)?\.vdb(\.tmp\.[0-9]+\.[0-9]+)?)");
+    static const std::regex name(R"(.+(\.[0-9a-f]{16})?\.res[0-9]+(\.reach[0-9.e+-]+)?(\.band[0-9.e+-]+)?)"
+                                 R"((\.signed|\.unsigned)?\.vdb(\.tmp\.[0-9]+\.[0-9]+)?)");
     return std::regex_match(fileName, name);
 }
 

@@ -67,9 +67,10 @@ std::string optionalCacheFolder(const std::string& cacheDir);
 
 /// @brief Default cache file inside @a folder ("" for the folder "": no cache) for the normalised
 ///        mesh @a mesh of @a source built with @a options: "<stem>.<mesh hash>.res<N>.reach<R>.vdb",
-///        so that every geometry of a time series (and every mesh of one name) keeps a cache of
-///        its own, and so does each far-field reach (the curved-ray methods' volumes reach further
-///        than the others').
+///        with ".band<B>" before ".vdb" for a band other than the default and ".signed" or
+///        ".unsigned" for a distance sign asked for, so that every geometry of a time series (and
+///        every mesh of one name) keeps a cache of its own, and so does each far-field reach (the
+///        curved-ray methods' volumes reach further than the others'), band and sign.
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
                               const vdb::VolumeOptions& options);
 

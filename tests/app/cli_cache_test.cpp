@@ -71,14 +71,15 @@ TEST_F(Cli, CacheClearRemovesOnlyCaches)
     const std::vector<std::string> caches = {"sphere.0123456789abcdef.res48.reach1.vdb",
                                              "sphere.0123456789abcdef.res48.vdb",  // the name before the reach
                                              "sphere.res48.vdb",                   // and before the hash
-                                             "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.42.0"};
+                                             "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.42.0",
+                                             "sphere.0123456789abcdef.res48.reach1.band4.5.unsigned.vdb"};
     const std::vector<std::string> others = {"my_simulation.vdb", "results.vdb.tmp.1.0", "sphere.res48x.vdb",
                                              "notes.txt"};
     for (const std::string& name : caches) test::writeFile(folder + "/" + name, "v");
     for (const std::string& name : others) test::writeFile(folder + "/" + name, "v");
     const test::CliResult listed = test::runCli("cache list --cache-dir " + quoted(folder));
     ASSERT_EQ(listed.status, 0) << listed.err;
-    EXPECT_NE(listed.out.find("in 4 files"), std::string::npos) << listed.out;
+    EXPECT_NE(listed.out.find("in 5 files"), std::string::npos) << listed.out;
     ASSERT_EQ(test::runCli("cache clear --cache-dir " + quoted(folder)).status, 0);
     EXPECT_EQ(contents(folder), (std::vector<std::string>{"my_simulation.vdb", "notes.txt", "results.vdb.tmp.1.0",
                                                           "sphere.res48x.vdb"}));
@@ -108,6 +109,11 @@ TEST_F(Cli, MethodsOfTwoReachesKeepTwoCaches)
     EXPECT_EQ(volumeOf("inversevis-wrap"), wrap);
     EXPECT_EQ(fs::last_write_time(front), frontWritten) << "rebuilt";
     EXPECT_EQ(fs::last_write_time(wrap), wrapWritten) << "rebuilt";
+    // So does each band and distance sign asked for (they rebuilt the one file, "stale volume cache").
+    EXPECT_NE(volumeOf("front --band 4.5").find(".res48.reach0.6.band4.5.vdb"), std::string::npos);
+    EXPECT_NE(volumeOf("front --distance unsigned").find(".res48.reach0.6.unsigned.vdb"), std::string::npos);
+    EXPECT_EQ(volumeOf("front"), front);
+    EXPECT_EQ(fs::last_write_time(front), frontWritten) << "rebuilt";
 }
 
 }  // namespace
