@@ -65,11 +65,13 @@ void ViewOptions::addTo(CLI::App& command)
         command.add_option("--legend", legendSide, "Side of the colour bar's margin: right, left or bottom")
             ->capture_default_str();
     command.add_flag("--no-legend", noLegend, "No colour bar")->excludes(legendOption);
-    command.add_flag("--no-outline", noOutline, "No outline around the directly visible object");
-    command.add_flag("--no-shadows", noShadows, "No shadow rays");
-    command.add_flag("--unshaded-indirect", unshadedIndirect,
-                     "Show the indirect part in flat colour (read its colours against the bar) instead of lit from the arriving rays");
-    command.add_flag("--transparent", transparent, "Transparent background (PNG alpha)");
+    // Each with its opposite, so that a view file's choice can be turned either way.
+    command.add_flag("--no-outline,!--outline", noOutline, "No outline around the directly visible object (--outline: one)");
+    command.add_flag("--no-shadows,!--shadows", noShadows, "No shadow rays (--shadows: shadow rays)");
+    command.add_flag("--unshaded-indirect,!--shaded-indirect", unshadedIndirect,
+                     "Show the indirect part in flat colour (read its colours against the bar) instead of lit from the "
+                     "arriving rays (--shaded-indirect: lit)");
+    command.add_flag("--transparent,!--opaque", transparent, "Transparent background (PNG alpha; --opaque: none)");
 }
 
 bool ViewOptions::given(const char* name) const

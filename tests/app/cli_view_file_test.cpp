@@ -114,7 +114,8 @@ TEST_F(Cli, AViewKeepsCellToPointSupersamplingAndTransparency)
 
 // A colour-scale or legend flag given with --view overrides its own part of the file: --invert
 // kept the file's log scale and range (it threw the whole scale away), --legend SIDE shows a
-// legend the file had off (it stayed off), and --ortho, which the file's camera ignored, is refused.
+// legend the file had off (it stayed off), --shadows turns on what the file turned off, and
+// --ortho, which the file's camera ignored, is refused.
 TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
 {
     const std::string mesh = input("tetra.obj"), values = input("values.txt");
@@ -122,7 +123,7 @@ TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
     test::writeFile(values, "1\n2\n3\n4\n");
     const std::string view = quoted(output("v.json")), again = quoted(output("w.json"));
     ASSERT_EQ(test::runCli(render(mesh, "--method front --scalar-file " + quoted(values) +
-                                            " --range 2 3 --log --no-legend --view-out " + view))
+                                            " --range 2 3 --log --no-legend --no-shadows --view-out " + view))
                   .status,
               0);
     const int bare = core::readPng(output("x.png")).width();
@@ -135,6 +136,9 @@ TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
     EXPECT_EQ(core::readPng(output("x.png")).width(), bare);  // the file's legend: none
     ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --legend left")).status, 0);
     EXPECT_GT(core::readPng(output("x.png")).width(), bare);
+    // A look the file turned off is turned on again by its opposite flag (there was none).
+    ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --shadows --view-out " + again)).status, 0);
+    EXPECT_EQ(nlohmann::json::parse(std::ifstream(output("w.json"))).at("shadows"), true);
     expectBadInput(test::runCli(render(mesh, "--view " + view + " --ortho")), {"--ortho excludes --view"});
     expectBadInput(test::runCli(render(mesh, "--legend left --no-legend")), {"--legend excludes --no-legend"});
 }
