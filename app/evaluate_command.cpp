@@ -67,6 +67,15 @@ std::vector<std::pair<std::string, std::string>> onlyPairs(const std::vector<std
     return pairs;
 }
 
+/// @a settings without the flags @a method does not use, so that an entry of a job of that method
+/// alone (given only the flags it uses: OptimizationOptions::checkUsedBy) equals one of a run of all.
+nlohmann::json settingsUsedBy(nlohmann::json settings, const render::MethodInfo& method)
+{
+    if (method.scannedParameter.empty()) settings.erase("--alpha-scan");
+    if (method.readabilityParameter.empty()) settings.erase("--min-coherence");
+    return settings;
+}
+
 /// True when --only's @a pairs (none: every pair) select @a method of the mesh @a stem.
 bool selected(const std::vector<std::pair<std::string, std::string>>& pairs, const std::string& stem,
               const std::string& method)
@@ -175,7 +184,8 @@ Command addEvaluateCommand(CLI::App& app)
                 throw InputError(options->json + ": '" + stem + "' is not an object of methods (--resume)");
             for (const auto& [method, entry] : methods.items())
                 if (const std::string difference = settingsDifference(
-                        entry.is_object() ? entry.value("settings", nlohmann::json()) : nlohmann::json(), settings, true);
+                        entry.is_object() ? entry.value("settings", nlohmann::json()) : nlohmann::json(),
+                        settingsUsedBy(settings, render::methodInfo(method)), true);
                     !difference.empty())
                     throw InputError(options->json + ": " + stem + ":" + method + " was evaluated with " + difference +
                                      " in this run; --resume continues an evaluation with its options");
@@ -226,7 +236,8 @@ Command addEvaluateCommand(CLI::App& app)
             for (const std::string& methodName : methods) {
                 progress.setContext(meshLabel + ", " + methodName);
                 const render::MethodPtr start = render::makeMethod(methodName);
-                nlohmann::json entry = {{"seconds", nlohmann::json::object()}, {"settings", settings}};
+                nlohmann::json entry = {{"seconds", nlohmann::json::object()},
+                                        {"settings", settingsUsedBy(settings, start->info())}};
                 optimize::VisitedView best;
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];

@@ -110,18 +110,17 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
 
 std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b, bool sameMesh)
 {
-    if (a == b) return "";
-    if (!a.is_object() || !b.is_object()) return "no settings recorded";
+    const char* old = "none (an evaluation of before 2026-11-27)";
+    if (!a.is_object() || !b.is_object())
+        return a.is_object() == b.is_object() ? "" : a.is_object() ? std::string("settings against ") + old
+                                                                    : std::string(old) + " against settings";
     const std::set<std::string> meshSettings{"--scalar",   "--scalar-file", "--cell-to-point",
                                              "--hotspots", "--cap-holes",   "--distance"};
-    auto value = [](const nlohmann::json& settings, const std::string& flag) {
-        const nlohmann::json shown = settings.value(flag, nlohmann::json());
-        return shown.is_null() ? std::string("unset") : shown.dump();
-    };
-    nlohmann::json flags = a;
-    flags.update(b);
-    for (const auto& [flag, ignored] : flags.items())
-        if ((sameMesh || meshSettings.count(flag) == 0) && value(a, flag) != value(b, flag)) return flag + " " + value(a, flag) + " against " + value(b, flag);
+    auto shown = [](const nlohmann::json& value) { return value.is_null() ? std::string("unset") : value.dump(); };
+    // A flag one entry lacks is not its method's (--alpha-scan of a method without alpha).
+    for (const auto& [flag, value] : a.items())
+        if (b.contains(flag) && (sameMesh || meshSettings.count(flag) == 0) && value != b.at(flag))
+            return flag + " " + shown(value) + " against " + shown(b.at(flag));
     return "";
 }
 

@@ -25,8 +25,9 @@ struct ReportLayout {
 std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout);
 
 /// @brief How the settings @a a differ from @a b (an evaluation entry's "settings": options keyed
-///        by their flags): "" when they are the same, else the first flag that differs with both
-///        values, as "--steps 10 against 20", or "no settings recorded" when one side has none.
+///        by their flags, each entry those its method uses): "" when every flag both hold is the
+///        same, else the first that differs with both values, as "--steps 10 against 20", or
+///        "settings against none (...)" when one side has none (a file of an older version).
 /// @param sameMesh false for the entries of two meshes, which may differ in what each mesh shows
 ///        and how it is read (--scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes,
 ///        --distance), as docs/results.md's runs show the artery's pressure and hot spots elsewhere

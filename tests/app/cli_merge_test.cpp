@@ -5,6 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace ivis::app {
 namespace {
@@ -67,7 +70,20 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
     other.at("torus").at("front").erase("settings");
     test::writeFile(output("other.json"), other.dump());
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
-                   {"torus:front was evaluated with no settings recorded"});
+                   {"torus:front was evaluated with none (an evaluation of before 2026-11-27) against settings in"});
+    // A job of one method is given only the flags it uses, and its entries still join the others'.
+    const std::string job = "evaluate scene:sphere --volume-res 48 --opt-res 16 --steps 1 --display-res 32 --cache-dir " +
+                            quoted(output("")) + " --methods ";
+    for (const auto& [methodAndFlag, part] : std::vector<std::pair<std::string, std::string>>{
+             {"inversevis --alpha-scan 3", "a1.json"}, {"inversevis-wrap --min-coherence 0.9", "a2.json"},
+             {"front", "a3.json"}}) {
+        const test::CliResult one = test::runCli(job + methodAndFlag + " --json " + quoted(output(part)));
+        ASSERT_EQ(one.status, 0) << one.err;
+    }
+    expectBadInput(test::runCli(job + "front --alpha-scan 3"), {"--alpha-scan: no method given has a parameter to scan"});
+    const test::CliResult apart = test::runCli("merge " + quoted(output("a1.json")) + " " + quoted(output("a2.json")) +
+                                                " " + quoted(output("a3.json")));
+    EXPECT_EQ(apart.status, 0) << apart.err;
     test::writeFile(output("empty.json"), "{}");
     expectBadInput(test::runCli("merge " + quoted(output("empty.json"))), {"empty.json: holds no evaluation"});
     // The tables written over a part (it was replaced, status 0).
