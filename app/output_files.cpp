@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 namespace ivis::app {
 
@@ -44,7 +45,11 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
         const std::filesystem::path file = std::filesystem::weakly_canonical(absolute, error);
         return error ? absolute.lexically_normal() : file;
     };
-    std::vector<std::pair<std::filesystem::path, const OutputFile*>> seen;
+    // Each path resolved once, and looked up by it: a series has as many outputs and inputs as steps.
+    std::map<std::filesystem::path, const InputFile*> read;
+    for (const InputFile& input : inputs)
+        if (!input.path.empty()) read.emplace(fileOf(input.path), &input);
+    std::map<std::filesystem::path, const OutputFile*> seen;
     for (const OutputFile& output : outputs) {
         if (output.path.empty()) continue;
         checkOutputFolder(output.path);
@@ -59,15 +64,13 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
             }
         }
         const std::filesystem::path file = fileOf(output.path);
-        for (const auto& [other, named] : seen)
-            if (other == file)
-                throw InputError(output.path + ": named by both " + named->option + " and " + output.option +
-                                 " (one would overwrite the other)");
-        for (const InputFile& input : inputs)
-            if (!input.path.empty() && fileOf(input.path) == file)
-                throw InputError(output.path + ": " + output.option + " would overwrite " + input.option +
-                                 ", which this command reads");
-        seen.emplace_back(file, &output);
+        if (const auto named = seen.find(file); named != seen.end())
+            throw InputError(output.path + ": named by both " + named->second->option + " and " + output.option +
+                             " (one would overwrite the other)");
+        if (const auto input = read.find(file); input != read.end())
+            throw InputError(output.path + ": " + output.option + " would overwrite " + input->second->option +
+                             ", which this command reads");
+        seen.emplace(file, &output);
     }
 }
 

@@ -58,8 +58,9 @@ void ViewOptions::addTo(CLI::App& command)
         ->expected(2)
         ->allow_extra_args(false);
     command.add_flag("--symmetric", symmetric, "Range centred on 0 ([-m, m], m the larger end), for signed data");
-    command.add_flag("--log", logScale, "Logarithmic colour scale (the range's low end must be positive)");
-    command.add_flag("--invert", invert, "Colour map reversed");
+    command.add_flag("--log,!--linear", logScale,
+                     "Logarithmic colour scale (the range's low end must be positive; --linear: a linear one)");
+    command.add_flag("--invert,!--no-invert", invert, "Colour map reversed (--no-invert: not reversed)");
     command.add_option("--units", units, "Units shown on the colour bar (any Unicode, e.g. dyn/cm²)");
     auto* legendOption =
         command.add_option("--legend", legendSide, "Side of the colour bar's margin: right, left or bottom")
@@ -135,6 +136,13 @@ core::ColorScaleRequest ViewOptions::colorScaleRequest() const
             request.range = v->scale.range;
         if (!given("--log")) request.log = v->scale.log;
         if (!given("--invert")) request.invert = v->scale.invert;
+        if (request.log && !given("--log")) {
+            try {
+                request.validate();
+            } catch (const ValueError& e) {
+                throw ValueError(std::string(e.what()) + " (the --view file's log scale; --linear for a linear one)");
+            }
+        }
     }
     request.validate();
     return request;

@@ -136,6 +136,11 @@ TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
     EXPECT_EQ(core::readPng(output("x.png")).width(), bare);  // the file's legend: none
     ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --legend left")).status, 0);
     EXPECT_GT(core::readPng(output("x.png")).width(), bare);
+    // The file's log scale is kept beside a range of another sign, and says so; --linear drops it.
+    expectBadInput(test::runCli(render(mesh, "--view " + view + " --range -1 1")),
+                   {"(the --view file's log scale; --linear for a linear one)"});
+    ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --range -1 1 --linear --view-out " + again)).status, 0);
+    EXPECT_EQ(nlohmann::json::parse(std::ifstream(output("w.json"))).at("scale").at("log"), false);
     // A look the file turned off is turned on again by its opposite flag (there was none).
     ASSERT_EQ(test::runCli(render(mesh, "--view " + view + " --shadows --view-out " + again)).status, 0);
     EXPECT_EQ(nlohmann::json::parse(std::ifstream(output("w.json"))).at("shadows"), true);
