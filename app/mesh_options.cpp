@@ -70,11 +70,10 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
 void MeshOptions::useViewScalar(const std::string& scalarName, const std::string& scalarFile, bool cellToPoint,
                                 int hotSpots)
 {
-    if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.read.cellToPoint || load.hotSpots > 0)
-        return;
+    if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.hotSpots > 0) return;
     load.read.scalarName = scalarName;
     load.read.scalarFile = scalarFile;
-    load.read.cellToPoint = cellToPoint;
+    load.read.cellToPoint = load.read.cellToPoint || cellToPoint;  // --cell-to-point alone averages the view's array
     load.hotSpots = hotSpots;
 }
 

@@ -11,7 +11,7 @@ namespace ivis::app {
 
 void OptimizationOptions::addTo(CLI::App& command)
 {
-    this->command = &command;
+    mCommand = &command;
     command.add_option("--energy", energy, "Energy to maximise: visibility or scalar")
         ->check(CLI::IsMember({"visibility", "scalar"}))
         ->capture_default_str();
@@ -36,7 +36,7 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "degrees away in theta and phi, the step halved each of 3 rounds (0: none)")
         ->check(finiteRange(0.0, 90.0))
         ->capture_default_str();
-    command.add_option("--gradient", gradient, "auto, analytic (curved-ray methods, scalar energy) or forward differences")
+    command.add_option("--gradient", gradient, "auto, analytic (inversevis and inversevis-adaptive, scalar energy) or forward differences")
         ->check(CLI::IsMember({"auto", "analytic", "forward"}))
         ->capture_default_str();
     command.add_option("--ascent-iterations", ascentIterations, "Line searches per view at most")
@@ -90,7 +90,7 @@ nlohmann::json OptimizationOptions::settingsJson() const
 void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& methods,
                                       const std::vector<int>& optResolutions) const
 {
-    auto given = [&](const char* flag) { return command && command->get_option(flag)->count() > 0; };
+    auto given = [&](const char* flag) { return mCommand && mCommand->get_option(flag)->count() > 0; };
     auto none = [&](auto has) {
         return std::none_of(methods.begin(), methods.end(), [&](const render::MethodPtr& m) { return has(m->info()); });
     };
@@ -101,8 +101,8 @@ void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& meth
         if (!scalar) throw ValueError("--gradient analytic: the gradient is analytic for the scalar energy only");
         for (const render::MethodPtr& m : methods)
             if (!m->info().tangentLinearGradient)
-                throw ValueError("--gradient analytic: " + m->name() + "'s gradient is not analytic (the curved-ray "
-                                 "methods' is)");
+                throw ValueError("--gradient analytic: " + m->name() +
+                                 "'s gradient is not analytic (inversevis's and inversevis-adaptive's are)");
     }
     if (given("--alpha-scan") && none([](const render::MethodInfo& i) { return !i.scannedParameter.empty(); }))
         throw ValueError("--alpha-scan: no method given has a parameter to scan (inversevis: alpha)");

@@ -34,7 +34,6 @@ struct OptimizationOptions {
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 200;       ///< rays per side of that measurement
     double minCoherence = 0.99;         ///< the readability step's coherence; 0: no step
-    CLI::App* command = nullptr;        ///< the command addTo registered the flags on (what was given)
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
@@ -71,6 +70,9 @@ struct OptimizationOptions {
     ///        --finalists is above 1 and --finalist-res above @a resolution, else null.
     std::unique_ptr<optimize::EnergyEvaluator> finalistEvaluator(const render::RenderScene& scene, int resolution,
                                                                const core::ScalarRange& range) const;
+
+private:
+    CLI::App* mCommand = nullptr;  ///< the command addTo registered the flags on (what was given)
 };
 
 }  // namespace ivis::app

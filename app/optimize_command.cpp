@@ -114,7 +114,9 @@ Command addOptimizeCommand(CLI::App& app)
             frames.exr = options->exr;
             frames.video = !options->noVideo;
             checkSeriesOutputFiles(frames, series->steps().size(), outputs, inputs);
-            seriesScale = options->view.colorScaleRequest().resolve(surveySeries(*series).sample);
+            const SeriesSurvey survey = surveySeries(*series);
+            options->view.checkColourFlags(survey.scalar, series->source());
+            seriesScale = options->view.colorScaleRequest().resolve(survey.sample);
             // Silent, as the survey: the frames load the steps again and say their notes (a refused
             // series says only why).
             const core::ScopedLogLevel silent(core::LogLevel::Silent);

@@ -168,6 +168,9 @@ Command addRenderCommand(CLI::App& app)
             // Loads every step: a bad one fails before anything is written.
             const core::ColorScaleRequest eachFrame = options->view.colorScaleRequest();
             const SeriesSurvey survey = surveySeries(series, options->rangePerFrame ? &eachFrame : nullptr);
+            options->view.checkColourFlags(survey.scalar, series.source());
+            if (!options->legendOnly.empty() && !survey.scalar)
+                throw InputError(series.source() + ": no scalar to draw a colour bar of (see --scalar)");
             request.stepScales = survey.stepScales;
             if (!options->rangePerFrame || !options->legendOnly.empty())
                 request.scale = options->view.colorScaleRequest().resolve(survey.sample);

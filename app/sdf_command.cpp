@@ -28,7 +28,7 @@ Command addSdfCommand(CLI::App& app)
     CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
     options->mesh.addTo(*command);
     command->add_option("-o,--output", options->output,
-                        "Volume file (default: <mesh>.<mesh hash>.res<N>.reach<R>.vdb in the cache folder, where render, "
+                        "Volume file (default: <mesh>.<mesh hash>.res<N>.reach<R>[.band<B>][.signed|.unsigned].vdb in the cache folder, where render, "
                         "optimize, evaluate and the viewer find it)");
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     command->add_flag("--json", options->json, "Print one JSON object");

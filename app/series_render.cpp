@@ -62,6 +62,10 @@ void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::
 void checkSeriesOutputFiles(const SeriesRenderRequest& request, std::size_t steps, std::vector<OutputFile> others,
                             const std::vector<InputFile>& inputs)
 {
+    IVIS_CHECK(steps > 0);
+    if (request.firstStep >= steps)
+        throw InputError("--frames " + std::to_string(request.firstStep) + ":" + std::to_string(request.lastStep) +
+                         ": the series has " + std::to_string(steps) + " steps (0 to " + std::to_string(steps - 1) + ")");
     for (std::size_t k = request.firstStep; k <= std::min(request.lastStep, steps - 1); ++k) {
         const std::string frame = " (frame " + std::to_string(k) + ")";
         others.push_back({framePath(request.png, k, steps), "-o" + frame, {}});
@@ -81,9 +85,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     nlohmann::json frames = nlohmann::json::array();
     int width = 0, height = 0, legendMargin = 0;
     const std::size_t first = request.firstStep, last = std::min(request.lastStep, count - 1);
-    if (first >= count)
-        throw InputError("--frames " + std::to_string(first) + ":" + std::to_string(request.lastStep) + ": the series has " +
-                         std::to_string(count) + " steps (0 to " + std::to_string(count - 1) + ")");
+    IVIS_CHECK(first < count);  // checkSeriesOutputFiles said so
     // The readable rule is chosen on step 0, so that every job of a render draws alike.
     std::optional<optimize::ReadableSetting> readable;
     auto chooseReadableRule = [&] {

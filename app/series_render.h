@@ -51,10 +51,11 @@ void parseFrameRange(const std::string& text, SeriesRenderRequest& request);
 /// @throw InputError "--fps: applies to a time series (...); <source> is one mesh"
 void rejectSeriesFlags(const std::vector<CLI::Option*>& seriesFlags, const std::string& source);
 
-/// @brief Checks the files a render of @a request writes of a series of @a steps steps, before one
-///        is read: each frame's PNG and EXR, the video, and the command's @a others (its statistics,
-///        its camera, ...), none the same as another nor one of @a inputs (checkOutputFiles).
-/// @throw InputError naming the file and the problem
+/// @brief Checks the steps a render of @a request draws of a series of @a steps steps, and the files
+///        it writes, before one is read: each frame's PNG and EXR, the video, and the command's
+///        @a others (its statistics, its camera, ...), none the same as another nor one of @a inputs
+///        (checkOutputFiles). renderSeries draws only requests checked so.
+/// @throw InputError for --frames past the last step, or naming the file and the problem
 void checkSeriesOutputFiles(const SeriesRenderRequest& request, std::size_t steps, std::vector<OutputFile> others,
                             const std::vector<InputFile>& inputs);
 

@@ -28,6 +28,7 @@ SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleReq
     for (std::size_t k = 0; k < steps; ++k) {
         const core::SurfaceField field = series.load(k);
         survey.meshHashes.push_back(core::meshHash(field.mesh));
+        survey.scalar = survey.scalar || field.hasScalar();
         const std::size_t stride = std::max<std::size_t>(1, field.values.size() * steps / kSurveySampleSize);
         if (eachStep) survey.stepScales.push_back(eachStep->resolve(field.values));
         for (std::size_t i = 0; i < field.values.size(); ++i) {

@@ -24,6 +24,7 @@ struct SeriesSurvey {
                                             ///< them up to kSurveySampleSize, else an even subsample plus the
                                             ///< extremes (the smallest positive value included)
     std::vector<std::uint64_t> meshHashes;  ///< core::meshHash of each step's normalised mesh
+    bool scalar = false;                    ///< whether the steps show a scalar (each shows the same array)
 };
 
 /// @brief The colour bar's title of @a step of @a series showing the scalar @a name: the name, and

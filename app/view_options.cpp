@@ -165,10 +165,6 @@ render::RenderOptions ViewOptions::renderOptions() const
     render::RenderOptions options;
     if (!parsePictureSize(resolution, options.width, options.height))
         throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
-    if (framed() && double(options.width) <= render::kFramingMargin * options.height)
-        throw InputError("--res " + resolution + ": a framed picture needs a width above " +
-                         std::to_string(int(100 * render::kFramingMargin)) +
-                         "% of its height (its margin); widen it or fix the field of view (--fov)");
     options.samplesPerPixel = samplesPerPixel;
     options.method = method.create(view() ? view()->method.get() : nullptr);
     options.shading.colormap = colormap;
@@ -199,17 +195,26 @@ render::RenderOptions ViewOptions::renderOptions() const
         if (!given("--spp")) options.samplesPerPixel = v->samplesPerPixel;
         if (!given("--transparent")) options.shading.transparentBackground = v->transparent;
     }
+    if (framed() && double(options.width) <= render::kFramingMargin * options.height)
+        throw InputError("a framed picture of " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " needs a width above " + std::to_string(int(100 * render::kFramingMargin)) +
+                         "% of its height (its margin); widen it or fix the field of view (--fov)");
     return options;
+}
+
+void ViewOptions::checkColourFlags(bool hasScalar, const std::string& source) const
+{
+    if (hasScalar) return;
+    for (const char* flag :
+         {"--colormap", "--range", "--range-percentile", "--symmetric", "--log", "--invert", "--units", "--legend"})
+        if (given(flag))
+            throw InputError(source + ": " + flag + " colours a scalar, and the mesh shows none (give --scalar, "
+                             "--scalar-file or --hotspots)");
 }
 
 render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const
 {
-    if (!field.hasScalar())
-        for (const char* flag :
-             {"--colormap", "--range", "--range-percentile", "--symmetric", "--log", "--invert", "--units", "--legend"})
-            if (given(flag))
-                throw InputError(field.sourcePath + ": " + flag + " colours a scalar, and the mesh shows none (give "
-                                 "--scalar, --scalar-file or --hotspots)");
+    checkColourFlags(field.hasScalar(), field.sourcePath);
     render::RenderOptions options = renderOptions();
     options.shading.scale = colorScaleRequest().resolve(field.values);
     options.scalarName = field.name;

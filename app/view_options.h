@@ -83,6 +83,10 @@ struct ViewOptions {
     /// @throw InputError / ValueError for malformed values (e.g. --res 10y10), and InputError for
     ///        a colour flag (--colormap, --range, ..., --legend) given for a field without a scalar
     render::RenderOptions renderOptions(const core::SurfaceField& field) const;
+    /// @brief Refuses a colour flag (--colormap, --range, ..., --legend) given for the mesh
+    ///        @a source when it shows no scalar (@a hasScalar false): it would do nothing.
+    /// @throw InputError naming @a source and the flag
+    void checkColourFlags(bool hasScalar, const std::string& source) const;
     /// @brief True when the method's parameter @a key is given: by its option, or by the --view
     ///        file's method (unless --method names another).
     bool givesParameter(const std::string& key) const

@@ -159,7 +159,7 @@ int chooseShownResolution(const render::RenderScene& scene, const DenseSliceOpti
                               "the far field's textures are %d voxels across, more than the GPU's largest 3D texture "
                               "(%d): lower --reach",
                               farLargest, options.maxTextureSize);
-            else if (farCount > 0)
+            else if (16 * farCount > options.budgetBytes)
                 std::snprintf(text, sizeof text,
                               "the volume textures need %.1f MiB even at resolution 16, more than --texture-budget %zu "
                               "MiB: the far field (reach %g) alone takes %.1f MiB; raise the budget or lower --reach",

@@ -44,6 +44,7 @@ int main(int argc, char** argv)
         }
         auto series = std::make_unique<ivis::core::SurfaceSeries>(options.sources, options.mesh.load);
         const ivis::app::SeriesSurvey survey = ivis::app::surveySeries(*series);  // every step, before a word
+        options.view.checkColourFlags(survey.scalar, series->source());
         ivis::core::SurfaceField first = series->load(0);
         ivis::app::ViewerApp viewer(options, std::move(first), std::move(series), survey);
         return viewer.run();

@@ -64,14 +64,16 @@ SurfaceField SurfaceSeries::load(std::size_t index)
     const SeriesStep& step = mSteps[index];
     const bool heard = logLevel() <= LogLevel::Info;  // whether the notes of this load are printed
     if (!step.array.empty()) {
-        // A pattern's steps are arrays of one file, read once: loaded from that read (again, if
-        // that load was unheard, so that its notes are said), then each step shows its array.
-        if (mPatternFile.mesh.triangles.empty() || (heard && !mFirstNotesSaid)) {
-            SurfaceField read = mPatternRead;
-            showArray(read, step.array, mOptions.read.cellToPoint);
-            mPatternFile = loadReadSurface(step.path, std::move(read), mPatternReport, mOptions);
-            mFirstNotesSaid = heard;
-            if (heard) mPatternRead = SurfaceField();  // not needed again
+        // A pattern's steps are arrays of one file, read once and loaded once, its notes kept
+        // until a load whose notes are printed; then each step shows its array.
+        if (mPatternFile.mesh.triangles.empty()) {
+            showArray(mPatternRead, step.array, mOptions.read.cellToPoint);
+            mPatternFile = loadReadSurface(step.path, std::move(mPatternRead), mPatternReport, mOptions, &mPatternNotes);
+            mPatternRead = SurfaceField();
+        }
+        if (heard && !mFirstNotesSaid) {
+            for (const std::string& note : mPatternNotes) logInfo(note);
+            mFirstNotesSaid = true;
         }
         SurfaceField field = mPatternFile;
         showArray(field, step.array, mOptions.read.cellToPoint);

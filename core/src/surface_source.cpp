@@ -15,13 +15,21 @@ namespace ivis::core {
 namespace {
 bool isScene(const std::string& source) { return source.rfind(kScenePrefix, 0) == 0; }
 
+/// Logs @a note, or adds it to @a notes when given.
+void say(const std::string& note, std::vector<std::string>* notes)
+{
+    if (notes) notes->push_back(note);
+    else logInfo(note);
+}
+
 /// Caps holes when asked, normalises and puts the hot spots on: the steps after a surface is read
 /// or generated.
-SurfaceField finishSurface(const std::string& source, SurfaceField field, const SurfaceLoadOptions& options)
+SurfaceField finishSurface(const std::string& source, SurfaceField field, const SurfaceLoadOptions& options,
+                           std::vector<std::string>* notes)
 {
     if (options.capHoles) {
         const std::size_t loops = capHoles(field);
-        if (loops > 0) logInfo(source + ": capped " + std::to_string(loops) + " boundary loops");
+        if (loops > 0) say(source + ": capped " + std::to_string(loops) + " boundary loops", notes);
     }
     normalize(field);
     if (options.hotSpots > 0) {
@@ -45,7 +53,7 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
         if (!options.read.scalarName.empty() || !options.read.scalarFile.empty() || options.read.cellToPoint)
             throw InputError(source + ": generated scenes carry their own scalar; --scalar, --scalar-file and "
                                       "--cell-to-point apply to mesh files only");
-        return finishSurface(source, makeScene(source.substr(std::string(kScenePrefix).size())), options);
+        return finishSurface(source, makeScene(source.substr(std::string(kScenePrefix).size())), options, nullptr);
     }
     if (isTimeSeries(source)) {
         const std::vector<TimeStep> steps = readPvd(source);
@@ -66,18 +74,19 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
 }
 
 SurfaceField loadReadSurface(const std::string& source, SurfaceField field, const MeshReadReport& report,
-                             const SurfaceLoadOptions& options)
+                             const SurfaceLoadOptions& options, std::vector<std::string>* notes)
 {
-    for (const std::string& note : report.notes) logInfo(source + ": " + note);
+    for (const std::string& note : report.notes) say(source + ": " + note, notes);
     if (report.degenerateDropped > 0)
-        logInfo(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles");
+        say(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles", notes);
     if (!field.hasScalar() && options.hotSpots == 0 && (!field.arrays.empty() || options.read.cellToPoint)) {
         const DataArray& shown = defaultArray(field, options.read.cellToPoint);
         showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
-        logInfo(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
-                "' (choose another with --scalar NAME; `inversevis info` lists them)");
+        say(source + ": showing the " + associationName(shown.association) + " array '" + field.name +
+                "' (choose another with --scalar NAME; `inversevis info` lists them)",
+            notes);
     }
-    return finishSurface(source, std::move(field), options);
+    return finishSurface(source, std::move(field), options, notes);
 }
 
 std::string sourceStem(const std::string& source)

@@ -285,7 +285,7 @@ TEST_F(Cli, RangeLoMustBeBelowHi)
     // A picture too narrow for the object named as such (it spoke of rings the method does not have).
     expectRejected("render " + quoted(mesh) + " --volume-res 48 --method front --res 3x2000 --cache-dir " +
                        quoted(output("")) + " -o " + quoted(output("x.png")),
-                   {"--res 3x2000: a framed picture needs a width above 5% of its height"});
+                   {"a framed picture of 3x2000 needs a width above 5% of its height"});
 }
 
 TEST_F(Cli, BadCameraFile)
@@ -946,6 +946,12 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
     test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
     for (const char* flag : {"--range 0 1", "--colormap inferno", "--log", "--units Pa", "--legend bottom"})
         expectRejected(render(mesh, flag), {mesh + ": --", " colours a scalar, and the mesh shows none"});
+    // A series of such meshes: said once its steps are surveyed, before a volume is built.
+    const std::string pvd = input("s.pvd");
+    test::writeFile(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet file=\"m.obj\"/><DataSet file=\"m.obj\"/>"
+                         "</Collection></VTKFile>");
+    expectRejected(render(pvd, "--colormap inferno"), {pvd + ": --colormap colours a scalar"});
+    expectRejected(render(pvd, "--legend-only " + quoted(output("bar.svg"))), {pvd + ": no scalar to draw a colour bar"});
 }
 
 // NaN passed CLI11's range checks (every comparison with it is false): "--gamma nan" optimised a

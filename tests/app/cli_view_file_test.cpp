@@ -110,6 +110,13 @@ TEST_F(Cli, AViewKeepsCellToPointSupersamplingAndTransparency)
     EXPECT_EQ(core::readPng(output("x.png")).pixels(), picture.pixels());
     ASSERT_EQ(test::runCli(render(step, "--view " + view + " --spp 1")).status, 0);  // a flag still overrides
     EXPECT_NE(core::readPng(output("x.png")).pixels(), picture.pixels());
+    // --cell-to-point alone averages the view's array (it took the file's active cell array instead).
+    const std::string flat = quoted(output("flat.json"));
+    ASSERT_EQ(test::runCli(render(step, "--method front --scalar pressure_cell --view-out " + flat)).status, 0);
+    ASSERT_EQ(test::runCli(render(step, "--view " + flat + " --cell-to-point --view-out " + view)).status, 0);
+    const nlohmann::json averaged = nlohmann::json::parse(std::ifstream(output("v.json")));
+    EXPECT_EQ(averaged.at("scalar"), "pressure_cell");
+    EXPECT_EQ(averaged.at("cell_to_point"), true);
 }
 
 // A colour-scale or legend flag given with --view overrides its own part of the file: --invert

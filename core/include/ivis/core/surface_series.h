@@ -55,9 +55,10 @@ private:
     std::string mSource;
     bool mTimed = false;
     SurfaceLoadOptions mOptions;
-    SurfaceField mPatternRead;     ///< the pattern's file as read, until a heard load has said its notes
+    SurfaceField mPatternRead;     ///< the pattern's file as read, until it is loaded
     MeshReadReport mPatternReport;  ///< what reading it reported
     SurfaceField mPatternFile;     ///< the pattern's file loaded (empty for a series of files)
+    std::vector<std::string> mPatternNotes;  ///< what loading it said, said at the first heard load
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
     bool mFirstNotesSaid = false;  ///< whether a heard load (info printing) said the first step's notes
 };

@@ -6,6 +6,7 @@
 #include <ivis/core/surface_field.h>
 
 #include <string>
+#include <vector>
 
 namespace ivis::core {
 
@@ -32,8 +33,9 @@ SurfaceField loadSurface(const std::string& source, const SurfaceLoadOptions& op
 /// @brief loadSurface's work after it reads a mesh file: @a field and @a report as readMesh gave
 ///        them for @a source (with @a options.read), for a file read once and shown again (the steps
 ///        of a --scalar pattern, core::SurfaceSeries).
+/// @param notes when given, the lines loadSurface would log are added to it instead, to be said later
 SurfaceField loadReadSurface(const std::string& source, SurfaceField field, const MeshReadReport& report,
-                             const SurfaceLoadOptions& options);
+                             const SurfaceLoadOptions& options, std::vector<std::string>* notes = nullptr);
 
 /// @brief True when @a source is a time series (a ParaView collection, `.pvd`).
 bool isTimeSeries(const std::string& source);
