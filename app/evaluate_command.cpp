@@ -9,6 +9,7 @@
 #include "evaluation_report.h"
 #include "optimization_options.h"
 
+#include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -155,10 +157,14 @@ Command addEvaluateCommand(CLI::App& app)
         std::vector<render::MethodPtr> methods;
         for (const std::string& m : options->methods) methods.push_back(render::makeMethod(m));
         options->mesh.fitReachTo(methods);
-        options->optimization.checkUsedBy(methods, options->optResolutions);
+        const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
+        std::vector<render::MethodPtr> used;  // the methods --only selects (all without it)
+        for (const render::MethodPtr& m : methods)
+            if (pairs.empty() || std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.second == m->name(); }))
+                used.push_back(m);
+        options->optimization.checkUsedBy(used, options->optResolutions);
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
-        const auto pairs = onlyPairs(options->only, options->meshes, options->methods);
         // --json may name the results --resume reads: that file is meant to be rewritten.
         checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}},
                          readFiles(options->meshes, options->mesh.load.read.scalarFile, "", ""));
@@ -179,17 +185,6 @@ Command addEvaluateCommand(CLI::App& app)
         settings.update({{"--opt-res", options->optResolutions},
                          {"--display-res", options->displayResolution},
                          {"--fov", options->fovYDeg ? nlohmann::json(*options->fovYDeg) : nlohmann::json()}});
-        for (const auto& [stem, methods] : results.items()) {
-            if (!methods.is_object())
-                throw InputError(options->json + ": '" + stem + "' is not an object of methods (--resume)");
-            for (const auto& [method, entry] : methods.items())
-                if (const std::string difference = settingsDifference(
-                        entry.is_object() ? entry.value("settings", nlohmann::json()) : nlohmann::json(),
-                        settingsUsedBy(settings, render::methodInfo(method)), true);
-                    !difference.empty())
-                    throw InputError(options->json + ": " + stem + ":" + method + " was evaluated with " + difference +
-                                     " in this run; --resume continues an evaluation with its options");
-        }
         ReportLayout layout{{}, options->methods, options->optResolutions, options->displayResolution};
         for (const std::string& mesh : options->meshes) {
             const std::string stem = core::sourceStem(mesh);
@@ -199,11 +194,28 @@ Command addEvaluateCommand(CLI::App& app)
                                  "'s (the tables, --json and --only name a mesh by its file stem; rename one)");
             layout.stems.push_back(stem);
         }
-        // Every mesh is read once before any is evaluated, so a bad one fails in seconds, not after hours.
+        // Every mesh is read once before any is evaluated, so a bad one fails in seconds, not after hours;
+        // its hash joins its settings (two meshes of one name are not one row).
+        std::map<std::string, nlohmann::json> settingsOf;
         for (const std::string& mesh : options->meshes)
             if (std::any_of(options->methods.begin(), options->methods.end(),
-                            [&](const std::string& m) { return selected(pairs, core::sourceStem(mesh), m); }))
-                core::loadSurface(mesh, options->mesh.load);
+                            [&](const std::string& m) { return selected(pairs, core::sourceStem(mesh), m); })) {
+                nlohmann::json& of = settingsOf[core::sourceStem(mesh)] = settings;
+                of["mesh hash"] = core::toHex(core::meshHash(core::loadSurface(mesh, options->mesh.load).mesh));
+            }
+        for (const auto& [stem, methods] : results.items()) {
+            if (!methods.is_object())
+                throw InputError(options->json + ": '" + stem + "' is not an object of methods (--resume)");
+            const bool evaluated = settingsOf.count(stem) > 0;  // else kept as it is: only the run's settings
+            for (const auto& [method, entry] : methods.items())
+                if (const std::string difference = settingsDifference(
+                        entry.is_object() ? entry.value("settings", nlohmann::json()) : nlohmann::json(),
+                        settingsUsedBy(evaluated ? settingsOf.at(stem) : settings, render::methodInfo(method)),
+                        evaluated);
+                    !difference.empty())
+                    throw InputError(options->json + ": " + stem + ":" + method + " was evaluated with " + difference +
+                                     " in this run; --resume continues an evaluation with its options");
+        }
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const std::string cacheFolder = optionalCacheFolder(options->cacheDir);
@@ -237,7 +249,7 @@ Command addEvaluateCommand(CLI::App& app)
                 progress.setContext(meshLabel + ", " + methodName);
                 const render::MethodPtr start = render::makeMethod(methodName);
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()},
-                                        {"settings", settingsUsedBy(settings, start->info())}};
+                                        {"settings", settingsUsedBy(settingsOf.at(stem), start->info())}};
                 optimize::VisitedView best;
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];

@@ -114,8 +114,8 @@ std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b,
     if (!a.is_object() || !b.is_object())
         return a.is_object() == b.is_object() ? "" : a.is_object() ? std::string("settings against ") + old
                                                                     : std::string(old) + " against settings";
-    const std::set<std::string> meshSettings{"--scalar",   "--scalar-file", "--cell-to-point",
-                                             "--hotspots", "--cap-holes",   "--distance"};
+    const std::set<std::string> meshSettings{"mesh hash",  "--scalar",    "--scalar-file", "--cell-to-point",
+                                             "--hotspots", "--cap-holes", "--distance"};
     auto shown = [](const nlohmann::json& value) { return value.is_null() ? std::string("unset") : value.dump(); };
     // A flag one entry lacks is not its method's (--alpha-scan of a method without alpha).
     for (const auto& [flag, value] : a.items())

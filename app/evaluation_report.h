@@ -28,9 +28,10 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
 ///        by their flags, each entry those its method uses): "" when every flag both hold is the
 ///        same, else the first that differs with both values, as "--steps 10 against 20", or
 ///        "settings against none (...)" when one side has none (a file of an older version).
-/// @param sameMesh false for the entries of two meshes, which may differ in what each mesh shows
-///        and how it is read (--scalar, --scalar-file, --cell-to-point, --hotspots, --cap-holes,
-///        --distance), as docs/results.md's runs show the artery's pressure and hot spots elsewhere
+/// @param sameMesh false for the entries of two meshes, which differ in the mesh (its "mesh hash")
+///        and may differ in what each shows and how it is read (--scalar, --scalar-file,
+///        --cell-to-point, --hotspots, --cap-holes, --distance), as docs/results.md's runs show the
+///        artery's pressure and hot spots elsewhere
 std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b, bool sameMesh);
 
 }  // namespace ivis::app

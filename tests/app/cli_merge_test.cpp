@@ -55,6 +55,12 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
                    {"other.json: torus:front was evaluated with --steps 2 against 1 in", "p1.json (sphere:front); merge "
                                                                                          "parts of one evaluation"});
+    // Two meshes of one file name (patient01/surface.vtp, patient02/surface.vtp) are not one row.
+    other = nlohmann::json::parse(std::ifstream(output("p2.json")));
+    other.at("torus").at("front").at("settings")["mesh hash"] = "0123456789abcdef";
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"torus:front was evaluated with mesh hash \"0123456789abcdef\" against"});
     // The meshes of one evaluation may show other scalars (docs/results.md: the artery's pressure,
     // hot spots elsewhere), each mesh one for all its methods.
     other = nlohmann::json::parse(std::ifstream(output("p2.json")));

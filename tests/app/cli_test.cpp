@@ -854,6 +854,12 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
         << "the same tables (the seconds may differ)";
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
     // Resumed with other options, the kept meshes' figures would not be this run's (they were kept).
+    nlohmann::json another = nlohmann::json::parse(std::ifstream(output("e.json")));  // another mesh of its name
+    const nlohmann::json kept = another;
+    another.at("sphere").at("front").at("settings")["mesh hash"] = "0123456789abcdef";
+    std::ofstream(output("e.json")) << another.dump();
+    expectBadInput(runCli(common + " --resume"), {"e.json: sphere:front was evaluated with mesh hash"});
+    std::ofstream(output("e.json")) << kept.dump();
     expectBadInput(runCli(common + " --resume --seed 2"),
                    {"e.json: sphere:front was evaluated with --seed 1 against 2 in this run; --resume continues"});
 }
