@@ -141,9 +141,11 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--markdown", options->markdown, "Results as Markdown tables (written after each mesh)");
     command->add_flag("--resume", options->resume,
                       "Keep the meshes the --json file already holds for every method and evaluate the others");
-    command->add_option("--pictures", options->pictures,
-                        "Folder for each method's picture at its best view (made when missing, in an existing folder)");
+    auto* pictures = command->add_option(
+        "--pictures", options->pictures,
+        "Folder for each method's picture at its best view (made when missing, in an existing folder)");
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
+        ->needs(pictures)
         ->check(CLI::Range(16, 8192));
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     command->add_option("--only", options->only,
@@ -154,6 +156,9 @@ Command addEvaluateCommand(CLI::App& app)
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
+        for (auto r = options->optResolutions.begin(); r != options->optResolutions.end(); ++r)
+            if (std::find(r + 1, options->optResolutions.end(), *r) != options->optResolutions.end())
+                throw InputError("--opt-res: " + std::to_string(*r) + " is given twice");
         std::vector<render::MethodPtr> methods;
         for (const std::string& m : options->methods) methods.push_back(render::makeMethod(m));
         options->mesh.fitReachTo(methods);

@@ -75,7 +75,7 @@ std::string secondsTable(const nlohmann::json& results, const ReportLayout& layo
                 const nlohmann::json& row = results.at(stem);
                 const std::string key = std::to_string(r);
                 if (row.contains(m) && row.at(m).at("seconds").contains(key))
-                    text << " " << std::lround(row.at(m).at("seconds").at(key).get<double>() * 10.0) / 10.0 << " |";
+                    text << " " << fixed(row.at(m).at("seconds").at(key).get<double>(), 1) << " |";
                 else
                     text << " - |";
             }

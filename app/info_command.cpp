@@ -26,7 +26,7 @@ void printTimeSeries(const std::string& path, bool json)
         std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}}.dump(2) << "\n";
         return;
     }
-    std::cout << path << " (pvd, " << steps.size() << " time steps)\n";
+    std::cout << path << " (pvd, " << steps.size() << (steps.size() == 1 ? " time step)\n" : " time steps)\n");
     for (const core::TimeStep& s : steps)
         std::cout << "  " << (s.timed ? "t = " : "step ") << s.time << "  " << s.path << "\n";
 }

@@ -10,6 +10,7 @@
 #include <ivis/render/method_registry.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -26,7 +27,7 @@ namespace {
 nlohmann::json readPart(const std::string& path)
 {
     std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open");
+    if (!in) throw InputError(path + (std::filesystem::exists(path) ? ": cannot open" : ": file not found"));
     nlohmann::json part = nlohmann::json::parse(in, nullptr, false);
     if (!part.is_object()) throw InputError(path + ": not the JSON of an evaluation");
     if (part.empty()) throw InputError(path + ": holds no evaluation (an empty object)");  // made empty tables
@@ -51,7 +52,7 @@ Command addMergeCommand(CLI::App& app)
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "merge", "Join the --json files of evaluate jobs (--only MESH:METHOD) into one evaluation's JSON and tables");
-    command->add_option("parts", options->parts, "evaluate --json files")->required()->check(CLI::ExistingFile);
+    command->add_option("parts", options->parts, "evaluate --json files")->required();
     command->add_option("--json", options->json, "The joined results as JSON");
     command->add_option("--markdown", options->markdown, "The tables as Markdown (also printed)");
 

@@ -73,7 +73,8 @@ Command addOptimizeCommand(CLI::App& app)
         command->add_option("--fps", options->fps, "Series: frames per second of the video")
             ->check(CLI::Range(1, 240))
             ->capture_default_str(),
-        command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
+        command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")
+            ->excludes("--fps")};
 
     return {command, [options] {
         options->view.viewIsStart = true;  // --view's angles start the search, whose views are framed

@@ -90,9 +90,13 @@ Command addRenderCommand(CLI::App& app)
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
                         "and the viewer read it)");
-    command->add_option("--legend-only", options->legendOnly,
-                        "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as beside a --res picture "
-                        "(of a series: its one colour scale)");
+    auto* legendOnly = command->add_option("--legend-only", options->legendOnly,
+                                           "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as "
+                                           "beside a --res picture (of a series: its one colour scale)");
+    // Nothing else is written beside the bar alone (these were accepted, and nothing written).
+    for (const char* output : {"--exr", "--stats-json", "--measure", "--tear-map", "--unseen-map", "--camera-out",
+                               "--view-out"})
+        legendOnly->excludes(command->get_option(output));
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,
@@ -105,9 +109,11 @@ Command addRenderCommand(CLI::App& app)
                             "no video)"),
         command->add_option("--fps", options->fps, "Series: frames per second of the video")
             ->check(CLI::Range(1, 240))
-            ->capture_default_str(),
+            ->capture_default_str()
+            ->excludes("--frames"),  // a job's part makes no video
         command->add_flag("--no-video", options->noVideo,
-                          "Series: no MP4 (by default one is made when ffmpeg is on PATH)")};
+                          "Series: no MP4 (by default one is made when ffmpeg is on PATH)")
+            ->excludes("--fps")};
 
     return {command, [options, command] {
         options->view.rangeOfEachPicture = options->rangePerFrame;

@@ -40,6 +40,7 @@ Command addSdfCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         // The cache is sdf's output: a folder it cannot write is refused before the mesh is read.
         const std::string folder = options->output.empty() ? writableCacheFolder(options->cacheDir) : "";
+        options->mesh.load.defaultArray = false;  // the volume shows no scalar: no note of one
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
                                      ? defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions)

@@ -3,6 +3,8 @@
 #include "value_decoding.h"
 
 #include <ivis/core/file_bytes.h>
+#include <ivis/core/file_extension.h>
+#include <ivis/core/mesh_formats.h>
 #include <ivis/core/mesh_layout_check.h>
 
 #include <pugixml.hpp>
@@ -51,6 +53,12 @@ std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text
         if (!std::filesystem::is_regular_file(step.path, ec)) {
             failInput(path, where + " names '" + file + "', which does not exist");
         }
+        const std::string extension = lowerCaseExtension(step.path);
+        const std::vector<detail::MeshFileFormat>& formats = detail::meshFileFormats();
+        if (std::none_of(formats.begin(), formats.end(),
+                         [&](const detail::MeshFileFormat& f) { return extension == f.extension; }))
+            failInput(path, where + " names '" + file + "', which is not a mesh file (" +
+                                (extension.empty() ? std::string("no extension") : "'" + extension + "'") + ")");
         steps.push_back(step);
     }
     if (steps.empty()) failInput(path, "the collection lists no DataSet");

@@ -79,7 +79,8 @@ SurfaceField loadReadSurface(const std::string& source, SurfaceField field, cons
     for (const std::string& note : report.notes) say(source + ": " + note, notes);
     if (report.degenerateDropped > 0)
         say(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles", notes);
-    if (!field.hasScalar() && options.hotSpots == 0 && (!field.arrays.empty() || options.read.cellToPoint)) {
+    if (options.defaultArray && !field.hasScalar() && options.hotSpots == 0 &&
+        (!field.arrays.empty() || options.read.cellToPoint)) {
         const DataArray& shown = defaultArray(field, options.read.cellToPoint);
         showArray(field, qualifiedArrayName(shown), options.read.cellToPoint);
         say(source + ": showing the " + associationName(shown.association) + " array '" + field.name +

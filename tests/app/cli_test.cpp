@@ -952,6 +952,20 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
     test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
     for (const char* flag : {"--range 0 1", "--colormap inferno", "--log", "--units Pa", "--legend bottom"})
         expectRejected(render(mesh, flag), {mesh + ": --", " colours a scalar, and the mesh shows none"});
+    expectRejected(render("scene:sphere", "--legend-only " + quoted(output("bar.svg")) + " --exr " +
+                                              quoted(output("x.exr"))),
+                   {"--exr excludes --legend-only"});
+    expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--no-video --fps 3"),
+                   {"--fps excludes --no-video"});
+    expectRejected("evaluate scene:sphere --volume-res 48 --picture-res 32", {"--picture-res requires --pictures"});
+    expectRejected("evaluate scene:sphere --volume-res 48 --opt-res 16,24,16", {"--opt-res: 16 is given twice"});
+    expectRejected("merge " + quoted(input("missing.json")), {input("missing.json") + ": file not found"});
+    // sdf shows no scalar, and says nothing of one (it named the array a picture would show).
+    const CliResult volume = runCli("sdf " + quoted(sharedMesh("vtk/artery_series/artery_t0200.vtp")) +
+                                    " --volume-res 48 -o " + quoted(output("v.vdb")));
+    EXPECT_EQ(volume.status, 0) << volume.err;
+    EXPECT_EQ(volume.err.find("showing"), std::string::npos) << volume.err;
+    fs::remove(output("v.vdb"));
     // A series of such meshes: said once its steps are surveyed, before a volume is built.
     const std::string pvd = input("s.pvd");
     test::writeFile(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet file=\"m.obj\"/><DataSet file=\"m.obj\"/>"

@@ -99,6 +99,8 @@ TEST(PvdReader, BadCollectionsNameTheFileAndTheProblem)
         {"<VTKFile type=\"Collection\"><Collection><DataSet part=\"1\" file=\"a.vtp\"/></Collection></VTKFile>",
          "DataSet 0 is part 1 of its time step"},
         {"<VTKFile type=\"Collection\"><Collection></Collection></VTKFile>", "the collection lists no DataSet"},
+        {"<VTKFile type=\"Collection\"><Collection><DataSet file=\"s.pvd\"/></Collection></VTKFile>",
+         "DataSet 0 names 's.pvd', which is not a mesh file ('.pvd')"},
         {"<VTKFile type=\"PolyData\"><PolyData/></VTKFile>", "not a ParaView collection"},
         {"<VTKFile type=\"Collection\"><Collection>", "not valid XML"},
     };

@@ -18,6 +18,7 @@ struct SurfaceLoadOptions {
     MeshReadOptions read;   ///< scalar selection (files only)
     bool capHoles = false;  ///< close boundary loops with caps tagged as non-data
     int hotSpots = 0;       ///< when > 0, the scalar is this many generated hot spots (core::placeHotSpots)
+    bool defaultArray = true;  ///< with no scalar chosen, show the file's default array (sdf shows none)
 };
 
 /// @brief Reads the file (or generates the scene), logs the reader's notes and dropped degenerate
