@@ -337,8 +337,8 @@ TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
     // With no array chosen, only why (the default array's note came first).
     expectRejected("optimize " + quoted(mixed) + common,
                    {tet + ": step 1 (tet.vtp) has other geometry or values than the first step"});
-    expectRejected("optimize " + quoted(artery()) + " --scalar pressure_t200 --fps 3" + common,
-                   {"--fps: applies to a time series"});
+    expectRejected("optimize " + quoted(artery()) + " --scalar pressure_t200" + common,
+                   {"--no-video: applies to a time series"});
 
     const CliResult result = runCli("optimize " + quoted(artery()) + " --scalar 'pressure_t*'" + common);
     ASSERT_EQ(result.status, 0) << result.err;
