@@ -54,6 +54,7 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
     command.add_option("--volume-res", volume.resolution,
                        "Voxels across the box [-2.5,2.5]^3 (" + std::to_string(vdb::kMinResolution) + " to " +
                            std::to_string(vdb::kMaxResolution) + ")")
+        ->check(CLI::Range(vdb::kMinResolution, vdb::kMaxResolution))
         ->capture_default_str();
     command.add_option("--band", volume.bandVoxels, "Fine narrow-band half-width in voxels")
         ->check(finiteRange(3.0, 64.0))
@@ -61,7 +62,7 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
     reachOption = command.add_option("--reach", volume.farFieldReach,
                                      "Exterior distance the far field covers (normalised; default 0.6, or more when the "
                                      "method's rays need it: inversevis-wrap's hull offset + 0.4, another curved-ray "
-                                     "method's + 0.6)");
+                                     "method's + 0.6; sdf: the default method's)");
     command.add_option("--distance", distance, "Distance sign: auto (unsigned for open meshes), signed, unsigned")
         ->check(CLI::IsMember({"auto", "signed", "unsigned"}))
         ->capture_default_str();

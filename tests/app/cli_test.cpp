@@ -267,7 +267,7 @@ TEST_F(Cli, OutOfRangeVolumeResolution)
 {
     expectRejected("sdf " + quoted(sharedMesh("vampy_artery_cfd_pressure.ply")) + " --volume-res 8 -o " +
                        quoted(output("s.vdb")),
-                   {"volume resolution 8 is out of range"});
+                   {"--volume-res: Value 8 not in range 16 to 4096"});  // the option named (it was not)
 }
 
 TEST_F(Cli, UnknownColourMap)
