@@ -15,6 +15,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <utility>
 #include <memory>
 #include <set>
 #include <string>
@@ -66,8 +67,8 @@ Command addMergeCommand(CLI::App& app)
         std::set<int> resolutions;
         std::vector<int> displayResolutions;
         std::map<std::string, std::string> source;  // "stem:method" -> the part that holds it
-        std::map<std::string, std::string> firstOf;  // stem ("" for any) -> "stem:method" of its first entry
-        std::map<std::string, nlohmann::json> settingsOf;  // "stem:method" -> its settings
+        // stem ("" for any) -> its first entry's "stem:method" and settings
+        std::map<std::string, std::pair<std::string, nlohmann::json>> firstOf;
         for (const std::string& path : options->parts) {
             const nlohmann::json part = readPart(path);
             for (const auto& [stem, methods] : part.items()) {
@@ -80,11 +81,10 @@ Command addMergeCommand(CLI::App& app)
                     if (source.count(key)) throw InputError(path + ": " + key + " is in " + source.at(key) + " too");
                     source[key] = path;
                     // Every entry shares the first one's settings, and its mesh's first entry's all of them.
-                    settingsOf[key] = entry.value("settings", nlohmann::json());
+                    const nlohmann::json settings = entry.value("settings", nlohmann::json());
                     for (const std::string& of : {std::string(), stem}) {
-                        const std::string& first = firstOf.emplace(of, key).first->second;
-                        if (const std::string difference =
-                                settingsDifference(settingsOf[key], settingsOf.at(first), !of.empty());
+                        const auto& [first, firstSettings] = firstOf.emplace(of, std::pair{key, settings}).first->second;
+                        if (const std::string difference = settingsDifference(settings, firstSettings, !of.empty());
                             !difference.empty())
                             throw InputError(path + ": " + key + " was evaluated with " + difference + " in " +
                                              source.at(first) + " (" + first +

@@ -28,15 +28,20 @@ const std::vector<MeshFileFormat>& meshFileFormats()
     return kFormats;
 }
 
-const MeshFileFormat& meshFileFormat(const std::string& path)
+const MeshFileFormat* findMeshFileFormat(const std::string& path)
 {
     const std::string ext = lowerCaseExtension(path);
+    for (const MeshFileFormat& format : meshFileFormats())
+        if (ext == format.extension) return &format;
+    return nullptr;
+}
+
+const MeshFileFormat& meshFileFormat(const std::string& path)
+{
+    if (const MeshFileFormat* format = findMeshFileFormat(path)) return *format;
     std::string known;
-    for (const MeshFileFormat& format : meshFileFormats()) {
-        if (ext == format.extension) return format;
-        known += (known.empty() ? "" : ", ") + std::string(format.extension);
-    }
-    failInput(path, "unknown mesh format '" + ext + "' (expected " + known + ")");
+    for (const MeshFileFormat& format : meshFileFormats()) known += (known.empty() ? "" : ", ") + std::string(format.extension);
+    failInput(path, "unknown mesh format '" + lowerCaseExtension(path) + "' (expected " + known + ")");
 }
 
 }  // namespace ivis::core::detail

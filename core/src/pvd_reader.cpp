@@ -53,12 +53,11 @@ std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text
         if (!std::filesystem::is_regular_file(step.path, ec)) {
             failInput(path, where + " names '" + file + "', which does not exist");
         }
-        const std::string extension = lowerCaseExtension(step.path);
-        const std::vector<detail::MeshFileFormat>& formats = detail::meshFileFormats();
-        if (std::none_of(formats.begin(), formats.end(),
-                         [&](const detail::MeshFileFormat& f) { return extension == f.extension; }))
+        if (!detail::findMeshFileFormat(step.path)) {
+            const std::string extension = lowerCaseExtension(step.path);
             failInput(path, where + " names '" + file + "', which is not a mesh file (" +
                                 (extension.empty() ? std::string("no extension") : "'" + extension + "'") + ")");
+        }
         steps.push_back(step);
     }
     if (steps.empty()) failInput(path, "the collection lists no DataSet");

@@ -5,6 +5,7 @@
 #include <ivis/core/mesh_layout_check.h>
 
 #include <algorithm>
+#include <vector>
 #include <charconv>
 #include <cctype>
 #include <limits>
@@ -198,20 +199,17 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 const DataArray& defaultArray(const SurfaceField& field, bool cellToPoint)
 {
     auto first = [&](auto chosen) { return std::find_if(field.arrays.begin(), field.arrays.end(), chosen); };
-    if (cellToPoint) {
-        const auto active = first([](const DataArray& a) { return a.activeScalars && a.association == Association::Cell; });
-        if (active != field.arrays.end()) return *active;
-        const auto cell = first([](const DataArray& a) { return a.association == Association::Cell; });
-        if (cell == field.arrays.end()) detail::failInput(field.sourcePath, "--cell-to-point averages a cell array, and the file has none");
-        return *cell;
-    }
-    IVIS_CHECK(!field.arrays.empty());
-    for (const Association association : {Association::Point, Association::Cell}) {
-        const auto active = first([&](const DataArray& a) { return a.activeScalars && a.association == association; });
-        if (active != field.arrays.end()) return *active;
-    }
-    const auto point = first([](const DataArray& a) { return a.association == Association::Point; });
-    return point != field.arrays.end() ? *point : field.arrays.front();
+    const std::vector<Association> order =
+        cellToPoint ? std::vector{Association::Cell} : std::vector{Association::Point, Association::Cell};
+    for (const bool activeOnly : {true, false})
+        for (const Association association : order) {
+            const auto shown = first([&](const DataArray& a) {
+                return (a.activeScalars || !activeOnly) && a.association == association;
+            });
+            if (shown != field.arrays.end()) return *shown;
+        }
+    IVIS_CHECK(cellToPoint);  // callers ask only of a field with arrays
+    detail::failInput(field.sourcePath, "--cell-to-point averages a cell array, and the file has none");
 }
 
 }  // namespace ivis::core

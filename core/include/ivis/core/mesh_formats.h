@@ -24,6 +24,9 @@ struct MeshFileFormat {
 /// Every registered format, in the order they are listed to users.
 const std::vector<MeshFileFormat>& meshFileFormats();
 
+/// The format of @a path by its extension (case-insensitive), or null when none is registered.
+const MeshFileFormat* findMeshFileFormat(const std::string& path);
+
 /// The format of @a path by its extension (case-insensitive).
 /// @throw InputError "<path>: unknown mesh format '.xyz' (expected .obj, .off, ...)"
 const MeshFileFormat& meshFileFormat(const std::string& path);
