@@ -45,7 +45,10 @@ struct RunResult {
 RunResult runViewer(const std::string& arguments, bool display, const TempDir& dir)
 {
     const std::string log = dir.file("viewer.log");
-    const std::string prefix = display ? "xvfb-run -a -s '-screen 0 1280x1024x24' " : "";
+    // An authority file of the test's own: xvfb-run then makes no folder of its own, whose removal at
+    // times failed (status 5, not the viewer's).
+    const std::string prefix =
+        display ? "xvfb-run -a -f '" + dir.file("Xauthority") + "' -s '-screen 0 1280x1024x24' " : "";
     static const TempDir cacheHome;  // the default cache folder is the test run's own, never the user's
     const std::string command =
         prefix + "env XDG_CACHE_HOME='" + cacheHome.path() + "' '" + IVIS_VIEW_PATH + "' " + arguments + " >'" + log + "' 2>&1";
@@ -334,7 +337,8 @@ TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
     const std::string log = dir.file("viewer.log");
     const std::string script =
-        "xvfb-run -a -s '-screen 0 1280x1024x24' '" + std::string(IVIS_VIEW_PATH) + "' '" + pvd +
+        "xvfb-run -a -f '" + dir.file("Xauthority") + "' -s '-screen 0 1280x1024x24' '" + std::string(IVIS_VIEW_PATH) +
+        "' '" + pvd +
         "' --width 200 --height 200 --volume-res 64 --frames 20 --cache-dir '" + dir.path() + "' --screenshot '" +
         dir.file("s.png") + "' >'" + log + "' 2>&1 & pid=$!; for i in $(seq 1 1200); do grep -q 'step 2/5' '" + log +
         "' && break; sleep 0.1; done; pkill -INT -f -- '^" + std::string(IVIS_VIEW_PATH) + " .*--cache-dir " + dir.path() +
