@@ -24,6 +24,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// @a fps as ffmpeg's -framerate reads it: "7", "2.5", "0.333333".
+std::string frameRateText(double fps)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", fps);
+    return text;
+}
+
 /// @a path with "_" and @a number inserted before its extension.
 std::string withSuffix(const std::string& path, const std::string& number)
 {
@@ -105,7 +113,7 @@ std::optional<std::string> findFfmpeg()
     return std::nullopt;
 }
 
-std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::size_t count, int fps,
+std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::size_t count, double fps,
                        const std::string& video)
 {
     std::string failure;
@@ -113,7 +121,7 @@ std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::
         core::writeAtomically(video, [&](const std::string& temporary) {
             const std::string errorLog = temporary + ".log";
             const int status = runProgram({ffmpeg, "-nostdin", "-y", "-loglevel", "error", "-framerate",
-                                           std::to_string(fps), "-i", framePattern(path, count),
+                                           frameRateText(fps), "-i", framePattern(path, count),
                                            // only this series' frames, whatever an older, longer one left
                                            "-frames:v", std::to_string(count), "-vf",
                                            "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "-f", "mp4",

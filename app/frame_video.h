@@ -27,7 +27,7 @@ std::optional<std::string> findFfmpeg();
 ///        @a fps frames per second into an H.264 (or ffmpeg's default) MP4 at @a video, written
 ///        through a temporary file.
 /// @return "" when the video was written, else why not (ffmpeg's last line of error)
-std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::size_t count, int fps,
+std::string writeVideo(const std::string& ffmpeg, const std::string& path, std::size_t count, double fps,
                        const std::string& video);
 
 }  // namespace ivis::app

@@ -1,5 +1,6 @@
 // `inversevis optimize MESH`: the best viewpoint and parameters of a method by simulated annealing;
 // of a time series, one optimisation for all its steps (their mean scalar energy) and a frame per step.
+#include "cli_checks.h"
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
@@ -40,7 +41,7 @@ Command addOptimizeCommand(CLI::App& app)
         std::string viewOut;
         std::string cacheDir;
         std::vector<std::string> sources;
-        int fps = 5;
+        double fps = 5;
         bool noVideo = false;
         std::vector<CLI::Option*> seriesFlags;
     };
@@ -70,8 +71,8 @@ Command addOptimizeCommand(CLI::App& app)
                         "(default: <output>.view.json; `render --view` reproduces the picture, the viewer loads it)");
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
-        command->add_option("--fps", options->fps, "Series: frames per second of the video")
-            ->check(CLI::Range(1, 240))
+        command->add_option("--fps", options->fps, "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
+            ->check(finiteRange(0.1, 240.0))
             ->capture_default_str(),
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")
             ->excludes("--fps")};

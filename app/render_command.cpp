@@ -45,7 +45,7 @@ Command addRenderCommand(CLI::App& app)
         std::vector<std::string> sources;
         bool rangePerFrame = false;
         std::string frames;
-        int fps = 5;
+        double fps = 5;
         bool noVideo = false;
         bool measure = false;
         double minCoherence = 0.99;
@@ -107,8 +107,8 @@ Command addRenderCommand(CLI::App& app)
                             "Series: render only steps FIRST:LAST (from 0, inclusive), numbered as in the whole series: "
                             "one job of a render spread over a cluster (needs a fixed view: --view, --camera or --fov; "
                             "no video)"),
-        command->add_option("--fps", options->fps, "Series: frames per second of the video")
-            ->check(CLI::Range(1, 240))
+        command->add_option("--fps", options->fps, "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
+            ->check(finiteRange(0.1, 240.0))
             ->capture_default_str()
             ->excludes("--frames"),  // a job's part makes no video
         command->add_flag("--no-video", options->noVideo,

@@ -34,7 +34,7 @@ struct SeriesRenderRequest {
     std::string exr;          ///< EXR layers of each frame, numbered alike ("" = none)
     std::string cameraOut;    ///< the camera JSON ("" = "<png>.camera.json")
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
-    int fps = 5;              ///< the video's frames per second
+    double fps = 5;           ///< the video's frames per second (a fraction too: 0.5 shows each step 2 s)
     bool measure = false;     ///< each frame's METHOD.md measures in its statistics (pictureMeasuresJson)
     /// Above 0: the method's readable rule (optimize::loosestReadable at this coherence) is chosen
     /// on the series' first step (step 0, also for a job's part) and replaces the method's.

@@ -397,6 +397,14 @@ TEST_F(CliSeries, VideoWhenFfmpegIsOnPathAndFramesAlone)
     const std::string args = test::readFile(input("args"));
     EXPECT_NE(args.find("-framerate 7 -i " + output("f_%04d.png") + " -frames:v 5 "), std::string::npos) << args;
 
+    // A slow series: a fraction of a frame per second reaches ffmpeg as given.
+    {
+        const ScopedPath path(mInputs.path());
+        const CliResult result = runCli(renderSeries(quoted(pvd()), "--fps 0.5"));
+        ASSERT_EQ(result.status, 0) << result.err;
+    }
+    EXPECT_NE(test::readFile(input("args")).find("-framerate 0.5 -i "), std::string::npos);
+
     // No ffmpeg: one line says so; the frames are written all the same.
     const test::TempDir empty;
     std::filesystem::remove(output("f.mp4"));

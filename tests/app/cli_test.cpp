@@ -957,6 +957,8 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
                    {"--exr excludes --legend-only"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--no-video --fps 3"),
                    {"--fps excludes --no-video"});
+    expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--fps 0.05"),
+                   {"--fps: Value 0.05 not in range [0.1 - 240]"});
     expectRejected("evaluate scene:sphere --volume-res 48 --picture-res 32", {"--picture-res requires --pictures"});
     expectRejected("evaluate scene:sphere --volume-res 48 --opt-res 16,24,16", {"--opt-res: 16 is given twice"});
     expectRejected("merge " + quoted(input("missing.json")), {input("missing.json") + ": file not found"});
