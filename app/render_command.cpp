@@ -6,6 +6,7 @@
 #include "legend_file.h"
 #include "mesh_options.h"
 #include "output_files.h"
+#include "probe_report.h"
 #include "series_render.h"
 #include "series_survey.h"
 #include "view_options.h"
@@ -23,6 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -41,6 +43,7 @@ Command addRenderCommand(CLI::App& app)
         std::string viewOut;
         std::string tearMap;
         std::string unseenMap;
+        std::vector<std::string> probes;
         std::string cacheDir;
         std::vector<std::string> sources;
         bool rangePerFrame = false;
@@ -86,6 +89,12 @@ Command addRenderCommand(CLI::App& app)
                         "Also write a PNG of the surface seen from the picture's side and from the opposite side, red "
                         "where no pixel of the picture shows it (the surface voxels --measure counts as unseen; "
                         "measures the picture; one picture only)");
+    auto* probe = command->add_option(
+        "--probe", options->probes,
+        "What pixel X,Y of the picture (from its top left, the colour bar's margin not counted) shows, printed on "
+        "stdout and into --stats-json's probes: background, direct or indirect, the surface point in the mesh's "
+        "units, its file cell, the scalar there, and a --theta/--phi that shows the point directly (repeatable; one "
+        "picture only)");
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "
@@ -97,6 +106,7 @@ Command addRenderCommand(CLI::App& app)
     for (const char* output : {"--exr", "--stats-json", "--measure", "--tear-map", "--unseen-map", "--camera-out",
                                "--view-out"})
         legendOnly->excludes(command->get_option(output));
+    legendOnly->excludes(probe);
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,
@@ -150,6 +160,10 @@ Command addRenderCommand(CLI::App& app)
                 throw InputError("--frames: every job must use one camera; give --view, --camera or --fov (a framed "
                                  "view follows the job's first step)");
         }
+        std::vector<glm::ivec2> probePixels;
+        for (const std::string& text : options->probes)
+            probePixels.push_back(parseProbePixel(text, options->view.renderOptions().width,
+                                                  options->view.renderOptions().height));
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
@@ -161,6 +175,8 @@ Command addRenderCommand(CLI::App& app)
                 throw InputError("--tear-map: a series has one picture per step; render the step alone");
             if (!options->unseenMap.empty())
                 throw InputError("--unseen-map: a series has one picture per step; render the step alone");
+            if (!options->probes.empty())
+                throw InputError("--probe: a series has one picture per step; render the step alone");
             core::SurfaceSeries series(options->sources, options->mesh.load);
             SeriesRenderRequest request;
             request.png = options->output;
@@ -296,9 +312,17 @@ Command addRenderCommand(CLI::App& app)
                 files.write(options->unseenMap,
                             [&](const std::string& temporary) { core::writePng(unseen, temporary, false); });
         }
+        std::string probeLines;  // said once the outputs are in place
+        for (const glm::ivec2& pixel : probePixels) {
+            const ProbeReport report =
+                probeReport(scene, renderOptions.method, camera, renderOptions.width, renderOptions.height, pixel);
+            stats["probes"].push_back(probeJson(report, field));
+            probeLines += probeLine(report, field) + "\n";
+        }
         if (!options->statsJson.empty())
             files.write(options->statsJson, [&](const std::string& temporary) { writeJsonFile(stats, temporary); });
         files.commit();
+        std::fputs(probeLines.c_str(), stdout);
         core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
                       std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
                       ", " + options->view.describeFraming(camera) + ", " + std::to_string(s.seconds) +

@@ -70,6 +70,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     mOptions.optimization.energyOptions(mOptions.optResolution, mShading.scale.range);  // validates --energy
     mOrbit = OrbitCamera::fromCamera(mOptions.view.camera(), !mOptions.view.cameraFile.empty());
     mOrbit.framed = mOptions.view.framed();
+    mProbePending = !mOptions.probe.empty();
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
 }
@@ -154,7 +155,10 @@ void ViewerApp::showStep(std::size_t step)
         mNormals = render::vertexNormals(mField->mesh);
     }
     mRenderer->setMesh(*mField, mNormals);
-    if (!sameGeometry) startLoading();
+    if (!sameGeometry) {
+        mProbe.clear();
+        startLoading();
+    }
     std::printf("inversevis-view: step %zu/%zu (%s): %s\n", step + 1, mSeries->steps().size(), shown.label.c_str(),
                 sameGeometry ? "volume kept" : "other geometry, loading its volume");
     std::fflush(stdout);
@@ -265,8 +269,8 @@ void ViewerApp::saveView()
     const std::string path =
         "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mSavedViews) + ".view.json";
     render::RenderOptions look = mOptions.view.renderOptions();
-    look.width = mPictureWidth > 0 ? mPictureWidth : mOptions.width;
-    look.height = mPictureHeight > 0 ? mPictureHeight : mOptions.height;
+    look.width = mPicture.width > 0 ? mPicture.width : mOptions.width;
+    look.height = mPicture.height > 0 ? mPicture.height : mOptions.height;
     look.method = mMethod;
     look.shading = mShading;
     look.legend = mShowLegend;
@@ -340,6 +344,11 @@ int ViewerApp::runHeadlessScreenshot()
                           std::to_string(mOptions.height) + ", " + mMethod->name() + ", " +
                           std::to_string(mOptions.frames) + " frames, last frame " + frame + ", " + mGlRenderer +
                           ")\n");
+        if (mProbePending)
+            written.push_back("inversevis-view: " +
+                              mProbe.probe(*mLoaded->scene, mMethod, mOrbit.camera(), mOptions.width, mOptions.height,
+                                           parseProbePixel(mOptions.probe, mOptions.width, mOptions.height)) +
+                              "\n");
     }
     files.commit();
     for (const std::string& line : written) std::fputs(line.c_str(), stdout);
@@ -445,6 +454,15 @@ void ViewerApp::handleInput()
             mInteraction.moved(now(), false);
             mDirty = true;
         }
+        // A click (released within 3 pixels of where it was pressed) probes the pixel under it.
+        if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f && !io.KeyShift) {
+            int fbWidth = 0, fbHeight = 0;
+            glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
+            const int x = int(std::floor(io.MousePos.x * io.DisplayFramebufferScale.x)) - mPicture.x;
+            const int y = int(std::floor(io.MousePos.y * io.DisplayFramebufferScale.y)) -
+                          (fbHeight - mPicture.y - mPicture.height);
+            if (x >= 0 && y >= 0 && x < mPicture.width && y < mPicture.height) probeAt({x, y});
+        }
     }
     if (!io.MouseDown[0] && !io.MouseDown[1] && !io.MouseDown[2]) mInteraction.released();
     if (!io.WantCaptureKeyboard) {
@@ -460,6 +478,30 @@ void ViewerApp::handleInput()
             if (ImGui::IsKeyPressed(GLFW_KEY_LEFT) && mStep > 0) switchStep(mStep - 1);
         }
     }
+}
+
+void ViewerApp::probeAt(const glm::ivec2& pixel)
+{
+    if (!mLoaded) {
+        mStatus = "probe: the volume is still loading";
+        return;
+    }
+    const std::string line =
+        mProbe.probe(*mLoaded->scene, mMethod, mOrbit.camera(), mPicture.width, mPicture.height, pixel);
+    std::printf("inversevis-view: %s\n", line.c_str());
+    std::fflush(stdout);
+}
+
+void ViewerApp::turnTo(const glm::dvec2& view)
+{
+    OrbitCamera from = mOrbit;
+    from.framed = true;  // framed on the way, as it ends
+    OrbitCamera to = from;
+    to.frameAgain();
+    to.thetaDeg = view.x;
+    to.phiDeg = view.y;
+    mAnimation = CameraAnimation(from, {}, to, {}, now(), 1.0);
+    mDirty = true;
 }
 
 void ViewerApp::drawPanel()
@@ -547,6 +589,8 @@ void ViewerApp::drawPanel()
             "`inversevis render --view FILE` and `inversevis-view --view FILE` show it again");
     if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
     ImGui::Separator();
+    if (const std::optional<glm::dvec2> view = mProbe.widgets(*mField)) turnTo(*view);
+    ImGui::Separator();
     ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
                 mRenderer->width(), mRenderer->height());
     bool framed = mOrbit.framed;
@@ -611,12 +655,16 @@ int ViewerApp::runInteractive()
         if (fbWidth > 0 && fbHeight > 0) {
             picture = mColorBar->place(legendContent(), mLegendSide, mShowLegend && mField->hasScalar(), fbWidth, fbHeight);
             mColorBar->draw(*ImGui::GetBackgroundDrawList(), ImGui::GetIO().DisplayFramebufferScale);
+            if (mLoaded) {
+                const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+                mProbe.drawMarker(*ImGui::GetBackgroundDrawList(), *mLoaded->scene, mMethod, mOrbit.camera(), picture,
+                                  fbHeight, {scale.x, scale.y});
+            }
         }
         ImGui::Render();
 
         if (fbWidth > 0 && fbHeight > 0) {
-            mPictureWidth = picture.width;
-            mPictureHeight = picture.height;
+            mPicture = picture;
             const float scale = mInteraction.scale(mRenderScale, now());
             const int width = std::max(16, int(std::lround(picture.width * scale)));
             const int height = std::max(16, int(std::lround(picture.height * scale)));
@@ -625,6 +673,13 @@ int ViewerApp::runInteractive()
                 lastWidth = width;
                 lastHeight = height;
                 mDirty = false;
+            }
+            // --probe, once the camera and the method have settled (a readable rule chosen at start).
+            if (mProbePending && mLoaded && !mJob.valid() && !mAnimation.started()) {
+                mProbePending = false;
+                const glm::ivec2 pixel = parseProbePixel(mOptions.probe, mOptions.width, mOptions.height);
+                if (pixel.x < picture.width && pixel.y < picture.height) probeAt(pixel);
+                else mStatus = "--probe " + mOptions.probe + ": outside the picture beside the colour bar";
             }
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
             glViewport(0, 0, fbWidth, fbHeight);

@@ -8,6 +8,7 @@
 #include "gpu_renderer.h"
 #include "interaction_scale.h"
 #include "orbit_camera.h"
+#include "probe_panel.h"
 #include "scene_loader.h"
 #include "view_optimiser.h"
 #include "viewer_options.h"
@@ -79,6 +80,10 @@ private:
     int runInteractive();
     void drawPanel();
     void handleInput();
+    /// Probes @a pixel of the picture last drawn (from its top left) into the panel and on stdout.
+    void probeAt(const glm::ivec2& pixel);
+    /// Eases the camera to the angles @a view on the radius-2.5 sphere around the origin, framed.
+    void turnTo(const glm::dvec2& view);
     /// The CPU jobs the panel's buttons start.
     enum class Job { Parameters, View, ReadableRule };
     /// Runs @a job in the background.
@@ -128,8 +133,9 @@ private:
     double mLastFrameMs = 0.0;
     int mScreenshots = 0;
     int mSavedViews = 0;
-    int mPictureWidth = 0;   ///< the picture's part of the window, last frame (framebuffer pixels)
-    int mPictureHeight = 0;
+    PictureViewport mPicture;  ///< the picture's part of the window, last frame (framebuffer pixels)
+    ProbePanel mProbe;         ///< the last pixel clicked
+    bool mProbePending = false;  ///< --probe waits for the loaded volume and a settled camera
     int mColormapIndex = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "viewer_options.h"
 
 #include "../output_files.h"
+#include "../probe_report.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
@@ -38,6 +39,9 @@ void ViewerOptions::addTo(CLI::App& app)
                    "drawn, write the window (panel included) to this PNG and exit");
     app.add_option("--optimize", optimise, "Press the parameter optimiser's button or 'optimise view' once the volume is loaded")
         ->check(CLI::IsMember({"parameters", "view"}));
+    app.add_option("--probe", probe,
+                   "Once the volume is loaded, probe pixel X,Y of the picture (from its top left) as a click does: "
+                   "what it shows, printed and in the panel (headless: of each step, after its screenshot)");
     app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
     app.add_option("--cache-dir", cacheDir, kCacheDirHelp);
@@ -58,6 +62,10 @@ void ViewerOptions::validate()
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
+    if (!probe.empty()) {
+        if (benchmark) throw InputError("--probe: the benchmark orbits; probe a screenshot or the window");
+        parseProbePixel(probe, width, height);
+    }
     checkOutputFiles({{screenshot, "--screenshot", {".png"}},
                       {regionPng, "--region-png", {".png"}},
                       {uiScreenshot, "--ui-screenshot", {".png"}}},

@@ -3,7 +3,9 @@
 #include "cli_fixture.h"
 
 #include <gtest/gtest.h>
+#include <ivis/core/camera.h>
 #include <ivis/core/image_io.h>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
@@ -17,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -718,6 +721,68 @@ TEST_F(Cli, RenderUnseenMapShowsTheSurfaceThePictureMisses)
     EXPECT_GT(red[1], surface[1] * 3 / 4) << "the back is not";
 }
 
+// render --probe tells what each probed pixel of the picture shows, as the EXR's layers record it,
+// and names a view from which the point is seen directly: a far-side point of the rings lies in
+// the direct part of that view's picture.
+TEST_F(Cli, RenderProbeTellsWhatAPixelShowsAndAViewThatShowsItDirectly)
+{
+    const std::string common = " --volume-res 64 --hotspots 2 --res 64x64 --cache-dir " + quoted(output(""));
+    std::string probes;
+    for (int x = 0; x < 64; ++x) probes += " --probe " + std::to_string(x) + ",32";
+    const CliResult result = runCli("render scene:sphere --method inversevis-wrap --theta 90 --phi 0" + common +
+                                    probes + " -o " + quoted(output("p.png")) + " --exr " + quoted(output("p.exr")) +
+                                    " --stats-json " + quoted(output("p.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json reports = nlohmann::json::parse(std::ifstream(output("p.json"))).at("probes");
+    ASSERT_EQ(reports.size(), 64u);
+    EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 64) << result.out;
+    EXPECT_EQ(result.out.rfind("pixel 0,32: background\n", 0), 0u) << result.out;
+
+    const core::Similarity units = core::readExrMeshUnits(output("p.exr"));
+    std::vector<std::vector<float>> layers;
+    for (const char* name : {"region", "P.X", "P.Y", "P.Z", "scalar"}) layers.push_back(core::readExrChannel(output("p.exr"), name));
+    std::optional<glm::dvec3> farSide;  // a point of the rings on the sphere's far half, in normalised units
+    nlohmann::json farReport;
+    int indirect = 0;
+    for (int x = 0; x < 64; ++x) {
+        const nlohmann::json& report = reports[std::size_t(x)];
+        const std::size_t i = 32u * 64u + std::size_t(x);
+        EXPECT_EQ(report.at("pixel"), nlohmann::json({x, 32}));
+        const char* regions[] = {"background", "direct", "indirect"};
+        ASSERT_EQ(report.at("region"), regions[int(layers[0][i])]) << x;
+        if (layers[0][i] == 0.0f) {
+            EXPECT_FALSE(report.contains("position")) << x;
+            continue;
+        }
+        const glm::dvec3 drawn(layers[1][i], layers[2][i], layers[3][i]);
+        const std::vector<double> position = report.at("position").get<std::vector<double>>();
+        const glm::dvec3 told = units.normalizedFromMesh({position[0], position[1], position[2]});
+        EXPECT_LT(glm::length(told - drawn), 1e-5) << x;
+        EXPECT_NEAR(report.at("scalar").get<double>(), layers[4][i], 1e-6) << x;
+        ASSERT_TRUE(report.at("view").is_object()) << x << ": every point of a sphere is seen from outside";
+        if (layers[0][i] == 2.0f) ++indirect;
+        if (layers[0][i] == 2.0f && drawn.z < -0.3) farSide = drawn, farReport = report;
+    }
+    EXPECT_GT(indirect, 4);
+    ASSERT_TRUE(farSide.has_value()) << "the rings show the far half";
+
+    // The view it names shows the point in its direct part.
+    const std::string theta = std::to_string(farReport.at("view").at("theta").get<double>());
+    const std::string phi = std::to_string(farReport.at("view").at("phi").get<double>());
+    const CliResult turned = runCli("render scene:sphere --method front --theta " + theta + " --phi " + phi + common +
+                                    " -o " + quoted(output("t.png")) + " --exr " + quoted(output("t.exr")));
+    ASSERT_EQ(turned.status, 0) << turned.err;
+    const core::CameraFrame frame(core::readCameraJson(output("t.png.camera.json")), 64, 64);
+    const glm::dvec2 at = frame.project(*farSide);
+    const std::size_t i = std::size_t(at.y) * 64u + std::size_t(at.x);
+    ASSERT_TRUE(at.x >= 0.0 && at.y >= 0.0 && at.x < 64.0 && at.y < 64.0) << at.x << " " << at.y;
+    EXPECT_EQ(core::readExrChannel(output("t.exr"), "region")[i], 1.0f);
+    const glm::dvec3 shown(core::readExrChannel(output("t.exr"), "P.X")[i], core::readExrChannel(output("t.exr"), "P.Y")[i],
+                           core::readExrChannel(output("t.exr"), "P.Z")[i]);
+    EXPECT_LT(glm::length(shown - *farSide), 0.1) << "within a pixel of the probed point";
+    EXPECT_LT(std::abs(frame.camera().angles().x - farReport.at("view").at("theta").get<double>()), 1e-3);
+}
+
 // render --measure measures a picture as optimize measures its best view: rendering optimize's view
 // file gives the very figures optimize reported, and the even-spread bound of as many points.
 TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)
@@ -957,6 +1022,12 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
                    {"--exr excludes --legend-only"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--no-video --fps 3"),
                    {"--fps excludes --no-video"});
+    expectRejected(render("scene:sphere", "--probe 32,0"), {"--probe '32,0': outside the 32x32 picture"});
+    expectRejected(render("scene:sphere", "--probe 3"), {"--probe '3': expected X,Y"});
+    expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--probe 3,3"),
+                   {"--probe: a series has one picture per step"});
+    expectRejected(render("scene:sphere", "--probe 3,3 --legend-only " + quoted(output("bar.svg"))),
+                   {"--probe excludes --legend-only"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--fps 0.05"),
                    {"--fps: Value 0.05 not in range [0.1 - 240]"});
     expectRejected("evaluate scene:sphere --volume-res 48 --picture-res 32", {"--picture-res requires --pictures"});

@@ -591,5 +591,43 @@ TEST(Viewer, ViewFileShowsTheCpuPicture)
 #endif
 }
 
+// --probe tells of a pixel of the viewer's picture what `render --probe` tells of the same pixel
+// of the same view (an indirect one, so the curved ray is traced on the viewer's camera): headless
+// after the screenshot, and in the window as a click would.
+TEST(Viewer, ProbeTellsWhatRenderTellsOfThePixel)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string view = " --theta 60 --phi 40 --stable-shift 0.04 --no-legend --volume-res 64 --cache-dir '" +
+                             dir.path() + "'";
+    const CliResult cpu = runCli("render scene:vessel-tree --res 160x160" + view + " -o '" + dir.file("cpu.png") +
+                                 "' --exr '" + dir.file("cpu.exr") + "'");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const std::vector<float> region = core::readExrChannel(dir.file("cpu.exr"), "region");
+    int x = 0;
+    while (x < 160 && region[80u * 160u + std::size_t(x)] != 2.0f) ++x;
+    ASSERT_LT(x, 160) << "an indirect pixel in the middle row";
+    const std::string probe = " --probe " + std::to_string(x) + ",80";
+    const CliResult told = runCli("render scene:vessel-tree --res 160x160" + view + probe + " -o '" +
+                                  dir.file("cpu.png") + "'");
+    ASSERT_EQ(told.status, 0) << told.err;
+    ASSERT_EQ(told.out.rfind("pixel " + std::to_string(x) + ",80: indirect, wss ", 0), 0u) << told.out;
+
+    const RunResult headless = runViewer("scene:vessel-tree --width 160 --height 160 --frames 1" + view + probe +
+                                             " --screenshot '" + dir.file("gpu.png") + "'",
+                                         true, dir);
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    EXPECT_NE(headless.output.find("inversevis-view: " + told.out), std::string::npos) << headless.output;
+    const RunResult window = runViewer("scene:vessel-tree --width 160 --height 160 --frames 1" + view + probe +
+                                           " --ui-screenshot '" + dir.file("window.png") + "'",
+                                       true, dir);
+    ASSERT_EQ(window.status, 0) << window.output;
+    EXPECT_NE(window.output.find("inversevis-view: " + told.out), std::string::npos) << window.output;
+#endif
+}
+
 }  // namespace
 }  // namespace ivis::test

@@ -1,0 +1,71 @@
+#include <ivis/render/pixel_probe.h>
+
+#include <ivis/render/screen_map.h>
+#include <ivis/render/surface_point.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+namespace ivis::render {
+namespace {
+
+/// Eyes tried by facingView: about 3.2 degrees apart.
+constexpr int kEyeCount = 4000;
+
+}  // namespace
+
+PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const core::Camera& camera, int width,
+                      int height, double x, double y)
+{
+    const core::CameraFrame frame(camera, width, height);
+    const ScreenMap map(scene, frame, method);
+    DistanceField::Sampler sampler = scene.distance().sampler();
+    PixelProbe probe;
+    probe.mapping = map.map(x, y, sampler);
+    probe.scalar = scalarAt(scene.field(), probe.mapping.point);
+    if (probe.mapping.point.valid()) {
+        const glm::vec3 normal = triangleNormal(scene.mesh(), probe.mapping.point.triangle);
+        probe.facing = glm::dot(normal, probe.mapping.arrival) > 0.0f ? -normal : normal;
+    }
+    return probe;
+}
+
+bool seenDirectly(const core::TriangleBvh& bvh, const glm::dvec3& eye, const glm::vec3& point, int triangle)
+{
+    const glm::vec3 origin(eye);
+    const glm::vec3 line = point - origin;
+    const float length = glm::length(line);
+    if (!(length > 0.0f)) return false;
+    const core::RayHit hit = bvh.intersect(origin, line / length, 0.0f, 2.0f * length);
+    return hit.hit() && (hit.triangle == triangle || std::abs(hit.t - length) <= 1e-4f * length);
+}
+
+std::optional<glm::dvec2> facingView(const core::TriangleBvh& bvh, const glm::vec3& point, int triangle,
+                                     const glm::vec3& facing, double radius)
+{
+    const double minCos = std::cos(glm::radians(179.0));
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    std::optional<glm::dvec2> best;
+    double bestCos = 0.0;  // only eyes that the side faces
+    for (int i = 0; i < kEyeCount; ++i) {
+        // A Fibonacci sphere: even in area, the polar caps within a degree of the up axis left out
+        // (the camera's up vector would be parallel to the view there).
+        const double cosTheta = 1.0 - 2.0 * (i + 0.5) / kEyeCount;
+        if (std::abs(cosTheta) > -minCos) continue;
+        const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
+        const double azimuth = golden * i;
+        const glm::dvec3 direction(sinTheta * std::sin(azimuth), cosTheta, sinTheta * std::cos(azimuth));
+        const glm::dvec3 eye = radius * direction;
+        const glm::dvec3 toEye = eye - glm::dvec3(point);
+        const double cosine = glm::dot(glm::normalize(toEye), glm::dvec3(facing));
+        if (cosine <= bestCos || !seenDirectly(bvh, eye, point, triangle)) continue;
+        bestCos = cosine;
+        best = glm::dvec2(glm::degrees(std::acos(cosTheta)),
+                          glm::degrees(std::atan2(direction.x, direction.z)));
+    }
+    return best;
+}
+
+}  // namespace ivis::render
