@@ -8,8 +8,8 @@
 namespace ivis::app {
 namespace {
 
-/// A number as a reader wants it: six significant digits.
-std::string number(double value)
+/// @a value to six significant digits.
+std::string sixDigits(double value)
 {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
@@ -38,9 +38,16 @@ std::optional<std::size_t> fileCell(const core::SurfaceField& field, int triangl
 
 glm::ivec2 parseProbePixel(const std::string& text, int width, int height)
 {
+    // Digits only, at most five (no sign, space or overflow): a picture is at most 32768 wide.
+    auto coordinate = [](const std::string& digits, int& value) {
+        if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos)
+            return false;
+        value = std::stoi(digits);
+        return true;
+    };
+    const std::size_t comma = text.find(',');
     int x = 0, y = 0;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &extra) != 2)
+    if (comma == std::string::npos || !coordinate(text.substr(0, comma), x) || !coordinate(text.substr(comma + 1), y))
         throw InputError("--probe '" + text + "': expected X,Y, a pixel of the picture from its top left (e.g. 512,130)");
     if (x < 0 || y < 0 || x >= width || y >= height)
         throw InputError("--probe '" + text + "': outside the " + std::to_string(width) + "x" + std::to_string(height) +
@@ -82,13 +89,13 @@ std::string probeLine(const ProbeReport& report, const core::SurfaceField& field
     if (!point.valid()) return line;
     if (field.hasScalar())
         line += ", " + field.name + " " +
-                (std::isnan(report.probe.scalar) ? std::string("none (NaN or a cap)") : number(report.probe.scalar));
+                (std::isnan(report.probe.scalar) ? std::string("none (NaN or a cap)") : sixDigits(report.probe.scalar));
     const glm::dvec3 p = field.normalization.meshFromNormalized(glm::dvec3(point.position));
-    line += " at (" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+    line += " at (" + sixDigits(p.x) + ", " + sixDigits(p.y) + ", " + sixDigits(p.z) + ")";
     const std::optional<std::size_t> cell = fileCell(field, point.triangle);
     line += cell ? ", cell " + std::to_string(*cell) : ", on a cap over a hole";
-    line += report.view ? "; seen directly from --theta " + number(std::round(report.view->x * 10.0) / 10.0) +
-                              " --phi " + number(std::round(report.view->y * 10.0) / 10.0)
+    line += report.view ? "; seen directly from --theta " + sixDigits(std::round(report.view->x * 10.0) / 10.0) +
+                              " --phi " + sixDigits(std::round(report.view->y * 10.0) / 10.0)
                         : "; no view from outside sees it directly";
     return line;
 }

@@ -94,7 +94,8 @@ Command addRenderCommand(CLI::App& app)
         "What pixel X,Y of the picture (from its top left, the colour bar's margin not counted) shows, printed on "
         "stdout and into --stats-json's probes: background, direct or indirect, the surface point in the mesh's "
         "units, its file cell, the scalar there, and a --theta/--phi that shows the point directly (repeatable; one "
-        "picture only)");
+        "picture only)")
+        ->allow_extra_args(false);  // one X,Y per --probe: the mesh after it is not taken for a pixel
     command->add_option("--camera-out", options->cameraOut, "Camera JSON written (default: <output>.camera.json)");
     command->add_option("--view-out", options->viewOut,
                         "Write the picture's view file (camera, method and parameters, scalar, colour; `render --view` "

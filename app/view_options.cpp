@@ -207,9 +207,14 @@ void ViewOptions::checkColourFlags(bool hasScalar, const std::string& source) co
     if (hasScalar) return;
     for (const char* flag :
          {"--colormap", "--range", "--range-percentile", "--symmetric", "--log", "--invert", "--units", "--legend"})
-        if (given(flag))
-            throw InputError(source + ": " + flag + " colours a scalar, and the mesh shows none (give --scalar, "
+        if (given(flag)) {
+            // A flag and its opposite are one option: name the one given.
+            const std::string name = flag == std::string("--log") && !logScale       ? "--linear"
+                                     : flag == std::string("--invert") && !invert ? "--no-invert"
+                                                                                   : flag;
+            throw InputError(source + ": " + name + " colours a scalar, and the mesh shows none (give --scalar, "
                              "--scalar-file or --hotspots)");
+        }
 }
 
 render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field) const

@@ -1,10 +1,11 @@
 #include "probe_panel.h"
 
 #include <ivis/render/pixel_probe.h>
+#include <ivis/render/surface_point.h>
+
+#include <glm/geometric.hpp>
 
 #include <imgui.h>
-
-#include <cstdio>
 
 namespace ivis::app {
 
@@ -14,8 +15,13 @@ std::string ProbePanel::probe(const render::RenderScene& scene, const render::Me
     mReport = probeReport(scene, method, camera, width, height, pixel);
     mCamera = camera;
     mMethod = method;
-    mSize = {width, height};
+    mPictureSize = {width, height};
     return probeLine(*mReport, scene.field());
+}
+
+void ProbePanel::readScalar(const core::SurfaceField& field)
+{
+    if (mReport) mReport->probe.scalar = render::scalarAt(field, mReport->probe.mapping.point);
 }
 
 std::optional<glm::dvec2> ProbePanel::widgets(const core::SurfaceField& field)
@@ -37,14 +43,21 @@ void ProbePanel::drawMarker(ImDrawList& drawList, const render::RenderScene& sce
 {
     if (!mReport || !mReport->probe.mapping.point.valid() || picture.width <= 0 || picture.height <= 0) return;
     const render::SurfacePoint& point = mReport->probe.mapping.point;
+    const core::CameraFrame frame(camera, picture.width, picture.height);
+    const glm::dvec3 position(point.position);
+    // The line of sight: from the eye, or along the view for an orthographic camera.
+    const glm::dvec3 from = camera.orthographic ? position - 10.0 * frame.forward() : camera.eye;
+    const bool inFront = glm::dot(position - camera.eye, frame.forward()) > 0.0;
     glm::dvec2 at;  // in the picture's pixels, from its top left
-    if (render::seenDirectly(scene.bvh(), camera.eye, point.position, point.triangle)) {
-        at = core::CameraFrame(camera, picture.width, picture.height).project(glm::dvec3(point.position));
+    if ((inFront || camera.orthographic) && render::seenDirectly(scene.bvh(), from, point.position, point.triangle)) {
+        at = frame.project(position);
     } else {
         const bool sameView = method == mMethod && camera.eye == mCamera.eye && camera.target == mCamera.target &&
-                              camera.fovYDeg == mCamera.fovYDeg && camera.windowCentre == mCamera.windowCentre;
+                              camera.fovYDeg == mCamera.fovYDeg && camera.orthoHalfHeight == mCamera.orthoHalfHeight &&
+                              camera.windowCentre == mCamera.windowCentre &&
+                              glm::ivec2(picture.width, picture.height) == mPictureSize;
         if (!sameView) return;
-        at = (glm::dvec2(mReport->pixel) + 0.5) * glm::dvec2(picture.width, picture.height) / glm::dvec2(mSize);
+        at = glm::dvec2(mReport->pixel) + 0.5;
     }
     if (at.x < 0.0 || at.y < 0.0 || at.x >= picture.width || at.y >= picture.height) return;
     const float top = float(framebufferHeight - picture.y - picture.height);

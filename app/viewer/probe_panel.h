@@ -31,12 +31,14 @@ public:
                       int width, int height, const glm::ivec2& pixel);
     /// @brief Forgets the probe (the mesh shown changed).
     void clear() { mReport.reset(); }
+    /// @brief Reads the probed point's scalar again from @a field (a time step of the same mesh).
+    void readScalar(const core::SurfaceField& field);
     /// @brief The probe's lines and its "turn to it" button; the angles (theta, phi) to turn to
     ///        when the button was pressed.
     std::optional<glm::dvec2> widgets(const core::SurfaceField& field);
     /// @brief Marks the probed point on @a drawList: at its place in the picture of @a camera when
-    ///        its straight line of sight is clear, else at the probed pixel while the camera and
-    ///        method are those of the click; nothing otherwise.
+    ///        its straight line of sight is clear, else at the probed pixel while the camera, the
+    ///        method and the picture's size are those of the click; nothing otherwise.
     /// @param picture where the picture lies in the framebuffer (OpenGL coordinates)
     /// @param framebufferScale framebuffer pixels per window coordinate
     void drawMarker(ImDrawList& drawList, const render::RenderScene& scene, const render::MethodPtr& method,
@@ -47,7 +49,7 @@ private:
     std::optional<ProbeReport> mReport;
     core::Camera mCamera;           ///< the camera of the probed picture
     render::MethodPtr mMethod;      ///< the method of the probed picture
-    glm::ivec2 mSize{0};            ///< the probed picture's size
+    glm::ivec2 mPictureSize{0};     ///< the probed picture's size
 };
 
 }  // namespace ivis::app

@@ -147,18 +147,17 @@ void ViewerApp::showStep(std::size_t step)
     if (sameGeometry) {
         // The mesh stays (the loaded scene and the GPU volume refer to it); only what it shows changes.
         core::showStepData(*mField, std::move(field));
+        mProbe.readScalar(*mField);
     } else {
         mLoader.reset();  // cancels and joins: it reads the field being replaced
         mLoaded.reset();
         mRenderer->dropVolume();
         mField = std::make_unique<core::SurfaceField>(std::move(field));
         mNormals = render::vertexNormals(mField->mesh);
+        mProbe.clear();  // its triangle is of the other mesh
     }
     mRenderer->setMesh(*mField, mNormals);
-    if (!sameGeometry) {
-        mProbe.clear();
-        startLoading();
-    }
+    if (!sameGeometry) startLoading();
     std::printf("inversevis-view: step %zu/%zu (%s): %s\n", step + 1, mSeries->steps().size(), shown.label.c_str(),
                 sameGeometry ? "volume kept" : "other geometry, loading its volume");
     std::fflush(stdout);

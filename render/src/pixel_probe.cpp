@@ -45,15 +45,13 @@ bool seenDirectly(const core::TriangleBvh& bvh, const glm::dvec3& eye, const glm
 std::optional<glm::dvec2> facingView(const core::TriangleBvh& bvh, const glm::vec3& point, int triangle,
                                      const glm::vec3& facing, double radius)
 {
-    const double minCos = std::cos(glm::radians(179.0));
     const double golden = M_PI * (3.0 - std::sqrt(5.0));
     std::optional<glm::dvec2> best;
     double bestCos = 0.0;  // only eyes that the side faces
     for (int i = 0; i < kEyeCount; ++i) {
-        // A Fibonacci sphere: even in area, the polar caps within a degree of the up axis left out
-        // (the camera's up vector would be parallel to the view there).
+        // A Fibonacci sphere, even in area; its eyes nearest the poles lie 1.3 degrees off the up
+        // axis, to which the camera's up vector would be parallel.
         const double cosTheta = 1.0 - 2.0 * (i + 0.5) / kEyeCount;
-        if (std::abs(cosTheta) > -minCos) continue;
         const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
         const double azimuth = golden * i;
         const glm::dvec3 direction(sinTheta * std::sin(azimuth), cosTheta, sinTheta * std::cos(azimuth));

@@ -37,7 +37,7 @@ bool seenDirectly(const core::TriangleBvh& bvh, const glm::dvec3& eye, const glm
 
 /// @brief The polar and azimuth angles (degrees, Camera::fromAngles) of an eye on the sphere of
 ///        @a radius around the origin that sees @a point of @a triangle directly and most nearly
-///        head-on: of 4,000 eyes spread evenly over the sphere (theta 1 to 179 degrees), the one
+///        head-on: of 4,000 eyes spread evenly over the sphere (theta 1.3 to 178.7 degrees), the one
 ///        whose line of sight meets the surface first at the point, on its side @a facing, at the
 ///        smallest angle to @a facing; nullopt when no eye sees that side of the point.
 std::optional<glm::dvec2> facingView(const core::TriangleBvh& bvh, const glm::vec3& point, int triangle,
