@@ -47,7 +47,23 @@ bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float dista
             phiB = phiAt(origin + b * direction);
         }
     }
-    seed = origin + 0.5 * (lo + hi) * direction;
+    // The centre of the valley round that minimum, where phi stays within a voxel of it.
+    float tMin = 0.5 * (lo + hi);
+    float phiMin = phiAt(origin + tMin * direction);
+    float depth = 1.0 * uVoxel;  // render::kClosestApproachValley
+    float weights = 0.0, weighted = 0.0;
+    for (int side = -1; side <= 1; side += 2) {
+        float s = side > 0 ? tolerance : 0.0;
+        for (int i = 0; i < uMaxHullSteps; ++i, s += tolerance) {
+            float t = tMin + float(side) * s;
+            if (t < tEnter || t > tExit) break;
+            float below = depth - (phiAt(origin + t * direction) - phiMin);
+            if (!(below > 0.0)) break;
+            weights += below;
+            weighted += below * t;
+        }
+    }
+    seed = origin + (weights > 0.0 ? weighted / weights : tMin) * direction;
     distance = phiAt(seed);
     return distance < uHullOffset;
 }

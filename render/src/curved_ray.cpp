@@ -156,8 +156,25 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
             phiB = sampler.phi(origin + b * direction);
         }
     }
-    const float t = 0.5f * (lo + hi);
-    seed = origin + t * direction;
+    // The seed: the centre of the valley round that minimum, where phi stays within a voxel of it
+    // (each sample weighted by how far below that it lies). Where a view ray skims a surface (a
+    // concave crease, a flat face) phi barely rises along it, and its lowest point jumps from
+    // pixel to pixel between the voxel-sized bumps of the trilinear field: the rings there showed
+    // flames of the surface behind. The valley's centre moves continuously with the ray.
+    const float tMin = 0.5f * (lo + hi);
+    const float phiMin = sampler.phi(origin + tMin * direction);
+    const float depth = kClosestApproachValley * sampler.field().voxelSize();
+    float weights = 0.0f, weighted = 0.0f;
+    for (const float side : {-1.0f, 1.0f})
+        for (float s = side > 0.0f ? tolerance : 0.0f;; s += tolerance) {
+            const float t = tMin + side * s;
+            if (t < tEnter || t > tExit) break;
+            const float below = depth - (sampler.phi(origin + t * direction) - phiMin);
+            if (!(below > 0.0f)) break;
+            weights += below;
+            weighted += below * t;
+        }
+    seed = origin + (weights > 0.0f ? weighted / weights : tMin) * direction;
     distance = sampler.phi(seed);
     return distance < hullOffset;
 }

@@ -3,6 +3,7 @@
 #include "render/scene_fixture.h"
 
 #include <ivis/core/camera.h>
+#include <ivis/core/procedural_scenes.h>
 #include <ivis/core/ray_box.h>
 #include <ivis/render/curved_ray.h>
 
@@ -152,12 +153,48 @@ TEST(CurvedRay, ClosestApproachIsTheLeastDistanceAlongTheRay)
             if (least < 0.4f - quarterVoxel) {
                 ASSERT_TRUE(approached) << x << ", " << y;
                 ++found;
-                EXPECT_NEAR(distance, least, quarterVoxel) << x << ", " << y;
+                // The seed is the centre of the valley round the least, where phi stays within
+                // kClosestApproachValley voxels of it.
+                EXPECT_GE(distance, least - quarterVoxel) << x << ", " << y;
+                EXPECT_LE(distance, least + 4.0f * kClosestApproachValley * quarterVoxel) << x << ", " << y;
             } else if (least > 0.4f) {
                 EXPECT_FALSE(approached) << x << ", " << y;
             }
         }
     EXPECT_GT(found, 600);
+}
+
+// A view ray that skims a flat face at a constant height meets no single closest point: phi is the
+// same all along the face. The seed is the face's middle for every such ray, so that neighbouring
+// pixels' seeds stay together (the lowest sample alone fell anywhere along the face).
+TEST(CurvedRay, ClosestApproachTakesTheMiddleOfAFlatValley)
+{
+    // A box 2 long in z, 1 wide in x, 0.4 high in y, built as the volumes of the programs are.
+    core::SurfaceField box;
+    const glm::vec3 half(0.5f, 0.2f, 1.0f);
+    for (int i = 0; i < 8; ++i)
+        box.mesh.positions.push_back({(i & 1 ? 1 : -1) * half.x, (i & 2 ? 1 : -1) * half.y, (i & 4 ? 1 : -1) * half.z});
+    // Two outward-wound triangles per face (corner index bits: x 1, y 2, z 4).
+    const std::uint32_t faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    for (const auto& f : faces) {
+        box.mesh.triangles.push_back({f[0], f[1], f[2]});
+        box.mesh.triangles.push_back({f[0], f[2], f[3]});
+    }
+    box.mesh.dataTriangleCount = box.mesh.triangles.size();
+    const test::SceneFixture fixture(std::move(box), 100);
+    auto sampler = fixture.scene->distance().sampler();
+    const float voxel = fixture.scene->distance().voxelSize();
+    const core::Bounds3 hull = hullBounds(fixture.field.mesh, 0.4f, voxel);
+    for (float y = -0.1f; y <= 0.1f; y += 0.01f)
+        for (const float height : {0.05f, 0.1371f, 0.2f}) {
+            // Along -z, at a constant height above the +x face.
+            const glm::vec3 origin(half.x + height, y, 3.0f), direction(0.0f, 0.0f, -1.0f);
+            glm::vec3 seed;
+            float distance;
+            ASSERT_TRUE(findClosestApproach(sampler, origin, direction, 0.4f, hull, seed, distance)) << y;
+            EXPECT_NEAR(distance, height, 0.25f * voxel) << y << " " << height;
+            EXPECT_NEAR(seed.z, 0.0f, voxel) << y << " " << height;
+        }
 }
 
 TEST(CurvedRay, SmallAlphaFallsRadiallyFromTheSeed)

@@ -46,9 +46,16 @@ bool findHullExit(DistanceField::Sampler& sampler, const glm::vec3& origin, cons
 void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, const glm::vec3* directions,
                    std::size_t count, float hullOffset, const core::Bounds3& hullBox, glm::vec3* seeds, bool* found);
 
+/// @brief How far above its lowest value (in fine voxels) phi may rise along a view ray within the
+///        valley whose centre findClosestApproach takes.
+constexpr float kClosestApproachValley = 1.0f;
+
 /// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
 ///        comes within @a hullOffset of it: phi sampled along the ray inside @a hullBox, skipping
-///        by the 1-Lipschitz bound, then refined by golden-section search.
+///        by the 1-Lipschitz bound, refined by golden-section search, and centred in the valley of
+///        the ray round that minimum where phi stays within kClosestApproachValley voxels of it
+///        (the weighted mean of its samples a quarter voxel apart, each weighted by how far below
+///        that it lies), so that it moves continuously with the ray where phi barely rises.
 /// @return false when the ray never comes within hullOffset of the surface
 bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
                          float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance);
