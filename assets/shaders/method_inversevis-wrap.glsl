@@ -6,7 +6,8 @@ uniform float uRingScale;
 uniform float uStableShift;
 layout(std430, binding = 4) readonly buffer LocalRadii { float localRadius[]; };  // render::vertexLocalRadii
 
-// render::findClosestApproach: the point of the view ray closest to the surface, within the hull.
+// render::findClosestApproach: the point of the view ray closest to the surface, within the hull,
+// centred in the ray's valley where phi stays within a voxel of its least.
 bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float distance)
 {
     float tEnter, tExit;

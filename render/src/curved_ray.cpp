@@ -145,7 +145,7 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     const float ratio = 0.6180340f;
     float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     float phiA = sampler.phi(origin + a * direction), phiB = sampler.phi(origin + b * direction);
-    while (hi - lo > 1e-5f) {
+    for (int k = 0; k < 64 && hi - lo > 1e-5f; ++k) {  // far from the origin a float step exceeds 1e-5
         if (phiA < phiB) {
             hi = b, b = a, phiB = phiA;
             a = hi - ratio * (hi - lo);

@@ -48,6 +48,8 @@ void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, co
 
 /// @brief How far above its lowest value (in fine voxels) phi may rise along a view ray within the
 ///        valley whose centre findClosestApproach takes.
+/// @note The viewer's shader (assets/shaders/method_inversevis-wrap.glsl) writes it as a literal:
+///       change both together.
 constexpr float kClosestApproachValley = 1.0f;
 
 /// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
@@ -56,7 +58,8 @@ constexpr float kClosestApproachValley = 1.0f;
 ///        the ray round that minimum where phi stays within kClosestApproachValley voxels of it
 ///        (the weighted mean of its samples a quarter voxel apart, each weighted by how far below
 ///        that it lies), so that it moves continuously with the ray where phi barely rises.
-/// @return false when the ray never comes within hullOffset of the surface
+/// @return false when the ray never comes within hullOffset of the surface, or when the valley's
+///         centre does not (its least within about a voxel of hullOffset)
 bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
                          float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance);
 

@@ -30,7 +30,7 @@ struct CurvedRayStart {
 /// @brief Where on its view ray a curved ray starts.
 enum class SeedRule {
     HullExit,        ///< the farthest crossing with the hull (the paper)
-    ClosestApproach  ///< the point of the view ray closest to the surface, within the hull
+    ClosestApproach  ///< the point of the view ray closest to the surface, within the hull (findClosestApproach)
 };
 
 /// @brief How a launch velocity moves with the optimised parameters: along one direction,
