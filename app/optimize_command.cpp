@@ -71,7 +71,9 @@ Command addOptimizeCommand(CLI::App& app)
                         "(default: <output>.view.json; `render --view` reproduces the picture, the viewer loads it)");
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
-        command->add_option("--fps", options->fps, "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
+        command
+            ->add_option("--fps", options->fps,
+                         "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
             ->check(finiteRange(0.1, 240.0))
             ->capture_default_str(),
         command->add_flag("--no-video", options->noVideo, "Series: no MP4 (by default one is made when ffmpeg is on PATH)")

@@ -48,10 +48,12 @@ glm::ivec2 parseProbePixel(const std::string& text, int width, int height)
     const std::size_t comma = text.find(',');
     int x = 0, y = 0;
     if (comma == std::string::npos || !coordinate(text.substr(0, comma), x) || !coordinate(text.substr(comma + 1), y))
-        throw InputError("--probe '" + text + "': expected X,Y, a pixel of the picture from its top left (e.g. 512,130)");
+        throw InputError("--probe '" + text +
+                         "': expected X,Y, a pixel of the picture from its top left (e.g. 512,130)");
     if (x < 0 || y < 0 || x >= width || y >= height)
-        throw InputError("--probe '" + text + "': outside the " + std::to_string(width) + "x" + std::to_string(height) +
-                         " picture (X 0 to " + std::to_string(width - 1) + ", Y 0 to " + std::to_string(height - 1) + ")");
+        throw InputError("--probe '" + text + "': outside the " + std::to_string(width) + "x" +
+                         std::to_string(height) + " picture (X 0 to " + std::to_string(width - 1) + ", Y 0 to " +
+                         std::to_string(height - 1) + ")");
     return {x, y};
 }
 
@@ -62,7 +64,8 @@ ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPt
     report.pixel = pixel;
     report.probe = render::probePixel(scene, method, camera, width, height, pixel.x + 0.5, pixel.y + 0.5);
     const render::SurfacePoint& point = report.probe.mapping.point;
-    if (point.valid()) report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);
+    if (point.valid())
+        report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);
     return report;
 }
 

@@ -118,7 +118,9 @@ Command addRenderCommand(CLI::App& app)
                             "Series: render only steps FIRST:LAST (from 0, inclusive), numbered as in the whole series: "
                             "one job of a render spread over a cluster (needs a fixed view: --view, --camera or --fov; "
                             "no video)"),
-        command->add_option("--fps", options->fps, "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
+        command
+            ->add_option("--fps", options->fps,
+                         "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")
             ->check(finiteRange(0.1, 240.0))
             ->capture_default_str()
             ->excludes("--frames"),  // a job's part makes no video

@@ -61,7 +61,8 @@ void ProbePanel::drawMarker(ImDrawList& drawList, const render::RenderScene& sce
     }
     if (at.x < 0.0 || at.y < 0.0 || at.x >= picture.width || at.y >= picture.height) return;
     const float top = float(framebufferHeight - picture.y - picture.height);
-    const ImVec2 centre((float(picture.x) + float(at.x)) / framebufferScale.x, (top + float(at.y)) / framebufferScale.y);
+    const ImVec2 centre((float(picture.x) + float(at.x)) / framebufferScale.x,
+                        (top + float(at.y)) / framebufferScale.y);
     drawList.AddCircle(centre, 9.0f, IM_COL32(255, 255, 255, 255), 24, 4.0f);
     drawList.AddCircle(centre, 9.0f, IM_COL32(220, 30, 30, 255), 24, 2.0f);
 }
