@@ -164,9 +164,9 @@ Command addRenderCommand(CLI::App& app)
                                  "view follows the job's first step)");
         }
         std::vector<glm::ivec2> probePixels;
+        const render::RenderOptions asked = options->view.renderOptions();  // the picture's size
         for (const std::string& text : options->probes)
-            probePixels.push_back(parseProbePixel(text, options->view.renderOptions().width,
-                                                  options->view.renderOptions().height));
+            probePixels.push_back(parseProbePixel(text, asked.width, asked.height));
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
         options->mesh.fitReachTo({options->view.renderOptions().method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
