@@ -35,6 +35,11 @@ namespace {
 
 double now() { return glfwGetTime(); }
 
+/// The panel's text width and its widgets' width, in font heights: narrow enough that the picture
+/// keeps most of the window.
+constexpr float kPanelWidthEm = 20.0f;
+constexpr float kPanelItemWidthEm = 11.0f;
+
 /// Milliseconds taken by @a work, waiting for the GPU to finish.
 template <typename Work>
 double timedMs(Work&& work)
@@ -508,8 +513,48 @@ void ViewerApp::drawPanel()
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("inversevis", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-    const float wrap = ImGui::GetFontSize() * 26.0f;
-    ImGui::PushTextWrapPos(wrap);
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * kPanelWidthEm);
+    ImGui::PushItemWidth(ImGui::GetFontSize() * kPanelItemWidthEm);
+    drawSourceLines();
+    bool changed = false;
+    if (ImGui::CollapsingHeader("method", ImGuiTreeNodeFlags_DefaultOpen))
+        changed |= methodWidgets(mMethod, mLoaded ? mLoaded->slices.reach : 0.6f);
+    if (ImGui::CollapsingHeader("colour", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const std::string colormap = mShading.colormap;
+        changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar());
+        changed |= ImGui::Checkbox("outline", &mOutline);
+        tooltip("dark outline around the directly visible object, so direct and indirect parts are told apart");
+        if (mField->hasScalar()) {
+            ImGui::SameLine();
+            ImGui::Checkbox("colour bar", &mShowLegend);
+        }
+        if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
+    }
+    if (ImGui::CollapsingHeader("optimise", ImGuiTreeNodeFlags_DefaultOpen)) drawOptimiserSection();
+    if (ImGui::CollapsingHeader("probe", ImGuiTreeNodeFlags_DefaultOpen))
+        if (const std::optional<glm::dvec2> view = mProbe.widgets(*mField)) turnTo(*view);
+    if (ImGui::CollapsingHeader("picture")) changed |= drawPictureSection();
+    ImGui::Separator();
+    if (ImGui::Button("screenshot (P)")) takeNumberedScreenshot();
+    ImGui::SameLine();
+    if (ImGui::Button("save view")) saveView();
+    tooltip("write the view file of this picture (camera, method and parameters, scalar, colour): "
+            "`inversevis render --view FILE` and `inversevis-view --view FILE` show it again");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    tooltip(mSeries ? "drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot; "
+                      "left/right: time step"
+                    : "drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot");
+    if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
+    ImGui::PopItemWidth();
+    ImGui::PopTextWrapPos();
+    mPanelSize = glm::ivec2(int(ImGui::GetWindowWidth()), int(ImGui::GetWindowHeight()));
+    ImGui::End();
+    if (changed) mDirty = true;
+}
+
+void ViewerApp::drawSourceLines()
+{
     ImGui::Text("%s: %zu triangles, scalar '%s'", core::sourceStem(mOptions.mesh.source).c_str(),
                 mField->mesh.triangles.size(), mField->hasScalar() ? mField->name.c_str() : "(none)");
     if (mSeries) {
@@ -531,28 +576,14 @@ void ViewerApp::drawPanel()
     if (mLoader) {
         const int percent = mLoader->progress().percent();
         const std::string label = mLoader->progress().stage() + (percent >= 0 ? " " + std::to_string(percent) + "%" : "");
-        ImGui::ProgressBar(percent >= 0 ? percent / 100.0f : 0.0f, ImVec2(wrap, 0), label.c_str());
+        ImGui::ProgressBar(percent >= 0 ? percent / 100.0f : 0.0f, ImVec2(ImGui::GetFontSize() * kPanelWidthEm, 0),
+                           label.c_str());
         ImGui::TextUnformatted("loading the volume in the background; the direct part shows meanwhile");
-    } else if (mLoaded) {
-        ImGui::TextUnformatted(mVolumeText.c_str());
     }
-    ImGui::Separator();
+}
 
-    const float reach = mLoaded ? mLoaded->slices.reach : 0.6f;
-    bool changed = methodWidgets(mMethod, reach);
-    ImGui::Separator();
-    const std::string colormap = mShading.colormap;
-    changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar(), mRenderScale,
-                           mInteraction.reduction);
-    changed |= ImGui::Checkbox("outline", &mOutline);
-    tooltip("dark outline around the directly visible object, so direct and indirect parts are told apart");
-    if (mField->hasScalar()) {
-        ImGui::SameLine();
-        ImGui::Checkbox("colour bar", &mShowLegend);
-    }
-    if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
-    ImGui::Separator();
-
+void ViewerApp::drawOptimiserSection()
+{
     const bool busy = mJob.valid() || !mLoaded;
     optimiserWidgets(mOptimiser, mField->hasScalar());
     const bool hasParameters = !render::optimisedParameters(*mMethod).empty();
@@ -576,48 +607,38 @@ void ViewerApp::drawPanel()
     tooltip("CPU, in the background: optimize::loosestReadable, the loosest rule for drawing rays (inversevis-wrap: "
             "stable_shift, from an eighth of its default to 8 times it) whose 1000 x 1000 picture from this view keeps the "
             "mapping coherence --min-coherence (0.99), as render chooses it; done at start when the rule is not given");
-    if (mJob.valid()) {
-        ImGui::SameLine();
-        ImGui::Text("running %.0f s", now() - mJobStart);
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("screenshot (P)")) takeNumberedScreenshot();
-    ImGui::SameLine();
-    if (ImGui::Button("save view")) saveView();
-    tooltip("write the view file of this picture (camera, method and parameters, scalar, colour): "
-            "`inversevis render --view FILE` and `inversevis-view --view FILE` show it again");
-    if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
-    ImGui::Separator();
-    if (const std::optional<glm::dvec2> view = mProbe.widgets(*mField)) turnTo(*view);
-    ImGui::Separator();
-    ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
-                mRenderer->width(), mRenderer->height());
+    if (mJob.valid()) ImGui::Text("running %.0f s", now() - mJobStart);
+}
+
+bool ViewerApp::drawPictureSection()
+{
+    bool changed = false;
     bool framed = mOrbit.framed;
     if (ImGui::Checkbox("frame the picture (F)", &framed)) {
         mAnimation.stop();
         if (framed) mOrbit.frameAgain();
         else mOrbit.framed = false;
-        mDirty = true;
+        changed = true;
     }
     tooltip("render::frameView each frame: the field of view fitted to the object and the method's whole indirect "
             "region (hull, rings or mirror footprint) with a margin, the eye back on the radius-2.5 sphere; a zoom "
             "or pan ends it");
     ImGui::Text("camera theta %.1f phi %.1f distance %.2f, field of view %.1f", mOrbit.thetaDeg, mOrbit.phiDeg,
                 mOrbit.distance, mOrbit.fovYDeg);
+    changed |= traceScaleWidgets(mRenderScale, mInteraction.reduction);
+    ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
+                mRenderer->width(), mRenderer->height());
+    if (mLoaded) ImGui::TextUnformatted(mVolumeText.c_str());
     ImGui::TextDisabled("%s", mGlRenderer.c_str());
-    ImGui::TextDisabled("drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot%s",
-                        mSeries ? "; left/right: time step" : "");
-    ImGui::PopTextWrapPos();
-    ImGui::End();
-    if (changed) mDirty = true;
+    return changed;
 }
 
 void ViewerApp::writeWindow(const std::string& path)
 {
     const core::Image image = readWindow(mWindow);
     core::writePng(image, path, false);
-    std::printf("inversevis-view: wrote %s (window %dx%d, %s)\n", path.c_str(), image.width(), image.height(),
-                mStatus.c_str());
+    std::printf("inversevis-view: wrote %s (window %dx%d, panel %dx%d, %s)\n", path.c_str(), image.width(),
+                image.height(), mPanelSize.x, mPanelSize.y, mStatus.c_str());
 }
 
 int ViewerApp::runInteractive()

@@ -78,7 +78,15 @@ private:
     int runHeadlessScreenshot();
     int runBenchmark();
     int runInteractive();
+    /// The panel: the source's lines, then collapsible sections (method, colour, optimise and probe
+    /// open; picture closed), the screenshot and view buttons and the status line.
     void drawPanel();
+    /// The mesh, the time slider of a series and the loading bar, above the sections.
+    void drawSourceLines();
+    /// The optimiser's settings and buttons.
+    void drawOptimiserSection();
+    /// Framing, camera, trace scales, frame time, volume and OpenGL renderer; true when the picture changed.
+    bool drawPictureSection();
     void handleInput();
     /// Probes @a pixel of the picture last drawn (from its top left) into the panel and on stdout.
     void probeAt(const glm::ivec2& pixel);
@@ -103,6 +111,7 @@ private:
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
     core::LegendSide mLegendSide = core::LegendSide::Right;
+    glm::ivec2 mPanelSize{0};  ///< the panel's size when last drawn, in window coordinates
     bool mShowLegend = true;   ///< the colour bar in its margin (--no-legend; the panel's checkbox)
     bool mOutline = true;      ///< the direct part's outline (--no-outline; the panel's checkbox)
     std::unique_ptr<ColorBarOverlay> mColorBar;  ///< created with the window

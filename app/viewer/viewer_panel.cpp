@@ -80,15 +80,22 @@ bool methodWidgets(render::MethodPtr& method, float reach)
     }
     tooltip(method->info().help.c_str());
     render::ParameterValues values = method->values();
-    bool edited = false;
-    for (const render::ParameterSpec& spec : method->info().parameters)
-        edited |= parameterWidget(spec, values[spec.key], reach);
+    bool edited = false, tracing = false;
+    for (const render::ParameterSpec& spec : method->info().parameters) {
+        if (spec.tracing) tracing = true;
+        else edited |= parameterWidget(spec, values[spec.key], reach);
+    }
+    if (tracing && ImGui::TreeNode("tracing")) {
+        for (const render::ParameterSpec& spec : method->info().parameters)
+            if (spec.tracing) edited |= parameterWidget(spec, values[spec.key], reach);
+        ImGui::TreePop();
+    }
     if (edited) method = render::makeMethod(method->name(), values);
     return changed || edited;
 }
 
 bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
-                 bool hasScalar, float& renderScale, float& interactionScale)
+                 bool hasScalar)
 {
     bool changed = false;
     const std::vector<std::string> maps = core::colormapNames();
@@ -128,7 +135,13 @@ bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core
         changed |= ImGui::Checkbox("invert", &scale.invert);
     }
     changed |= ImGui::Checkbox("shadows", &shading.shadows);
-    changed |= ImGui::SliderFloat("render scale", &renderScale, 0.25f, 1.0f, "%.2f");
+    tooltip("soft shadows of the key light, traced through the distance field (render --no-shadows turns them off)");
+    return changed;
+}
+
+bool traceScaleWidgets(float& renderScale, float& interactionScale)
+{
+    const bool changed = ImGui::SliderFloat("render scale", &renderScale, 0.25f, 1.0f, "%.2f");
     tooltip("fraction of the window's pixels traced (software OpenGL starts at 0.5)");
     ImGui::SliderFloat("interaction scale", &interactionScale, 0.25f, 1.0f, "%.2f");
     tooltip("fraction of the render scale traced while you orbit, pan or zoom; the full picture follows when the "

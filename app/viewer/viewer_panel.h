@@ -18,16 +18,19 @@ namespace ivis::app {
 void tooltip(const char* text);
 
 /// @brief The method combo and a widget per parameter of the chosen method, within the bounds its
-///        description gives; true when anything changed.
+///        description gives (its tracing accuracy folded under "tracing"); true when anything changed.
 /// @param reach the volume's reach: the curved rays' hull offset stays below it
 bool methodWidgets(render::MethodPtr& method, float reach);
 
 /// @brief Colour map, scalar range, log and invert (when @a hasScalar; "data" resets the scale to
-///        @a dataScale), shadows, render scale and interaction scale; true when anything but the
-///        interaction scale (which changes no picture at rest) changed.
+///        @a dataScale) and shadows; true when anything changed.
 /// @param colormapIndex index of shading.colormap in core::colormapNames(), kept in step with it
 bool lookWidgets(render::ShadingOptions& shading, int& colormapIndex, const core::ColorScale& dataScale,
-                 bool hasScalar, float& renderScale, float& interactionScale);
+                 bool hasScalar);
+
+/// @brief Render scale and interaction scale; true when the render scale changed (the interaction
+///        scale changes no picture at rest).
+bool traceScaleWidgets(float& renderScale, float& interactionScale);
 
 /// @brief Energy (scalar only when @a hasScalar), optimisation rays and annealing steps.
 void optimiserWidgets(OptimiserSettings& settings, bool hasScalar);

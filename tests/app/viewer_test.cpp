@@ -535,6 +535,30 @@ TEST(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
 #endif
 }
 
+// The panel leaves the picture most of the window: its sections fold what is seldom changed (the
+// tracing accuracy, the picture's settings). It used to cover 46% of a 1000 x 800 window (485 x 760).
+TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 1000 --height 800 --frames 2 --cache-dir '" +
+                                        dir.path() + "' --ui-screenshot '" + dir.file("window.png") + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const std::size_t at = run.output.find(", panel ");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    int width = 0, height = 0;
+    ASSERT_EQ(std::sscanf(run.output.c_str() + at, ", panel %dx%d", &width, &height), 2) << run.output;
+    std::cout << "[ viewer   ] panel " << width << " x " << height << " of a 1000 x 800 window\n";
+    EXPECT_GT(width * height, 0);
+    EXPECT_LE(width, 320) << "a third of the window's width at most";
+    EXPECT_LT(double(width) * height, 0.25 * 1000.0 * 800.0) << "a quarter of the window at most";
+#endif
+}
+
 // "optimise view" leaves the picture drawn with every parameter of the best view: the optimised
 // speed and the rule its readability step chose (the rule used to be dropped, and the speed with it).
 TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)

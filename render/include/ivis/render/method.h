@@ -36,6 +36,7 @@ struct ParameterSpec {
     bool optimised = false;       ///< moved by the parameter ascent
     bool integer = false;         ///< takes whole numbers only
     bool belowReach = false;      ///< a distance that must stay below the volume's reach (e.g. the hull offset)
+    bool tracing = false;         ///< the tracer's accuracy (step, step cap, landing), not the picture's design
 
     /// @brief The command-line option: "--" and the key with '_' written '-'.
     std::string option() const;
