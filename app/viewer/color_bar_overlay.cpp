@@ -12,13 +12,14 @@ namespace ivis::app {
 ColorBarOverlay::ColorBarOverlay() : mTexture(newName(glGenTextures)) {}
 
 PictureViewport ColorBarOverlay::place(const core::ColorBarContent& content, core::LegendSide side, bool shown,
-                                       int fbWidth, int fbHeight)
+                                       int left, int fbWidth, int fbHeight)
 {
     mShown = shown;
-    if (!shown) return {0, 0, fbWidth, fbHeight};
+    const int width = fbWidth - left;  // the part the picture and the bar share
+    if (!shown) return {left, 0, width, fbHeight};
     const bool bottom = side == core::LegendSide::Bottom;
-    const int margin = core::colorBarMargin(content, fbWidth, fbHeight, side);
-    const int pictureWidth = bottom ? fbWidth : std::max(16, fbWidth - margin);
+    const int margin = core::colorBarMargin(content, width, fbHeight, side);
+    const int pictureWidth = bottom ? width : std::max(16, width - margin);
     const int pictureHeight = bottom ? std::max(16, fbHeight - margin) : fbHeight;
 
     std::ostringstream key;
@@ -44,11 +45,11 @@ PictureViewport ColorBarOverlay::place(const core::ColorBarContent& content, cor
         mWidth = bar.width();
         mHeight = bar.height();
     }
-    mX = side == core::LegendSide::Right ? fbWidth - mWidth : 0;
+    mX = left + (side == core::LegendSide::Right ? width - mWidth : 0);
     mY = bottom ? fbHeight - mHeight : (fbHeight - mHeight) / 2;
-    if (side == core::LegendSide::Left) return {mWidth, 0, fbWidth - mWidth, fbHeight};
-    if (bottom) return {0, mHeight, fbWidth, fbHeight - mHeight};
-    return {0, 0, fbWidth - mWidth, fbHeight};
+    if (side == core::LegendSide::Left) return {left + mWidth, 0, width - mWidth, fbHeight};
+    if (bottom) return {left, mHeight, width, fbHeight - mHeight};
+    return {left, 0, width - mWidth, fbHeight};
 }
 
 void ColorBarOverlay::draw(ImDrawList& drawList, const ImVec2& framebufferScale) const

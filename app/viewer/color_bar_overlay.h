@@ -27,11 +27,11 @@ struct PictureViewport {
 class ColorBarOverlay {
 public:
     ColorBarOverlay();
-    /// @brief Lays the bar of @a content out on @a side of a @a fbWidth x @a fbHeight window
-    ///        (re-drawing its texture only when something changed) and returns the picture's part;
-    ///        the whole window when @a shown is false.
-    PictureViewport place(const core::ColorBarContent& content, core::LegendSide side, bool shown, int fbWidth,
-                          int fbHeight);
+    /// @brief Lays the bar of @a content out on @a side of the part of a @a fbWidth x @a fbHeight
+    ///        window right of @a left (the panel's strip) (re-drawing its texture only when
+    ///        something changed) and returns the picture's part; that whole part when @a shown is false.
+    PictureViewport place(const core::ColorBarContent& content, core::LegendSide side, bool shown, int left,
+                          int fbWidth, int fbHeight);
     /// @brief Draws the bar placed last into @a drawList (ImGui coordinates = framebuffer pixels /
     ///        @a framebufferScale); nothing when hidden.
     void draw(ImDrawList& drawList, const ImVec2& framebufferScale) const;

@@ -39,6 +39,11 @@ double now() { return glfwGetTime(); }
 /// keeps most of the window.
 constexpr float kPanelWidthEm = 20.0f;
 constexpr float kPanelItemWidthEm = 11.0f;
+/// The panel's distance from the window's top left corner where it opens.
+constexpr float kPanelMargin = 8.0f;
+/// The picture moves right of the open panel (at the window's left edge) when that leaves it at
+/// least this share of the window's width; a narrower window keeps the panel over the picture.
+constexpr double kDockedPictureShare = 0.5;
 
 /// Milliseconds taken by @a work, waiting for the GPU to finish.
 template <typename Work>
@@ -510,7 +515,7 @@ void ViewerApp::turnTo(const glm::dvec2& view)
 
 void ViewerApp::drawPanel()
 {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(kPanelMargin, kPanelMargin), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("inversevis", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * kPanelWidthEm);
@@ -549,6 +554,8 @@ void ViewerApp::drawPanel()
     ImGui::PopItemWidth();
     ImGui::PopTextWrapPos();
     mPanelSize = glm::ivec2(int(ImGui::GetWindowWidth()), int(ImGui::GetWindowHeight()));
+    const bool atLeftEdge = ImGui::GetWindowPos().x <= 2.0f * kPanelMargin;
+    mPanelDock = atLeftEdge && !ImGui::IsWindowCollapsed() ? ImGui::GetWindowPos().x + ImGui::GetWindowWidth() : 0.0f;
     ImGui::End();
     if (changed) mDirty = true;
 }
@@ -637,8 +644,9 @@ void ViewerApp::writeWindow(const std::string& path)
 {
     const core::Image image = readWindow(mWindow);
     core::writePng(image, path, false);
-    std::printf("inversevis-view: wrote %s (window %dx%d, panel %dx%d, %s)\n", path.c_str(), image.width(),
-                image.height(), mPanelSize.x, mPanelSize.y, mStatus.c_str());
+    std::printf("inversevis-view: wrote %s (window %dx%d, panel %dx%d, picture %dx%d from x %d, %s)\n", path.c_str(),
+                image.width(), image.height(), mPanelSize.x, mPanelSize.y, mPicture.width, mPicture.height, mPicture.x,
+                mStatus.c_str());
 }
 
 int ViewerApp::runInteractive()
@@ -673,7 +681,10 @@ int ViewerApp::runInteractive()
         glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
         PictureViewport picture{0, 0, fbWidth, fbHeight};
         if (fbWidth > 0 && fbHeight > 0) {
-            picture = mColorBar->place(legendContent(), mLegendSide, mShowLegend && mField->hasScalar(), fbWidth, fbHeight);
+            int strip = int(std::ceil(mPanelDock * ImGui::GetIO().DisplayFramebufferScale.x));
+            if (fbWidth - strip < kDockedPictureShare * fbWidth) strip = 0;
+            picture = mColorBar->place(legendContent(), mLegendSide, mShowLegend && mField->hasScalar(), strip, fbWidth,
+                                       fbHeight);
             mColorBar->draw(*ImGui::GetBackgroundDrawList(), ImGui::GetIO().DisplayFramebufferScale);
             if (mLoaded) {
                 const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;

@@ -536,7 +536,8 @@ TEST(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
 }
 
 // The panel leaves the picture most of the window: its sections fold what is seldom changed (the
-// tracing accuracy, the picture's settings). It used to cover 46% of a 1000 x 800 window (485 x 760).
+// tracing accuracy, the picture's settings), and the picture lies right of it. The panel used to
+// cover 46% of a 1000 x 800 window (485 x 760), over the picture's left part.
 TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
 {
 #ifndef IVIS_VIEW_PATH
@@ -550,12 +551,19 @@ TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
     ASSERT_EQ(run.status, 0) << run.output;
     const std::size_t at = run.output.find(", panel ");
     ASSERT_NE(at, std::string::npos) << run.output;
-    int width = 0, height = 0;
-    ASSERT_EQ(std::sscanf(run.output.c_str() + at, ", panel %dx%d", &width, &height), 2) << run.output;
-    std::cout << "[ viewer   ] panel " << width << " x " << height << " of a 1000 x 800 window\n";
+    int width = 0, height = 0, pictureWidth = 0, pictureHeight = 0, pictureX = -1;
+    ASSERT_EQ(std::sscanf(run.output.c_str() + at, ", panel %dx%d, picture %dx%d from x %d", &width, &height,
+                          &pictureWidth, &pictureHeight, &pictureX),
+              5)
+        << run.output;
+    std::cout << "[ viewer   ] panel " << width << " x " << height << ", picture " << pictureWidth << " x "
+              << pictureHeight << " from x " << pictureX << " of a 1000 x 800 window\n";
     EXPECT_GT(width * height, 0);
     EXPECT_LE(width, 320) << "a third of the window's width at most";
     EXPECT_LT(double(width) * height, 0.25 * 1000.0 * 800.0) << "a quarter of the window at most";
+    EXPECT_GE(pictureX, width) << "the picture lies right of the panel, not under it";
+    EXPECT_EQ(pictureHeight, 800);
+    EXPECT_GE(pictureWidth, 500) << "what the panel and the colour bar leave";
 #endif
 }
 
