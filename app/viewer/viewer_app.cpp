@@ -522,9 +522,9 @@ void ViewerApp::drawPanel()
     ImGui::PushItemWidth(ImGui::GetFontSize() * kPanelItemWidthEm);
     drawSourceLines();
     bool changed = false;
-    if (ImGui::CollapsingHeader("method", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("method##section", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= methodWidgets(mMethod, mLoaded ? mLoaded->slices.reach : 0.6f);
-    if (ImGui::CollapsingHeader("colour", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader("colour##section", ImGuiTreeNodeFlags_DefaultOpen)) {
         const std::string colormap = mShading.colormap;
         changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar());
         changed |= ImGui::Checkbox("outline", &mOutline);
@@ -535,10 +535,10 @@ void ViewerApp::drawPanel()
         }
         if (mShading.colormap != colormap) mRenderer->setColormap(mShading.colormap);
     }
-    if (ImGui::CollapsingHeader("optimise", ImGuiTreeNodeFlags_DefaultOpen)) drawOptimiserSection();
-    if (ImGui::CollapsingHeader("probe", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("optimise##section", ImGuiTreeNodeFlags_DefaultOpen)) drawOptimiserSection();
+    if (ImGui::CollapsingHeader("probe##section", ImGuiTreeNodeFlags_DefaultOpen))
         if (const std::optional<glm::dvec2> view = mProbe.widgets(*mField)) turnTo(*view);
-    if (ImGui::CollapsingHeader("picture")) changed |= drawPictureSection();
+    if (ImGui::CollapsingHeader("picture##section")) changed |= drawPictureSection();
     ImGui::Separator();
     if (ImGui::Button("screenshot (P)")) takeNumberedScreenshot();
     ImGui::SameLine();
@@ -553,9 +553,11 @@ void ViewerApp::drawPanel()
     if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
     ImGui::PopItemWidth();
     ImGui::PopTextWrapPos();
-    mPanelSize = glm::ivec2(int(ImGui::GetWindowWidth()), int(ImGui::GetWindowHeight()));
-    const bool atLeftEdge = ImGui::GetWindowPos().x <= 2.0f * kPanelMargin;
-    mPanelDock = atLeftEdge && !ImGui::IsWindowCollapsed() ? ImGui::GetWindowPos().x + ImGui::GetWindowWidth() : 0.0f;
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    mPanelSize = glm::ivec2(int(ImGui::GetWindowWidth() * scale.x), int(ImGui::GetWindowHeight() * scale.y));
+    const ImVec2 corner = ImGui::GetWindowPos();
+    const bool atTopLeft = corner.x <= 2.0f * kPanelMargin && corner.y <= 2.0f * kPanelMargin;
+    mPanelDock = atTopLeft && !ImGui::IsWindowCollapsed() ? (corner.x + ImGui::GetWindowWidth()) * scale.x : 0.0f;
     ImGui::End();
     if (changed) mDirty = true;
 }
@@ -681,7 +683,7 @@ int ViewerApp::runInteractive()
         glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
         PictureViewport picture{0, 0, fbWidth, fbHeight};
         if (fbWidth > 0 && fbHeight > 0) {
-            int strip = int(std::ceil(mPanelDock * ImGui::GetIO().DisplayFramebufferScale.x));
+            int strip = int(std::ceil(mPanelDock));
             if (fbWidth - strip < kDockedPictureShare * fbWidth) strip = 0;
             picture = mColorBar->place(legendContent(), mLegendSide, mShowLegend && mField->hasScalar(), strip, fbWidth,
                                        fbHeight);
@@ -710,7 +712,7 @@ int ViewerApp::runInteractive()
                 mProbePending = false;
                 const glm::ivec2 pixel = parseProbePixel(mOptions.probe, mOptions.width, mOptions.height);
                 if (pixel.x < picture.width && pixel.y < picture.height) probeAt(pixel);
-                else mStatus = "--probe " + mOptions.probe + ": outside the picture beside the colour bar";
+                else mStatus = "--probe " + mOptions.probe + ": outside the picture beside the panel and the colour bar";
             }
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
             glViewport(0, 0, fbWidth, fbHeight);

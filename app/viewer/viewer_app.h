@@ -111,8 +111,8 @@ private:
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
     core::LegendSide mLegendSide = core::LegendSide::Right;
-    glm::ivec2 mPanelSize{0};  ///< the panel's size when last drawn, in window coordinates
-    float mPanelDock = 0.0f;   ///< the open panel's right edge at the window's left edge (window coordinates); 0 otherwise
+    glm::ivec2 mPanelSize{0};  ///< the panel's size when last drawn, framebuffer pixels
+    float mPanelDock = 0.0f;   ///< the open panel's right edge while at the window's top left (framebuffer pixels); 0 otherwise
     bool mShowLegend = true;   ///< the colour bar in its margin (--no-legend; the panel's checkbox)
     bool mOutline = true;      ///< the direct part's outline (--no-outline; the panel's checkbox)
     std::unique_ptr<ColorBarOverlay> mColorBar;  ///< created with the window
