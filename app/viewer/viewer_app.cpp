@@ -83,6 +83,14 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     mProbePending = !mOptions.probe.empty();
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
+    if (!mSeries) {  // a series keeps the array it was opened with: its colour range spans every step
+        mArrayChoices = core::arrayChoices(*mField);
+        for (std::size_t i = 0; i < mArrayChoices.size() && mArrayChoice < 0; ++i)
+            if (mArrayChoices[i].name == mField->name && mArrayChoices[i].association == mField->valuesOn)
+                mArrayChoice = int(i);
+        if (mArrayChoice < 0 && mField->hasScalar())
+            mOpenedScalar = OpenedScalar{mField->values, mField->valuesOn, mField->name};
+    }
 }
 
 ViewerApp::~ViewerApp()
@@ -286,7 +294,7 @@ void ViewerApp::saveView()
     look.legendSide = mLegendSide;
     look.outline = mOutline;
     try {
-        writeViewFile(viewOfPicture(mOrbit.camera(), look, mOptions.mesh.load, mField->normalization), path);
+        writeViewFile(viewOfPicture(mOrbit.camera(), look, shownScalarLoad(), mField->normalization), path);
         mStatus = "wrote " + path;
     } catch (const std::exception& e) {
         mStatus = e.what();
@@ -525,6 +533,7 @@ void ViewerApp::drawPanel()
     if (ImGui::CollapsingHeader("method##section", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= methodWidgets(mMethod, mLoaded ? mLoaded->slices.reach : 0.6f);
     if (ImGui::CollapsingHeader("colour##section", ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed |= drawColourByCombo();
         const std::string colormap = mShading.colormap;
         changed |= lookWidgets(mShading, mColormapIndex, mDataScale, mField->hasScalar());
         changed |= ImGui::Checkbox("outline", &mOutline);
@@ -617,6 +626,72 @@ void ViewerApp::drawOptimiserSection()
             "stable_shift, from an eighth of its default to 8 times it) whose 1000 x 1000 picture from this view keeps the "
             "mapping coherence --min-coherence (0.99), as render chooses it; done at start when the rule is not given");
     if (mJob.valid()) ImGui::Text("running %.0f s", now() - mJobStart);
+}
+
+bool ViewerApp::drawColourByCombo()
+{
+    if (mArrayChoices.empty()) return false;
+    auto label = [&](int i) {
+        if (i < 0) return mOpenedScalar ? mOpenedScalar->name : std::string("(none)");
+        const core::ArrayChoice& c = mArrayChoices[std::size_t(i)];
+        return c.association == core::Association::Cell ? c.name + " (cell)" : c.name;
+    };
+    const int shown = mArrayChoice;
+    ImGui::BeginDisabled(mJob.valid());
+    if (ImGui::BeginCombo("colour by", label(mArrayChoice).c_str())) {
+        for (int i = mOpenedScalar ? -1 : 0; i < int(mArrayChoices.size()); ++i) {
+            ImGui::PushID(i);
+            if (ImGui::Selectable(label(i).c_str(), i == mArrayChoice) && i != mArrayChoice) colourBy(i);
+            ImGui::PopID();
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    tooltip("the scalar shown: each array of the file (a vector's magnitude or one component; a cell array flat per "
+            "triangle), as --scalar names it; the colour range follows the data (the range options' rules, not a "
+            "fixed --range). Disabled while an optimiser runs.");
+    return mArrayChoice != shown;
+}
+
+void ViewerApp::colourBy(int choice)
+{
+    try {
+        if (choice < 0) {
+            mField->values = mOpenedScalar->values;
+            mField->valuesOn = mOpenedScalar->on;
+            mField->name = mOpenedScalar->name;
+        } else {
+            core::showArray(*mField, mArrayChoices[std::size_t(choice)].spec, false);
+        }
+        mArrayChoice = choice;
+        core::ColorScaleRequest request = mOptions.view.colorScaleRequest();
+        request.range.reset();  // a range given was the opened scalar's
+        try {
+            mDataScale = request.resolve(mField->values);
+        } catch (const ValueError&) {  // a log scale over data without a positive value
+            request.log = false;
+            mDataScale = request.resolve(mField->values);
+        }
+    } catch (const std::exception& e) {
+        mStatus = e.what();
+        return;
+    }
+    mShading.scale = mDataScale;
+    mRenderer->setMesh(*mField, mNormals);
+    mProbe.readScalar(*mField);
+    std::printf("inversevis-view: colour by %s, range %g to %g%s\n", mField->name.c_str(), mDataScale.range.lo,
+                mDataScale.range.hi, mDataScale.log ? ", log" : "");
+    std::fflush(stdout);
+}
+
+core::SurfaceLoadOptions ViewerApp::shownScalarLoad() const
+{
+    core::SurfaceLoadOptions load = mOptions.mesh.load;
+    if (mArrayChoice >= 0) {
+        load.read = core::MeshReadOptions{mArrayChoices[std::size_t(mArrayChoice)].spec, "", false};
+        load.hotSpots = 0;
+    }
+    return load;
 }
 
 bool ViewerApp::drawPictureSection()

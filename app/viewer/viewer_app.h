@@ -15,6 +15,7 @@
 #include "../series_survey.h"
 
 #include <ivis/core/atomic_file.h>
+#include <ivis/core/show_array.h>
 #include <ivis/core/surface_field.h>
 #include <ivis/core/surface_series.h>
 #include <ivis/render/method.h>
@@ -23,7 +24,9 @@
 #include <atomic>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -85,6 +88,12 @@ private:
     void drawSourceLines();
     /// The optimiser's settings and buttons.
     void drawOptimiserSection();
+    /// "colour by": the scalar opened with and every array of the file (not of a series); true when it changed.
+    bool drawColourByCombo();
+    /// Shows choice @a choice of mArrayChoices (-1: mOpenedScalar) and rescales the colours to its data.
+    void colourBy(int choice);
+    /// The loading options that give the scalar shown (for a view file).
+    core::SurfaceLoadOptions shownScalarLoad() const;
     /// Framing, camera, trace scales, frame time, volume and OpenGL renderer; true when the picture changed.
     bool drawPictureSection();
     void handleInput();
@@ -111,6 +120,16 @@ private:
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;
     core::LegendSide mLegendSide = core::LegendSide::Right;
+    /// The scalar the window opened with, when no array choice gives it (hot spots, --scalar-file, a
+    /// cell array averaged): the first entry of "colour by".
+    struct OpenedScalar {
+        std::vector<float> values;
+        core::Association on = core::Association::Point;
+        std::string name;
+    };
+    std::optional<OpenedScalar> mOpenedScalar;
+    std::vector<core::ArrayChoice> mArrayChoices;  ///< what "colour by" offers (none for a series)
+    int mArrayChoice = -1;                         ///< the choice shown; -1: mOpenedScalar, or none
     glm::ivec2 mPanelSize{0};  ///< the panel's size when last drawn, framebuffer pixels
     float mPanelDock = 0.0f;   ///< the open panel's right edge while at the window's top left (framebuffer pixels); 0 otherwise
     bool mShowLegend = true;   ///< the colour bar in its margin (--no-legend; the panel's checkbox)

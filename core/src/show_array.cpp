@@ -121,6 +121,23 @@ std::string qualifiedArrayName(const DataArray& array)
     return std::string(associationName(array.association)) + ":" + array.name;
 }
 
+std::vector<ArrayChoice> arrayChoices(const SurfaceField& field)
+{
+    std::vector<ArrayChoice> choices;
+    for (const DataArray& array : field.arrays) {
+        const std::string spec = qualifiedArrayName(array);
+        if (array.components == 1) {
+            choices.push_back({spec, array.name, array.association});
+            continue;
+        }
+        choices.push_back({spec + ":magnitude", array.name + " magnitude", array.association});
+        for (int k = 0; k < array.components; ++k)
+            choices.push_back({spec + ":" + std::to_string(k), array.name + "[" + std::to_string(k) + "]",
+                               array.association});
+    }
+    return choices;
+}
+
 void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
 {
     // In order: the whole spec as a name; "point:" or "cell:" and what follows (a name, or a name

@@ -45,6 +45,39 @@ std::string errorOf(SurfaceField& f, const std::string& spec)
     return "<no error>";
 }
 
+// Each choice shows what it names, under the name it says, though "p" is both a point and a cell
+// array and "a:b" holds the separator: the values checked against the arrays directly.
+TEST(ShowArray, EachArrayChoiceShowsItsArrayOrComponent)
+{
+    const SurfaceField original = field();
+    const std::vector<ArrayChoice> choices = arrayChoices(original);
+    std::vector<std::string> names;
+    for (const ArrayChoice& c : choices) names.push_back(c.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"p", "v magnitude", "v[0]", "v[1]", "v[2]", "c", "p", "a:b"}));
+    const std::vector<int> arrayOf = {0, 1, 1, 1, 1, 2, 3, 4};
+    const std::vector<int> componentOf = {0, kMagnitude, 0, 1, 2, 0, 0, 0};
+    ASSERT_EQ(choices.size(), arrayOf.size());
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        SurfaceField f = field();
+        showArray(f, choices[i].spec, false);
+        const DataArray& array = original.arrays[std::size_t(arrayOf[i])];
+        EXPECT_EQ(f.name, choices[i].name) << choices[i].spec;
+        EXPECT_EQ(f.valuesOn, array.association) << choices[i].spec;
+        EXPECT_EQ(choices[i].association, array.association) << choices[i].spec;
+        if (array.association == Association::Point) {
+            ASSERT_EQ(f.values.size(), 6u);
+            for (std::size_t v = 0; v < 5; ++v)
+                EXPECT_FLOAT_EQ(f.values[v], float(array.at(v, componentOf[i]))) << choices[i].spec << " vertex " << v;
+        } else {
+            ASSERT_EQ(f.values.size(), 3u);
+            for (std::size_t t = 0; t < 3; ++t)
+                EXPECT_FLOAT_EQ(f.values[t], float(array.at(original.triangleCells[t], componentOf[i])))
+                    << choices[i].spec << " triangle " << t;
+        }
+    }
+    EXPECT_TRUE(arrayChoices(SurfaceField{}).empty()) << "a generated surface has no arrays to choose";
+}
+
 TEST(ShowArray, PointArrayPerVertexAndNanBeyondTheFile)
 {
     SurfaceField f = field();

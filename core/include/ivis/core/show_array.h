@@ -24,6 +24,17 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint);
 /// @brief The spec that names @a array and no other of its name: "point:NAME" or "cell:NAME".
 std::string qualifiedArrayName(const DataArray& array);
 
+/// @brief One thing a surface can be coloured by: an array, or one component of a vector array.
+struct ArrayChoice {
+    std::string spec;                        ///< what showArray takes: "point:NAME", "cell:NAME:magnitude", "point:NAME:1"
+    std::string name;                        ///< the name showArray then gives the field ("NAME", "NAME magnitude", "NAME[1]")
+    Association association = Association::Point;
+};
+
+/// @brief What @a field can be coloured by, as ParaView's "Color by" lists it: each of its arrays
+///        in the file's order, a vector array by its magnitude and then by each component.
+std::vector<ArrayChoice> arrayChoices(const SurfaceField& field);
+
 /// @brief The array shown when a file carries arrays and none is chosen: the active point scalars,
 ///        else the active cell scalars (DataArray::activeScalars: what ParaView colours by), else
 ///        the first point array, else the first cell array. With @a cellToPoint only the cell
