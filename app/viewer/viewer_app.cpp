@@ -83,13 +83,20 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     mProbePending = !mOptions.probe.empty();
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
+    mOpenedUnits = render.units;
     if (!mSeries) {  // a series keeps the array it was opened with: its colour range spans every step
         mArrayChoices = core::arrayChoices(*mField);
-        for (std::size_t i = 0; i < mArrayChoices.size() && mArrayChoice < 0; ++i)
+        // A file's array as it is, not hot spots, a scalar file or an array averaged onto the vertices.
+        const core::SurfaceLoadOptions& load = mOptions.mesh.load;
+        const bool fileArray = load.hotSpots == 0 && load.read.scalarFile.empty() && !load.read.cellToPoint;
+        for (std::size_t i = 0; fileArray && i < mArrayChoices.size() && mArrayChoice < 0; ++i)
             if (mArrayChoices[i].name == mField->name && mArrayChoices[i].association == mField->valuesOn)
                 mArrayChoice = int(i);
         if (mArrayChoice < 0 && mField->hasScalar())
             mOpenedScalar = OpenedScalar{mField->values, mField->valuesOn, mField->name};
+        mOpenedChoice = mArrayChoice;
+        mOpenedScale = mShading.scale;
+        mOpenedDataScale = mDataScale;
     }
 }
 
@@ -228,7 +235,7 @@ void ViewerApp::waitForScene()
 core::ColorBarContent ViewerApp::legendContent() const
 {
     const std::string title = mSeries ? seriesStepTitle(*mSeries, mSeries->steps()[mStep], mField->name) : mField->name;
-    return {mShading.colormap, mShading.scale, title, mOptions.view.units};
+    return {mShading.colormap, mShading.scale, title, shownUnits()};
 }
 
 GpuFrame ViewerApp::frame(int width, int height) const
@@ -293,6 +300,7 @@ void ViewerApp::saveView()
     look.legend = mShowLegend;
     look.legendSide = mLegendSide;
     look.outline = mOutline;
+    look.units = shownUnits();
     try {
         writeViewFile(viewOfPicture(mOrbit.camera(), look, shownScalarLoad(), mField->normalization), path);
         mStatus = "wrote " + path;
@@ -655,6 +663,7 @@ bool ViewerApp::drawColourByCombo()
 
 void ViewerApp::colourBy(int choice)
 {
+    if (mArrayChoice == mOpenedChoice) mOpenedScale = mShading.scale;  // as the panel left it
     try {
         if (choice < 0) {
             mField->values = mOpenedScalar->values;
@@ -664,19 +673,24 @@ void ViewerApp::colourBy(int choice)
             core::showArray(*mField, mArrayChoices[std::size_t(choice)].spec, false);
         }
         mArrayChoice = choice;
-        core::ColorScaleRequest request = mOptions.view.colorScaleRequest();
-        request.range.reset();  // a range given was the opened scalar's
-        try {
-            mDataScale = request.resolve(mField->values);
-        } catch (const ValueError&) {  // a log scale over data without a positive value
-            request.log = false;
-            mDataScale = request.resolve(mField->values);
+        if (choice == mOpenedChoice) {  // its own scale again (--range, a view file's, the panel's)
+            mDataScale = mOpenedDataScale;
+            mShading.scale = mOpenedScale;
+        } else {
+            core::ColorScaleRequest request = mOptions.view.colorScaleRequest();
+            request.range.reset();  // a range given was the opened scalar's
+            try {
+                mDataScale = request.resolve(mField->values);
+            } catch (const ValueError&) {  // a log scale over data without a positive value
+                request.log = false;
+                mDataScale = request.resolve(mField->values);
+            }
+            mShading.scale = mDataScale;
         }
     } catch (const std::exception& e) {
         mStatus = e.what();
         return;
     }
-    mShading.scale = mDataScale;
     mRenderer->setMesh(*mField, mNormals);
     mProbe.readScalar(*mField);
     std::printf("inversevis-view: colour by %s, range %g to %g%s\n", mField->name.c_str(), mDataScale.range.lo,
@@ -687,7 +701,7 @@ void ViewerApp::colourBy(int choice)
 core::SurfaceLoadOptions ViewerApp::shownScalarLoad() const
 {
     core::SurfaceLoadOptions load = mOptions.mesh.load;
-    if (mArrayChoice >= 0) {
+    if (mArrayChoice != mOpenedChoice) {
         load.read = core::MeshReadOptions{mArrayChoices[std::size_t(mArrayChoice)].spec, "", false};
         load.hotSpots = 0;
     }

@@ -94,6 +94,8 @@ private:
     void colourBy(int choice);
     /// The loading options that give the scalar shown (for a view file).
     core::SurfaceLoadOptions shownScalarLoad() const;
+    /// The units of the scalar shown: the opened scalar's, none for another.
+    std::string shownUnits() const { return mArrayChoice == mOpenedChoice ? mOpenedUnits : std::string(); }
     /// Framing, camera, trace scales, frame time, volume and OpenGL renderer; true when the picture changed.
     bool drawPictureSection();
     void handleInput();
@@ -130,6 +132,9 @@ private:
     std::optional<OpenedScalar> mOpenedScalar;
     std::vector<core::ArrayChoice> mArrayChoices;  ///< what "colour by" offers (none for a series)
     int mArrayChoice = -1;                         ///< the choice shown; -1: mOpenedScalar, or none
+    int mOpenedChoice = -1;                        ///< the choice the window opened with
+    core::ColorScale mOpenedScale, mOpenedDataScale;  ///< its scale and data scale (--range, a view file's)
+    std::string mOpenedUnits;                      ///< its units (--units, a view file's): the others have none
     glm::ivec2 mPanelSize{0};  ///< the panel's size when last drawn, framebuffer pixels
     float mPanelDock = 0.0f;   ///< the open panel's right edge while at the window's top left (framebuffer pixels); 0 otherwise
     bool mShowLegend = true;   ///< the colour bar in its margin (--no-legend; the panel's checkbox)

@@ -124,16 +124,24 @@ std::string qualifiedArrayName(const DataArray& array)
 std::vector<ArrayChoice> arrayChoices(const SurfaceField& field)
 {
     std::vector<ArrayChoice> choices;
+    // A part of a vector whose spec names another array ("v:0" beside a vector "v") would show that one.
+    auto named = [&](const std::string& name, Association association) {
+        return std::any_of(field.arrays.begin(), field.arrays.end(),
+                           [&](const DataArray& a) { return a.name == name && a.association == association; });
+    };
     for (const DataArray& array : field.arrays) {
+        if (isArrayPattern(array.name)) continue;  // its name would be read as a pattern of names
         const std::string spec = qualifiedArrayName(array);
         if (array.components == 1) {
             choices.push_back({spec, array.name, array.association});
             continue;
         }
-        choices.push_back({spec + ":magnitude", array.name + " magnitude", array.association});
+        if (!named(array.name + ":magnitude", array.association))
+            choices.push_back({spec + ":magnitude", array.name + " magnitude", array.association});
         for (int k = 0; k < array.components; ++k)
-            choices.push_back({spec + ":" + std::to_string(k), array.name + "[" + std::to_string(k) + "]",
-                               array.association});
+            if (!named(array.name + ":" + std::to_string(k), array.association))
+                choices.push_back({spec + ":" + std::to_string(k), array.name + "[" + std::to_string(k) + "]",
+                                   array.association});
     }
     return choices;
 }

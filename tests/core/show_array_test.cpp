@@ -78,6 +78,22 @@ TEST(ShowArray, EachArrayChoiceShowsItsArrayOrComponent)
     EXPECT_TRUE(arrayChoices(SurfaceField{}).empty()) << "a generated surface has no arrays to choose";
 }
 
+// A choice whose spec would show another array, or be read as a pattern of names, is not offered.
+TEST(ShowArray, ArrayChoicesLeaveOutSpecsThatNameSomethingElse)
+{
+    SurfaceField f = field();
+    f.arrays.push_back({"v:0", Association::Point, ValueType::Float32, 1, {9, 9, 9, 9, 9}});
+    f.arrays.push_back({"w*", Association::Point, ValueType::Float32, 1, {1, 1, 1, 1, 1}});
+    std::vector<std::string> names;
+    for (const ArrayChoice& c : arrayChoices(f)) {
+        names.push_back(c.name);
+        SurfaceField shown = f;
+        showArray(shown, c.spec, false);
+        EXPECT_EQ(shown.name, c.name) << c.spec;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"p", "v magnitude", "v[1]", "v[2]", "c", "p", "a:b", "v:0"}));
+}
+
 TEST(ShowArray, PointArrayPerVertexAndNanBeyondTheFile)
 {
     SurfaceField f = field();

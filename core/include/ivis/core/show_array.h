@@ -32,7 +32,9 @@ struct ArrayChoice {
 };
 
 /// @brief What @a field can be coloured by, as ParaView's "Color by" lists it: each of its arrays
-///        in the file's order, a vector array by its magnitude and then by each component.
+///        in the file's order, a vector array by its magnitude and then by each component; not an
+///        array whose name holds '*' or '?' (a pattern to --scalar), nor a vector's part whose
+///        spec names another array.
 std::vector<ArrayChoice> arrayChoices(const SurfaceField& field);
 
 /// @brief The array shown when a file carries arrays and none is chosen: the active point scalars,
