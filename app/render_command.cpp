@@ -145,10 +145,11 @@ Command addRenderCommand(CLI::App& app)
         const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
+        const render::RenderOptions asked = options->view.renderOptions();  // the method and the picture's size
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
-        const std::string readabilityKey = options->view.renderOptions().method->info().readabilityParameter;
+        const std::string readabilityKey = asked.method->info().readabilityParameter;
         if (readabilityKey.empty() && command->get_option("--min-coherence")->count() > 0)
-            throw ValueError("--min-coherence: " + options->view.renderOptions().method->name() +
+            throw ValueError("--min-coherence: " + asked.method->name() +
                              " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
         const bool chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
@@ -164,11 +165,10 @@ Command addRenderCommand(CLI::App& app)
                                  "view follows the job's first step)");
         }
         std::vector<glm::ivec2> probePixels;
-        const render::RenderOptions asked = options->view.renderOptions();  // the picture's size
         for (const std::string& text : options->probes)
             probePixels.push_back(parseProbePixel(text, asked.width, asked.height));
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
-        options->mesh.fitReachTo({options->view.renderOptions().method});
+        options->mesh.fitReachTo({asked.method});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         const core::Camera requested = options->view.camera();
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
