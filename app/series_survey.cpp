@@ -1,6 +1,7 @@
 #include "series_survey.h"
 
 #include <ivis/core/content_hash.h>
+#include <ivis/core/errors.h>
 #include <ivis/core/log.h>
 
 #include <algorithm>
@@ -19,13 +20,15 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
     return name + ", t = " + time;
 }
 
-SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep)
+SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep,
+                          const std::atomic<bool>* cancel)
 {
     const core::ScopedLogLevel silent(core::LogLevel::Silent);  // the frames load the steps again and say their notes
     SeriesSurvey survey;
     float lo = std::numeric_limits<float>::infinity(), hi = -lo, lowestPositive = hi;
     const std::size_t steps = series.steps().size();
     for (std::size_t k = 0; k < steps; ++k) {
+        if (cancel && *cancel) throw Cancelled("survey of " + series.source() + " cancelled");
         const core::SurfaceField field = series.load(k);
         survey.meshHashes.push_back(core::meshHash(field.mesh));
         survey.scalar = survey.scalar || field.hasScalar();

@@ -7,6 +7,7 @@
 #include <ivis/core/colormap.h>
 #include <ivis/core/surface_series.h>
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -35,8 +36,12 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
 /// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
 ///        is written or said) and surveys them; with @a eachStep, resolves each step's own scale
 ///        from its values (each frame's range its own: --range-per-frame).
+/// @param cancel when given and set, the survey stops before its next step (the viewer's survey in
+///        the background)
 /// @throw InputError naming the step's file for a step that cannot be loaded; ValueError when
-///        @a eachStep cannot resolve a step's scale (a log scale over a step without a positive value)
-SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep = nullptr);
+///        @a eachStep cannot resolve a step's scale (a log scale over a step without a positive value);
+///        Cancelled when @a cancel is set
+SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep = nullptr,
+                          const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace ivis::app

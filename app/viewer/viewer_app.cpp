@@ -10,6 +10,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/interrupt_signal.h>
+#include <ivis/core/log.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/method_json.h>
@@ -84,7 +85,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     const std::vector<std::string> names = core::colormapNames();
     mColormapIndex = int(std::find(names.begin(), names.end(), mShading.colormap) - names.begin());
     mOpenedUnits = render.units;
-    if (!mSeries) {  // a series keeps the array it was opened with: its colour range spans every step
+    if (!mSeries || mSeries->steps().front().array.empty()) {  // a pattern's steps are its arrays
         mArrayChoices = core::arrayChoices(*mField);
         // A file's array as it is, not hot spots, a scalar file or an array averaged onto the vertices.
         const core::SurfaceLoadOptions& load = mOptions.mesh.load;
@@ -93,7 +94,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
             if (mArrayChoices[i].name == mField->name && mArrayChoices[i].association == mField->valuesOn)
                 mArrayChoice = int(i);
         if (mArrayChoice < 0 && mField->hasScalar())
-            mOpenedScalar = OpenedScalar{mField->values, mField->valuesOn, mField->name};
+            mOpenedScalar = OpenedScalar{mSeries ? std::vector<float>() : mField->values, mField->valuesOn, mField->name};
         mOpenedChoice = mArrayChoice;
         mOpenedScale = mShading.scale;
         mOpenedDataScale = mDataScale;
@@ -108,6 +109,7 @@ ViewerApp::~ViewerApp()
         std::fflush(stdout);
         mJob.wait();
     }
+    if (mColouring.valid()) mColouring.wait();  // stops before its next step
     mLoader.reset();  // cancels and joins
     closeWindow();
 }
@@ -164,7 +166,7 @@ void ViewerApp::startLoading()
 
 void ViewerApp::showStep(std::size_t step)
 {
-    IVIS_CHECK(mSeries && step < mSeries->steps().size() && !mJob.valid());
+    IVIS_CHECK(mSeries && step < mSeries->steps().size() && !jobRunning());
     core::SurfaceField field = mSeries->load(step);
     const bool sameGeometry = mSurvey.meshHashes[step] == mSurvey.meshHashes[mStep];
     mStep = step;
@@ -420,7 +422,7 @@ bool ViewerApp::choosesReadableRule() const
 
 void ViewerApp::startOptimiser(Job job)
 {
-    if (!mLoaded || mJob.valid()) return;
+    if (!mLoaded || jobRunning()) return;
     mCancelJob = false;
     mOptimiser.importanceRange = mShading.scale.range;
     mOptimiser.framed = mOrbit.framed;
@@ -498,7 +500,7 @@ void ViewerApp::handleInput()
             mDirty = true;
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(mWindow, GLFW_TRUE);
-        if (mSeries && !mJob.valid()) {
+        if (mSeries && !jobRunning()) {
             if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) && mStep + 1 < mSeries->steps().size()) switchStep(mStep + 1);
             if (ImGui::IsKeyPressed(GLFW_KEY_LEFT) && mStep > 0) switchStep(mStep - 1);
         }
@@ -589,13 +591,13 @@ void ViewerApp::drawSourceLines()
         const core::SeriesStep& shown = mSeries->steps()[mStep];
         std::string format;  // the slider's text is a printf format: a '%' of the label doubled
         for (const char c : shown.label) format += c == '%' ? std::string("%%") : std::string(1, c);
-        ImGui::BeginDisabled(mJob.valid());
+        ImGui::BeginDisabled(jobRunning());
         if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp))
             switchStep(std::size_t(step));
         ImGui::EndDisabled();
         tooltip("The steps of the time series (time of each from the .pvd; its index for files, a --scalar "
                 "pattern or a .pvd without times); one colour range over all steps; the volume stays while the geometry does. Disabled "
-                "while an optimiser runs.");
+                "while an optimiser or the survey of 'colour by' runs.");
         if (mSeries->timed()) ImGui::Text("step %zu of %zu, time %g", mStep + 1, count, shown.time);
         else ImGui::Text("step %zu of %zu, %s", mStep + 1, count, shown.label.c_str());
     }
@@ -610,7 +612,7 @@ void ViewerApp::drawSourceLines()
 
 void ViewerApp::drawOptimiserSection()
 {
-    const bool busy = mJob.valid() || !mLoaded;
+    const bool busy = jobRunning() || !mLoaded;
     optimiserWidgets(mOptimiser, mField->hasScalar());
     const bool hasParameters = !render::optimisedParameters(*mMethod).empty();
     ImGui::BeginDisabled(busy || !hasParameters);
@@ -645,7 +647,8 @@ bool ViewerApp::drawColourByCombo()
         return c.association == core::Association::Cell ? c.name + " (cell)" : c.name;
     };
     const int shown = mArrayChoice;
-    ImGui::BeginDisabled(mJob.valid());
+    // A series waits for its volume: the loader's end may start the readable rule, which waits for no survey.
+    ImGui::BeginDisabled(jobRunning() || (mSeries && mLoader));
     if (ImGui::BeginCombo("colour by", label(mArrayChoice).c_str())) {
         for (int i = mOpenedScalar ? -1 : 0; i < int(mArrayChoices.size()); ++i) {
             ImGui::PushID(i);
@@ -657,13 +660,21 @@ bool ViewerApp::drawColourByCombo()
     ImGui::EndDisabled();
     tooltip("the scalar shown: each array of the file (a vector's magnitude or one component; a cell array flat per "
             "triangle), as --scalar names it; the colour range follows the data (the range options' rules, not a "
-            "fixed --range). Disabled while an optimiser runs.");
+            "fixed --range). A time series: the array of every step, its range over all steps (each step read again "
+            "in the background; disabled while its volume loads). Disabled while an optimiser or that reading runs.");
     return mArrayChoice != shown;
 }
 
 void ViewerApp::colourBy(int choice)
 {
-    if (mArrayChoice == mOpenedChoice) mOpenedScale = mShading.scale;  // as the panel left it
+    if (mSeries) {
+        startSeriesColouring(choice);
+        return;
+    }
+    std::vector<float> shownValues = mField->values;  // shown again when the choice fails
+    const core::Association shownOn = mField->valuesOn;
+    std::string shownName = mField->name;
+    core::ColorScale dataScale;
     try {
         if (choice < 0) {
             mField->values = mOpenedScalar->values;
@@ -672,37 +683,88 @@ void ViewerApp::colourBy(int choice)
         } else {
             core::showArray(*mField, mArrayChoices[std::size_t(choice)].spec, false);
         }
-        mArrayChoice = choice;
-        if (choice == mOpenedChoice) {  // its own scale again (--range, a view file's, the panel's)
-            mDataScale = mOpenedDataScale;
-            mShading.scale = mOpenedScale;
-        } else {
-            core::ColorScaleRequest request = mOptions.view.colorScaleRequest();
-            request.range.reset();  // a range given was the opened scalar's
-            try {
-                mDataScale = request.resolve(mField->values);
-            } catch (const ValueError&) {  // a log scale over data without a positive value
-                request.log = false;
-                mDataScale = request.resolve(mField->values);
-            }
-            mShading.scale = mDataScale;
-        }
+        dataScale = choiceDataScale(choice, mField->values);
     } catch (const std::exception& e) {
+        mField->values = std::move(shownValues);
+        mField->valuesOn = shownOn;
+        mField->name = std::move(shownName);
         mStatus = e.what();
         return;
     }
+    showChoice(choice, dataScale);
+}
+
+core::ColorScale ViewerApp::choiceDataScale(int choice, const std::vector<float>& data) const
+{
+    if (choice == mOpenedChoice) return mOpenedDataScale;
+    core::ColorScaleRequest request = mOptions.view.colorScaleRequest();
+    request.range.reset();  // a range given was the opened scalar's
+    try {
+        return request.resolve(data);
+    } catch (const ValueError&) {  // a log scale over data without a positive value
+        request.log = false;
+        return request.resolve(data);
+    }
+}
+
+void ViewerApp::showChoice(int choice, const core::ColorScale& dataScale)
+{
+    if (mArrayChoice == mOpenedChoice) mOpenedScale = mShading.scale;  // as the panel left it
+    mArrayChoice = choice;
+    mDataScale = dataScale;
+    // The opened scalar gets its own scale again (--range, a view file's, the panel's).
+    mShading.scale = choice == mOpenedChoice ? mOpenedScale : mDataScale;
     mRenderer->setMesh(*mField, mNormals);
     mProbe.readScalar(*mField);
     std::printf("inversevis-view: colour by %s, range %g to %g%s\n", mField->name.c_str(), mDataScale.range.lo,
                 mDataScale.range.hi, mDataScale.log ? ", log" : "");
     std::fflush(stdout);
+    mDirty = true;
 }
 
-core::SurfaceLoadOptions ViewerApp::shownScalarLoad() const
+void ViewerApp::startSeriesColouring(int choice)
+{
+    auto series = std::make_unique<core::SurfaceSeries>(*mSeries);
+    const core::SurfaceLoadOptions load = choiceLoad(choice);
+    const std::size_t step = mStep;  // the slider waits for the job
+    mCancelJob = false;
+    mColouring = std::async(std::launch::async, [this, choice, load, step, series = std::move(series)]() mutable {
+        series->chooseScalar(load);
+        SeriesSurvey survey = surveySeries(*series, nullptr, &mCancelJob);
+        const core::ScopedLogLevel silent(core::LogLevel::Silent);  // the survey has loaded it: nothing new to say
+        core::SurfaceField shown = series->load(step);
+        return SeriesColouring{std::move(series), std::move(survey), std::move(shown), choice};
+    });
+    mStatus = "colour by: reading every step of the series...";
+}
+
+void ViewerApp::pollSeriesColouring()
+{
+    if (!mColouring.valid() || mColouring.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    core::ColorScale dataScale;
+    SeriesColouring colouring;
+    try {
+        colouring = mColouring.get();
+        if (colouring.survey.meshHashes != mSurvey.meshHashes)
+            throw InputError(mSeries->source() + ": a step's geometry changed on disk since the series was opened; "
+                                                 "open it again");
+        dataScale = choiceDataScale(colouring.choice, colouring.survey.sample);
+    } catch (const std::exception& e) {  // a step without the array, a file changed on disk, a cancel
+        mStatus = std::string("colour by: ") + e.what();
+        return;
+    }
+    mSeries = std::move(colouring.series);
+    mSurvey = std::move(colouring.survey);
+    core::showStepData(*mField, std::move(colouring.shown));  // the same geometry (its hash)
+    mStatus.clear();
+    showChoice(colouring.choice, dataScale);
+}
+
+core::SurfaceLoadOptions ViewerApp::choiceLoad(int choice) const
 {
     core::SurfaceLoadOptions load = mOptions.mesh.load;
-    if (mArrayChoice != mOpenedChoice) {
-        load.read = core::MeshReadOptions{mArrayChoices[std::size_t(mArrayChoice)].spec, "", false};
+    if (choice != mOpenedChoice) {
+        load.read = core::MeshReadOptions{mArrayChoices[std::size_t(choice)].spec, "", false};
         load.hotSpots = 0;
     }
     return load;
@@ -744,12 +806,13 @@ int ViewerApp::runInteractive()
 {
     int lastWidth = 0, lastHeight = 0, settledFrames = 0;
     while (!glfwWindowShouldClose(mWindow)) {
-        const bool busy = mDirty || mLoader || mJob.valid() || mAnimation.started();
+        const bool busy = mDirty || mLoader || jobRunning() || mAnimation.started();
         if (busy) glfwPollEvents();
         else glfwWaitEventsTimeout(0.25);
         pollLoader();
         const double time = now();
         pollOptimiser(time);
+        pollSeriesColouring();
         if (mAnimation.started()) {
             std::vector<double> parameters;
             mAnimation.at(time, mOrbit, parameters);
@@ -797,7 +860,7 @@ int ViewerApp::runInteractive()
                 mDirty = false;
             }
             // --probe, once the camera and the method have settled (a readable rule chosen at start).
-            if (mProbePending && mLoaded && !mJob.valid() && !mAnimation.started()) {
+            if (mProbePending && mLoaded && !jobRunning() && !mAnimation.started()) {
                 mProbePending = false;
                 const glm::ivec2 pixel = parseProbePixel(mOptions.probe, mOptions.width, mOptions.height);
                 if (pixel.x < picture.width && pixel.y < picture.height) probeAt(pixel);
@@ -810,7 +873,7 @@ int ViewerApp::runInteractive()
             mRenderer->blitTo(picture.x, picture.y, picture.width, picture.height);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         }
-        if (!mOptions.uiScreenshot.empty() && !mLoader && !mJob.valid() && !mAnimation.started() &&
+        if (!mOptions.uiScreenshot.empty() && !mLoader && !jobRunning() && !mAnimation.started() &&
             ++settledFrames >= mOptions.frames + 1) {
             writeWindow(mOptions.uiScreenshot);
             break;

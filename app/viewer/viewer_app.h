@@ -88,12 +88,28 @@ private:
     void drawSourceLines();
     /// The optimiser's settings and buttons.
     void drawOptimiserSection();
-    /// "colour by": the scalar opened with and every array of the file (not of a series); true when it changed.
+    /// "colour by": the scalar opened with and every array of the file (of a series: of its first
+    /// step; not of a pattern's steps); true when it changed.
     bool drawColourByCombo();
-    /// Shows choice @a choice of mArrayChoices (-1: mOpenedScalar) and rescales the colours to its data.
+    /// Shows choice @a choice of mArrayChoices (-1: mOpenedScalar) and rescales the colours to its
+    /// data; a series' steps are surveyed again in the background first (startSeriesColouring).
     void colourBy(int choice);
+    /// The colour scale of choice @a choice over @a data: the opened one's own, else the range
+    /// options' rules over the data (no fixed --range; no log scale where nothing is positive).
+    core::ColorScale choiceDataScale(int choice, const std::vector<float>& data) const;
+    /// Makes choice @a choice, whose data mField shows now, the one shown, with @a dataScale.
+    void showChoice(int choice, const core::ColorScale& dataScale);
+    /// Starts the background job that makes a copy of the series show choice @a choice and
+    /// surveys its steps.
+    void startSeriesColouring(int choice);
+    /// Shows the surveyed series once its survey is done (its error goes to the status line).
+    void pollSeriesColouring();
+    /// The loading options that give choice @a choice of "colour by" (the opened options for it).
+    core::SurfaceLoadOptions choiceLoad(int choice) const;
     /// The loading options that give the scalar shown (for a view file).
-    core::SurfaceLoadOptions shownScalarLoad() const;
+    core::SurfaceLoadOptions shownScalarLoad() const { return choiceLoad(mArrayChoice); }
+    /// True while an optimiser or a series' survey runs in the background.
+    bool jobRunning() const { return mJob.valid() || mColouring.valid(); }
     /// The units of the scalar shown: the opened scalar's, none for another.
     std::string shownUnits() const { return mArrayChoice == mOpenedChoice ? mOpenedUnits : std::string(); }
     /// Framing, camera, trace scales, frame time, volume and OpenGL renderer; true when the picture changed.
@@ -123,14 +139,15 @@ private:
     render::ShadingOptions mShading;
     core::LegendSide mLegendSide = core::LegendSide::Right;
     /// The scalar the window opened with, when no array choice gives it (hot spots, --scalar-file, a
-    /// cell array averaged): the first entry of "colour by".
+    /// cell array averaged): the first entry of "colour by" (of a series, without values: each step
+    /// loads its own).
     struct OpenedScalar {
         std::vector<float> values;
         core::Association on = core::Association::Point;
         std::string name;
     };
     std::optional<OpenedScalar> mOpenedScalar;
-    std::vector<core::ArrayChoice> mArrayChoices;  ///< what "colour by" offers (none for a series)
+    std::vector<core::ArrayChoice> mArrayChoices;  ///< what "colour by" offers (none for a pattern's steps)
     int mArrayChoice = -1;                         ///< the choice shown; -1: mOpenedScalar, or none
     int mOpenedChoice = -1;                        ///< the choice the window opened with
     core::ColorScale mOpenedScale, mOpenedDataScale;  ///< its scale and data scale (--range, a view file's)
@@ -152,6 +169,17 @@ private:
     std::unique_ptr<SceneLoader> mLoader;
     std::unique_ptr<LoadedScene> mLoaded;
     std::string mVolumeText;
+
+    /// A series showing another choice of "colour by", what its steps hold and its step shown.
+    struct SeriesColouring {
+        std::unique_ptr<core::SurfaceSeries> series;
+        SeriesSurvey survey;
+        core::SurfaceField shown;
+        int choice = -1;
+    };
+    /// The series' survey for "colour by", while it runs; it reads mCancelJob, so the destructor
+    /// waits for it.
+    std::future<SeriesColouring> mColouring;
 
     std::future<OptimiserResult> mJob;
     render::MethodPtr mJobMethod;  ///< the method the job started from

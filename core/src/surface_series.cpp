@@ -8,6 +8,24 @@
 #include <filesystem>
 
 namespace ivis::core {
+namespace {
+
+/// Refuses a scalar file for a series: each step shows its own array.
+void refuseScalarFile(const MeshReadOptions& read)
+{
+    if (!read.scalarFile.empty())  // every step would show the one file's values
+        throw InputError(read.scalarFile + ": --scalar-file gives one mesh's values; each step of a series "
+                                           "shows its own array (--scalar NAME)");
+}
+
+/// The refusal of a --scalar pattern on a series of files.
+InputError patternOnFilesError(const std::string& scalar)
+{
+    return InputError("--scalar '" + scalar + "': a pattern picks the steps among the arrays of one file; every "
+                      "step of a series of files shows one array (--scalar NAME)");
+}
+
+}  // namespace
 
 bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions& options)
 {
@@ -22,14 +40,10 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
     for (const std::string& source : sources)
         if (sources.size() > 1 && isTimeSeries(source))
             throw InputError(source + ": a .pvd is a series by itself; give it alone, not among other files");
-    if (!mOptions.read.scalarFile.empty())  // every step showed the one file's values
-        throw InputError(mOptions.read.scalarFile + ": --scalar-file gives one mesh's values; each step of a series "
-                                                    "shows its own array (--scalar NAME)");
+    refuseScalarFile(mOptions.read);
     const std::string& scalar = mOptions.read.scalarName;
     const bool pattern = isArrayPattern(scalar);
-    if (pattern && (sources.size() > 1 || isTimeSeries(sources.front())))
-        throw InputError("--scalar '" + scalar + "': a pattern picks the steps among the arrays of one file; every "
-                         "step of a series of files shows one array (--scalar NAME)");
+    if (pattern && (sources.size() > 1 || isTimeSeries(sources.front()))) throw patternOnFilesError(scalar);
     mSource = sources.front();
 
     if (pattern) {
@@ -50,12 +64,28 @@ SurfaceSeries::SurfaceSeries(const std::vector<std::string>& sources, SurfaceLoa
         for (const std::string& source : sources)
             mSteps.push_back({source, "", double(mSteps.size()), std::filesystem::path(source).filename().string()});
     }
-    const bool chosen = !scalar.empty() || mOptions.hotSpots > 0;
-    if (!pattern && !chosen && mSteps.front().path.rfind(kScenePrefix, 0) != 0) {
-        const SurfaceField first = readMesh(mSteps.front().path, mOptions.read);
-        if (!first.arrays.empty() || mOptions.read.cellToPoint)
-            mDefaultArray = qualifiedArrayName(defaultArray(first, mOptions.read.cellToPoint));
-    }
+    if (!pattern) mDefaultArray = defaultArrayUnder(mOptions);
+}
+
+std::string SurfaceSeries::defaultArrayUnder(const SurfaceLoadOptions& options) const
+{
+    const bool chosen = !options.read.scalarName.empty() || options.hotSpots > 0;
+    if (chosen || mSteps.front().path.rfind(kScenePrefix, 0) == 0) return "";
+    const SurfaceField first = readMesh(mSteps.front().path, options.read);
+    if (first.arrays.empty() && !options.read.cellToPoint) return "";
+    return qualifiedArrayName(defaultArray(first, options.read.cellToPoint));
+}
+
+void SurfaceSeries::chooseScalar(const SurfaceLoadOptions& options)
+{
+    if (!mSteps.front().array.empty())
+        throw InputError(mSource + ": the steps of a --scalar pattern are its arrays; no other array can be shown");
+    refuseScalarFile(options.read);
+    if (isArrayPattern(options.read.scalarName)) throw patternOnFilesError(options.read.scalarName);
+    std::string defaultName = defaultArrayUnder(options);  // before anything changes: it may throw
+    mOptions.read = options.read;
+    mOptions.hotSpots = options.hotSpots;
+    mDefaultArray = std::move(defaultName);
 }
 
 SurfaceField SurfaceSeries::load(std::size_t index)

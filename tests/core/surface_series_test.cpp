@@ -156,6 +156,43 @@ TEST(SurfaceSeries, ListStepsAreTheFilesInTheOrderGiven)
     EXPECT_EQ(series.load(1).valuesOn, Association::Cell);
 }
 
+TEST(SurfaceSeries, AChosenScalarIsWhatEveryLaterStepShows)
+{
+    // The viewer's "colour by" on a series: another array for every step, then the opened one back.
+    SurfaceSeries series({pvd()}, {});
+    EXPECT_EQ(series.load(2).name, "pressure");
+    series.chooseScalar(scalar("pressure_cell"));
+    for (std::size_t k = 0; k < 5; ++k) {
+        const SurfaceField field = series.load(k);
+        const SurfaceField direct = loadSurface(series.steps()[k].path, scalar("pressure_cell"));
+        EXPECT_EQ(field.name, "pressure_cell");
+        EXPECT_EQ(field.valuesOn, Association::Cell);
+        EXPECT_EQ(field.values, direct.values) << k;
+    }
+    SurfaceLoadOptions hotSpots;
+    hotSpots.hotSpots = 2;
+    series.chooseScalar(hotSpots);
+    EXPECT_EQ(series.load(1).name, "hotspots");
+    EXPECT_EQ(series.load(1).values, loadSurface(series.steps()[1].path, hotSpots).values);
+    series.chooseScalar({});  // as opened: every step the first step's default array
+    for (std::size_t k : {0, 4}) {
+        const SurfaceField field = series.load(k);
+        EXPECT_EQ(field.name, "pressure");
+        EXPECT_EQ(field.values, loadSurface(series.steps()[k].path, scalar("pressure")).values);
+    }
+    // A pattern's steps are its arrays; a series of files takes no scalar file nor pattern.
+    SurfaceSeries arrays({artery()}, scalar("pressure_t*"));
+    EXPECT_NE(errorOf([&] { arrays.chooseScalar(scalar("pressure_t200")); }).find("the steps of a --scalar pattern"),
+              std::string::npos);
+    EXPECT_NE(errorOf([&] { series.chooseScalar(scalar("pressure*")); }).find("a pattern picks the steps among"),
+              std::string::npos);
+    SurfaceLoadOptions file;
+    file.read.scalarFile = "values.txt";
+    EXPECT_NE(errorOf([&] { series.chooseScalar(file); }).find("--scalar-file gives one mesh's values"),
+              std::string::npos);
+    EXPECT_EQ(series.load(3).name, "pressure");  // a refused choice changes nothing
+}
+
 TEST(SurfaceSeries, BadSeriesAreRejectedNamingTheProblem)
 {
     EXPECT_EQ(errorOf([] { SurfaceSeries({artery()}, scalar("velocity*")); }).rfind(

@@ -50,7 +50,18 @@ public:
     /// @throw InputError naming the step's file for a file that cannot be read or lacks the array
     SurfaceField load(std::size_t index);
 
+    /// @brief Every later load shows the scalar @a options choose (their array, cell-to-point and
+    ///        hot-spot options; the others stay the series'), as if the series had been opened with them.
+    /// @throw InputError for the steps of a pattern (they are arrays), a scalar file or a pattern in
+    ///        @a options, and (with no scalar chosen) a first step's file that cannot be read; the
+    ///        series is then as it was
+    void chooseScalar(const SurfaceLoadOptions& options);
+
 private:
+    /// The array the first step shows by default under @a options ("" when they choose a scalar or
+    /// there is none): every step then shows it.
+    std::string defaultArrayUnder(const SurfaceLoadOptions& options) const;
+
     std::vector<SeriesStep> mSteps;
     std::string mSource;
     bool mTimed = false;
