@@ -39,6 +39,9 @@ int main(int argc, char** argv)
         if (const ivis::app::ViewFile* view = options.view.view())
             options.mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
+            if (options.play)
+                throw ivis::InputError("--play: " + options.mesh.source + " is one surface, not a time series (a .pvd, "
+                                       "several files or a --scalar pattern)");
             ivis::app::ViewerApp viewer(options, ivis::core::loadSurface(options.mesh.source, options.mesh.load));
             return viewer.run();
         }

@@ -66,6 +66,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
       mSurvey(std::move(survey)),
       mCacheFolder(optionalCacheFolder(options.cacheDir))  // once: a series' every geometry would warn
 {
+    mPlayRate = float(mOptions.playRate);
     mOptions.view.resolution = std::to_string(options.width) + "x" + std::to_string(options.height);
     const render::RenderOptions render = mOptions.view.renderOptions(*mField);
     mMethod = render.method;
@@ -199,6 +200,34 @@ void ViewerApp::switchStep(std::size_t step)
     } catch (const std::exception& e) {  // a step's file changed on disk since it was checked
         mStatus = e.what();
     }
+}
+
+void ViewerApp::setPlaying(bool playing)
+{
+    mPlaying = playing && mSeries;
+    if (!mPlaying) return;
+    if (mStep + 1 == mSeries->steps().size() && !jobRunning()) switchStep(0);
+    mNextStepTime = now() + 1.0 / mPlayRate;
+}
+
+void ViewerApp::advancePlayback(double time)
+{
+    if (!mPlaying) return;
+    const double interval = 1.0 / mPlayRate;
+    if (jobRunning() || mLoader) {  // the step is shown a whole interval once its volume and the job are done
+        mNextStepTime = time + interval;
+        return;
+    }
+    if (time < mNextStepTime) return;
+    const std::size_t count = mSeries->steps().size();
+    if (mStep + 1 == count && !mLoop) {
+        mPlaying = false;
+        return;
+    }
+    const std::size_t next = (mStep + 1) % count;
+    switchStep(next);
+    if (mStep != next) mPlaying = false;  // the step failed: its error is on the status line
+    mNextStepTime = std::max(mNextStepTime + interval, time);  // the rate kept over the frames' rounding
 }
 
 bool ViewerApp::pollLoader()
@@ -504,6 +533,7 @@ void ViewerApp::handleInput()
             if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT) && mStep + 1 < mSeries->steps().size()) switchStep(mStep + 1);
             if (ImGui::IsKeyPressed(GLFW_KEY_LEFT) && mStep > 0) switchStep(mStep - 1);
         }
+        if (mSeries && (mPlaying || !jobRunning()) && ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) setPlaying(!mPlaying);
     }
 }
 
@@ -567,7 +597,7 @@ void ViewerApp::drawPanel()
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     tooltip(mSeries ? "drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot; "
-                      "left/right: time step"
+                      "left/right: time step; space: play / pause"
                     : "drag: orbit; right/middle or shift-drag: pan; wheel: zoom; F: frame; P: screenshot");
     if (!mStatus.empty()) ImGui::TextUnformatted(mStatus.c_str());
     ImGui::PopItemWidth();
@@ -592,12 +622,27 @@ void ViewerApp::drawSourceLines()
         std::string format;  // the slider's text is a printf format: a '%' of the label doubled
         for (const char c : shown.label) format += c == '%' ? std::string("%%") : std::string(1, c);
         ImGui::BeginDisabled(jobRunning());
-        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp))
+        if (ImGui::SliderInt("time step", &step, 0, int(count) - 1, format.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
+            mPlaying = false;  // the hand that holds the slider chooses the step
             switchStep(std::size_t(step));
+        }
         ImGui::EndDisabled();
         tooltip("The steps of the time series (time of each from the .pvd; its index for files, a --scalar "
                 "pattern or a .pvd without times); one colour range over all steps; the volume stays while the geometry does. Disabled "
                 "while an optimiser or the survey of 'colour by' runs.");
+        ImGui::BeginDisabled(jobRunning() && !mPlaying);  // a pause is always possible
+        if (ImGui::Button(mPlaying ? "pause" : "play")) setPlaying(!mPlaying);
+        ImGui::EndDisabled();
+        tooltip("play (space): the steps one after the other at steps/s, each shown a whole interval once its volume "
+                "is loaded, from the first when the slider is at the last; it waits while an optimiser or 'colour by' "
+                "runs, and the slider pauses it");
+        ImGui::SameLine();
+        ImGui::Checkbox("loop", &mLoop);
+        tooltip("play on from the last step to the first");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("steps/s", &mPlayRate, 0.1f, 0.1f, 60.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+        tooltip("steps per second while playing (--play-rate)");
         if (mSeries->timed()) ImGui::Text("step %zu of %zu, time %g", mStep + 1, count, shown.time);
         else ImGui::Text("step %zu of %zu, %s", mStep + 1, count, shown.label.c_str());
     }
@@ -804,15 +849,17 @@ void ViewerApp::writeWindow(const std::string& path)
 
 int ViewerApp::runInteractive()
 {
+    setPlaying(mOptions.play);
     int lastWidth = 0, lastHeight = 0, settledFrames = 0;
     while (!glfwWindowShouldClose(mWindow)) {
         const bool busy = mDirty || mLoader || jobRunning() || mAnimation.started();
         if (busy) glfwPollEvents();
-        else glfwWaitEventsTimeout(0.25);
+        else glfwWaitEventsTimeout(mPlaying ? std::clamp(mNextStepTime - now(), 0.001, 0.25) : 0.25);
         pollLoader();
         const double time = now();
         pollOptimiser(time);
         pollSeriesColouring();
+        advancePlayback(time);
         if (mAnimation.started()) {
             std::vector<double> parameters;
             mAnimation.at(time, mOrbit, parameters);
@@ -873,7 +920,7 @@ int ViewerApp::runInteractive()
             mRenderer->blitTo(picture.x, picture.y, picture.width, picture.height);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         }
-        if (!mOptions.uiScreenshot.empty() && !mLoader && !jobRunning() && !mAnimation.started() &&
+        if (!mOptions.uiScreenshot.empty() && !mLoader && !jobRunning() && !mAnimation.started() && !mPlaying &&
             ++settledFrames >= mOptions.frames + 1) {
             writeWindow(mOptions.uiScreenshot);
             break;

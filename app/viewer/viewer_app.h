@@ -57,8 +57,14 @@ private:
     /// Shows step @a step of the series: its scalar replaces the shown one when its geometry is the
     /// same (the volume stays); other geometry is uploaded and its volume loaded in the background.
     void showStep(std::size_t step);
-    /// showStep for the slider and the arrow keys: an error goes to the panel's status line.
+    /// showStep for the slider, the arrow keys and playing: an error goes to the panel's status line.
     void switchStep(std::size_t step);
+    /// Starts or stops playing the series (from its first step when it stands at its last).
+    void setPlaying(bool playing);
+    /// While playing: the next step once the shown step's volume is loaded, no job runs and
+    /// 1 / rate seconds have passed since; at the last step, the first again with "loop", else the
+    /// end of playing.
+    void advancePlayback(double time);
     /// Uploads the loaded scene once the loader is done; true when it did so this call.
     bool pollLoader();
     void waitForScene();
@@ -134,6 +140,10 @@ private:
     SeriesSurvey mSurvey;
     std::string mCacheFolder;  ///< where volumes are cached; "" when none can be written (optionalCacheFolder)
     std::size_t mStep = 0;                         ///< the step of mSeries shown
+    bool mPlaying = false;                         ///< the series' steps follow each other (play)
+    bool mLoop = false;                            ///< playing goes on from the last step to the first
+    float mPlayRate = 0.0f;                        ///< steps per second while playing (--play-rate)
+    double mNextStepTime = 0.0;                    ///< when playing shows the next step (seconds, now())
     render::MethodPtr mMethod;
     std::string mAnimatedMethod;  ///< the method whose parameters mAnimation eases
     render::ShadingOptions mShading;

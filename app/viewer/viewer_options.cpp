@@ -6,6 +6,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/surface_source.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -42,6 +43,10 @@ void ViewerOptions::addTo(CLI::App& app)
     app.add_option("--probe", probe,
                    "Once the volume is loaded, probe pixel X,Y of the picture (from its top left) as a click does: "
                    "what it shows, printed and in the panel (headless: of each step, after its screenshot)");
+    app.add_flag("--play", play,
+                 "A time series: play its steps once the window opens, as the panel's play button does (from the "
+                 "first step to the last, each step's volume loaded before the next; --ui-screenshot waits for the last)");
+    app.add_option("--play-rate", playRate, "Steps per second while playing (0.1 to 60)")->capture_default_str();
     app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
     app.add_option("--cache-dir", cacheDir, kCacheDirHelp);
@@ -61,6 +66,13 @@ void ViewerOptions::validate()
         throw ValueError("--opt-res " + std::to_string(optResolution) + " is out of range (8 to 2000)");
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
+    if (!(playRate >= 0.1 && playRate <= 60.0)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", playRate);
+        throw ValueError(std::string("--play-rate ") + text + " is out of range (0.1 to 60 steps per second)");
+    }
+    if (play && headless())
+        throw InputError("--play: --screenshot already shows every step of a series in turn, and --benchmark orbits one");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
     if (!probe.empty()) {
         if (benchmark) throw InputError("--probe: the benchmark orbits; probe a screenshot or the window");

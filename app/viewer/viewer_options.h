@@ -32,6 +32,8 @@ struct ViewerOptions {
     std::string uiScreenshot;   ///< debug: run the window with its panel, write it (panel included) once settled, exit
     std::string optimise;       ///< "parameters" or "view": press that optimiser's button once loaded
     std::string probe;          ///< "X,Y": probe that pixel of the picture once loaded, as a click would
+    bool play = false;          ///< a time series: press "play" once the window opens
+    double playRate = 4.0;      ///< steps per second while playing (the panel's "steps/s")
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
     std::string cacheDir;       ///< --cache-dir ("" = app::cacheFolder's default)

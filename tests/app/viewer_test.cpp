@@ -41,6 +41,26 @@ struct RunResult {
     std::string output;  ///< stdout and stderr
 };
 
+/// Writes mixed.pvd in @a dir: the artery's first step, a tetrahedron (other geometry, tet.vtp),
+/// the artery's second step; returns its path.
+std::string writeMixedSeries(const TempDir& dir)
+{
+    VtkDataSet tet;
+    tet.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    tet.polys.connectivity = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+    tet.polys.offsets = {3, 6, 9, 12};
+    tet.pointData = {{"pressure", "Float32", 1, {0.1, 0.2, 0.3, 0.4}}};
+    VtkXmlLayout layout;
+    layout.format = VtkXmlLayout::Ascii;
+    writeFile(dir.file("tet.vtp"), vtpText(tet, layout));
+    writeFile(dir.file("mixed.pvd"),
+              "<VTKFile type=\"Collection\"><Collection>\n<DataSet timestep=\"0\" file=\"" +
+                  sharedMesh("vtk/artery_series/artery_t0200.vtp") + "\"/>\n<DataSet timestep=\"1\" file=\"tet.vtp\"/>\n" +
+                  "<DataSet timestep=\"2\" file=\"" + sharedMesh("vtk/artery_series/artery_t0400.vtp") +
+                  "\"/>\n</Collection></VTKFile>\n");
+    return dir.file("mixed.pvd");
+}
+
 /// Runs `inversevis-view` with @a arguments, under xvfb-run when @a display.
 RunResult runViewer(const std::string& arguments, bool display, const TempDir& dir)
 {
@@ -368,20 +388,7 @@ TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
 #else
     ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
-    VtkDataSet tet;
-    tet.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    tet.polys.connectivity = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
-    tet.polys.offsets = {3, 6, 9, 12};
-    tet.pointData = {{"pressure", "Float32", 1, {0.1, 0.2, 0.3, 0.4}}};
-    VtkXmlLayout layout;
-    layout.format = VtkXmlLayout::Ascii;
-    writeFile(dir.file("tet.vtp"), vtpText(tet, layout));
-    writeFile(dir.file("mixed.pvd"),
-              "<VTKFile type=\"Collection\"><Collection>\n<DataSet timestep=\"0\" file=\"" +
-                  sharedMesh("vtk/artery_series/artery_t0200.vtp") + "\"/>\n<DataSet timestep=\"1\" file=\"tet.vtp\"/>\n" +
-                  "<DataSet timestep=\"2\" file=\"" + sharedMesh("vtk/artery_series/artery_t0400.vtp") +
-                  "\"/>\n</Collection></VTKFile>\n");
-    const RunResult run = runViewer("'" + dir.file("mixed.pvd") + "' --width 128 --height 128 --volume-res 64 --frames 1 --no-legend " +
+    const RunResult run = runViewer("'" + writeMixedSeries(dir) + "' --width 128 --height 128 --volume-res 64 --frames 1 --no-legend " +
                                         "--screenshot '" + dir.file("gpu.png") + "' --region-png '" +
                                         dir.file("region.png") + "' --cache-dir '" + dir.path() + "'",
                                     true, dir);
@@ -564,6 +571,50 @@ TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
     EXPECT_GE(pictureX, width) << "the picture lies right of the panel, not under it";
     EXPECT_EQ(pictureHeight, 800);
     EXPECT_GE(pictureWidth, 500) << "what the panel and the colour bar leave";
+#endif
+}
+
+// --play (the panel's play button) shows the series' steps one after the other, from the first to
+// the last, and stops there: --ui-screenshot waits for it. A step of other geometry keeps the next
+// waiting until its volume is loaded. One surface has nothing to play.
+TEST(Viewer, PlayShowsEveryStepInTurnAndStopsAtTheLast)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    auto play = [&](const std::string& series) {
+        return runViewer("'" + series + "' --volume-res 64 --stable-shift 0.2 --play --play-rate 30 --frames 2 " +
+                             "--cache-dir '" + dir.path() + "' --ui-screenshot '" + dir.file("window.png") + "'",
+                         true, dir);
+    };
+    // True when each of the lines appears in the output after the one before.
+    auto inTurn = [](const std::string& output, const std::vector<std::string>& lines) {
+        std::size_t at = 0;
+        for (const std::string& line : lines) {
+            at = output.find(line, at);
+            if (at == std::string::npos) return false;
+            ++at;
+        }
+        return true;
+    };
+    const RunResult same = play(sharedMesh("vtk/artery_series/artery.pvd"));
+    ASSERT_EQ(same.status, 0) << same.output;
+    EXPECT_TRUE(inTurn(same.output, {"step 2/5 ", "step 3/5 ", "step 4/5 ", "step 5/5 ", "wrote " + dir.file("window.png")}))
+        << "every step in turn, the screenshot after the last\n" << same.output;
+
+    const RunResult mixed = play(writeMixedSeries(dir));
+    ASSERT_EQ(mixed.status, 0) << mixed.output;
+    EXPECT_TRUE(inTurn(mixed.output, {"step 2/3 (tet.vtp): other geometry", "inversevis-view: volume ",
+                                      "step 3/3 (artery_t0400.vtp): other geometry", "inversevis-view: volume ",
+                                      "wrote " + dir.file("window.png")}))
+        << "each step's volume loaded before the next step\n" << mixed.output;
+
+    const RunResult one = runViewer("scene:sphere --play --ui-screenshot '" + dir.file("one.png") + "'", false, dir);
+    EXPECT_EQ(one.status, 2) << one.output;
+    EXPECT_NE(one.output.find("--play: scene:sphere is one surface, not a time series"), std::string::npos) << one.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("one.png")));
 #endif
 }
 
