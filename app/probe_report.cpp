@@ -34,6 +34,23 @@ std::optional<std::size_t> fileCell(const core::SurfaceField& field, int triangl
     return field.triangleCells.empty() ? t : std::size_t(field.triangleCells[t]);
 }
 
+/// "; its ray starts 0.57 across its ring at speed 2.3 (bend 0.41, stable_shift 0.8)", or for a ray
+/// not drawn "; its ray from 0.91 across its ring at speed 2.48 is not drawn: its landing is unstable
+/// (bend 1.37, stable_shift 0.8)" (a hull-exit seed has no ring, a seed refused unlaunched no speed).
+std::string launchText(const ProbeReport& report)
+{
+    const render::ProbedLaunch& launch = *report.probe.launch;
+    auto hundredths = [](float value) { return sixDigits(std::round(value * 100.0) / 100.0); };
+    std::string text = "; its ray";
+    if (launch.ring) text += (launch.refusal ? " from " : " starts ") + hundredths(*launch.ring) + " across its ring";
+    if (launch.speed) text += (launch.ring || launch.refusal ? " at speed " : " starts at speed ") + hundredths(*launch.speed);
+    if (launch.refusal) text += std::string(" is not drawn: ") + launch.refusal;
+    if (launch.bend > 0.0f && !report.ruleName.empty())
+        text += " (bend " + sixDigits(std::round(launch.bend * 1000.0) / 1000.0) + ", " + report.ruleName + " " +
+                sixDigits(report.rule) + ")";
+    return text;
+}
+
 }  // namespace
 
 glm::ivec2 parseProbePixel(const std::string& text, int width, int height)
@@ -66,6 +83,8 @@ ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPt
     const render::SurfacePoint& point = report.probe.mapping.point;
     if (point.valid())
         report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);
+    report.ruleName = method->info().readabilityParameter;
+    if (!report.ruleName.empty()) report.rule = method->values().at(report.ruleName)[0];
     return report;
 }
 
@@ -73,6 +92,15 @@ nlohmann::json probeJson(const ProbeReport& report, const core::SurfaceField& fi
 {
     nlohmann::json json = {{"pixel", {report.pixel.x, report.pixel.y}},
                            {"region", regionName(report.probe.mapping.region)}};
+    if (const std::optional<render::ProbedLaunch>& launch = report.probe.launch) {
+        const glm::dvec3 seed = field.normalization.meshFromNormalized(glm::dvec3(launch->seed));
+        json["launch"] = {{"seed", {seed.x, seed.y, seed.z}},
+                          {"ring", launch->ring ? nlohmann::json(*launch->ring) : nlohmann::json()},
+                          {"speed", launch->speed ? nlohmann::json(*launch->speed) : nlohmann::json()},
+                          {"bend", launch->bend},
+                          {"drawn", !launch->refusal},
+                          {"refusal", launch->refusal ? nlohmann::json(launch->refusal) : nlohmann::json()}};
+    }
     const render::SurfacePoint& point = report.probe.mapping.point;
     if (!point.valid()) return json;
     const glm::dvec3 position = field.normalization.meshFromNormalized(glm::dvec3(point.position));
@@ -89,7 +117,7 @@ std::string probeLine(const ProbeReport& report, const core::SurfaceField& field
     std::string line = "pixel " + std::to_string(report.pixel.x) + "," + std::to_string(report.pixel.y) + ": " +
                        regionName(report.probe.mapping.region);
     const render::SurfacePoint& point = report.probe.mapping.point;
-    if (!point.valid()) return line;
+    if (!point.valid()) return report.probe.launch ? line + launchText(report) : line;
     if (field.hasScalar())
         line += ", " + field.name + " " +
                 (std::isnan(report.probe.scalar) ? std::string("none (NaN or a cap)") : sixDigits(report.probe.scalar));
@@ -100,7 +128,7 @@ std::string probeLine(const ProbeReport& report, const core::SurfaceField& field
     line += report.view ? "; seen directly from --theta " + sixDigits(std::round(report.view->x * 10.0) / 10.0) +
                               " --phi " + sixDigits(std::round(report.view->y * 10.0) / 10.0)
                         : "; no view from outside sees it directly";
-    return line;
+    return report.probe.launch ? line + launchText(report) : line;
 }
 
 }  // namespace ivis::app

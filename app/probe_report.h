@@ -23,6 +23,8 @@ struct ProbeReport {
     glm::ivec2 pixel{0};             ///< column and row of the picture, from its top left
     render::PixelProbe probe;        ///< what the pixel's centre shows
     std::optional<glm::dvec2> view;  ///< theta and phi (degrees) of a view that sees the point head-on (facingView)
+    std::string ruleName;            ///< the method's rule for drawing rays (MethodInfo::readabilityParameter; "" for none)
+    float rule = 0.0f;               ///< its value
 };
 
 /// @brief Parses --probe's "X,Y", a pixel of a @a width x @a height picture.
@@ -34,13 +36,17 @@ glm::ivec2 parseProbePixel(const std::string& text, int width, int height);
 ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPtr& method,
                         const core::Camera& camera, int width, int height, const glm::ivec2& pixel);
 
-/// @brief {"pixel", "region" ("background", "direct", "indirect"), and for a point: "position"
+/// @brief {"pixel", "region" ("background", "direct", "indirect"), for a point: "position"
 ///        (mesh units), "cell" (the file's cell; null on a cap over a hole), "scalar" (null for
-///        none), "view" ({"theta", "phi"} or null)}.
+///        none), "view" ({"theta", "phi"} or null), and for a curved ray's pixel: "launch" ({"seed"
+///        (mesh units), "ring" (null but for closest-approach seeds), "speed" (null for a seed
+///        refused before its launch), "bend", "drawn", "refusal" (why not drawn; null when drawn)})}.
 nlohmann::json probeJson(const ProbeReport& report, const core::SurfaceField& field);
 
 /// @brief One line, e.g. "pixel 512,130: indirect, pressure_t200 0.613 at (12.1, -4.5, 6.7), cell 4711;
-///        seen directly from --theta 112.4 --phi -40.2" (the position in the mesh's own units).
+///        seen directly from --theta 112.4 --phi -40.2; its ray starts 0.57 across its ring at speed
+///        2.3 (bend 0.41, stable_shift 0.8)" (the position in the mesh's own units); a background
+///        pixel whose ray is not drawn says why.
 std::string probeLine(const ProbeReport& report, const core::SurfaceField& field);
 
 }  // namespace ivis::app

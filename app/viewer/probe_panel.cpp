@@ -28,7 +28,7 @@ std::optional<glm::dvec2> ProbePanel::widgets(const core::SurfaceField& field)
 {
     ImGui::TextUnformatted("probe: click the picture");
     if (!mReport) return std::nullopt;
-    ImGui::TextUnformatted(probeLine(*mReport, field).c_str());
+    ImGui::TextWrapped("%s", probeLine(*mReport, field).c_str());
     if (!mReport->view) return std::nullopt;
     const bool pressed = ImGui::Button("turn to it");
     if (ImGui::IsItemHovered())

@@ -1,5 +1,6 @@
 #include <ivis/render/pixel_probe.h>
 
+#include <ivis/render/curved_ray_method.h>
 #include <ivis/render/screen_map.h>
 #include <ivis/render/surface_point.h>
 
@@ -29,6 +30,20 @@ PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const c
         const glm::vec3 normal = triangleNormal(scene.mesh(), probe.mapping.point.triangle);
         probe.facing = glm::dot(normal, probe.mapping.arrival) > 0.0f ? -normal : normal;
     }
+    const CurvedRayMap* rays = map.curvedRays();
+    if (!rays || probe.mapping.region == Region::Direct) return probe;
+    CurvedRayStart start;
+    if (!rays->start(x, y, sampler, start) && !start.refusal) return probe;  // no seed: outside the hull
+    const CurvedRayMethod& curved = *method->curved();
+    ProbedLaunch& launch = probe.launch.emplace();
+    launch.seed = start.seed;
+    if (curved.seedRule() == SeedRule::ClosestApproach) launch.ring = start.ring;
+    const float speed = glm::length(curved.launchVelocity(start, 0));
+    if (speed > 0.0f || !start.refusal) launch.speed = speed;  // a seed refused before its launch has none
+    launch.bend = start.bend;
+    // A ray the method launched but that did not land shows the background too.
+    launch.refusal = start.refusal ? start.refusal
+                                   : probe.mapping.region == Region::Indirect ? nullptr : "its ray does not land";
     return probe;
 }
 

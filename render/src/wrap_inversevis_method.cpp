@@ -66,10 +66,16 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     const float voxel = scene.distance().voxelSize();
     float radius = localRadiusNear(scene, start.seed - distance * outward, 2.0 * voxel);
     if (radius < 0.0f) radius = localRadiusNear(scene, start.seed, 1.01 * distance + voxel);
-    if (radius < 0.0f) return false;
+    if (radius < 0.0f) {
+        start.refusal = "no surface near its seed";
+        return false;
+    }
     const float width = std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
     start.ring = distance / width;
-    if (!(start.ring < 1.0f)) return false;
+    if (!(start.ring < 1.0f)) {
+        start.refusal = "beyond its ring";
+        return false;
+    }
 
     // The launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
     // tangential to the hull, tilted outward by tilt t.
@@ -89,15 +95,18 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
                               rays.epsilon());
     };
     const CurvedRayEnd here = traceAt(0.0f);
-    if (!here.landed) return false;
     const float step = std::min(kNeighbourStep, distance);  // the inner seed stays off the surface
-    const CurvedRayEnd inner = traceAt(-step);
-    if (!inner.landed) return false;
-    const CurvedRayEnd outer = traceAt(step);
-    if (!outer.landed) return false;
+    const CurvedRayEnd inner = here.landed ? traceAt(-step) : CurvedRayEnd{};
+    const CurvedRayEnd outer = inner.landed ? traceAt(step) : CurvedRayEnd{};
+    if (!outer.landed) {
+        start.refusal = here.landed ? "a neighbouring pixel's ray does not land" : "its ray does not land";
+        return false;
+    }
     start.bend = glm::length(inner.position + outer.position - 2.0f * here.position);
     start.traced = here;  // the ray drawn: launchVelocity(start, 0) from the seed, as traced here
-    return start.bend <= mLaunch.stableShift;
+    const bool stable = start.bend <= mLaunch.stableShift;
+    if (!stable) start.refusal = "its landing is unstable";
+    return stable;
 }
 
 glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const

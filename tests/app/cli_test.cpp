@@ -740,20 +740,32 @@ TEST_F(Cli, RenderProbeTellsWhatAPixelShowsAndAViewThatShowsItDirectly)
     const nlohmann::json reports = nlohmann::json::parse(std::ifstream(output("p.json"))).at("probes");
     ASSERT_EQ(reports.size(), 64u);
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 64) << result.out;
-    EXPECT_EQ(result.out.rfind("pixel 0,32: background\n", 0), 0u) << result.out;
+    EXPECT_EQ(result.out.rfind("pixel 0,32: background; its ray from ", 0), 0u) << "the margin's rays do not land\n"
+                                                                             << result.out;
 
     const core::Similarity units = core::readExrMeshUnits(output("p.exr"));
     std::vector<std::vector<float>> layers;
     for (const char* name : {"region", "P.X", "P.Y", "P.Z", "scalar"}) layers.push_back(core::readExrChannel(output("p.exr"), name));
     std::optional<glm::dvec3> farSide;  // a point of the rings on the sphere's far half, in normalised units
     nlohmann::json farReport;
-    int indirect = 0;
+    int indirect = 0, refused = 0;
     for (int x = 0; x < 64; ++x) {
         const nlohmann::json& report = reports[std::size_t(x)];
         const std::size_t i = 32u * 64u + std::size_t(x);
         EXPECT_EQ(report.at("pixel"), nlohmann::json({x, 32}));
         const char* regions[] = {"background", "direct", "indirect"};
         ASSERT_EQ(report.at("region"), regions[int(layers[0][i])]) << x;
+        // A ray drawn tells where it starts; a ray not drawn, why (the direct part has none).
+        if (layers[0][i] == 2.0f) {
+            EXPECT_EQ(report.at("launch").at("drawn"), true) << x;
+            EXPECT_TRUE(report.at("launch").at("refusal").is_null()) << x;
+            EXPECT_LT(report.at("launch").at("ring").get<double>(), 1.0) << x;
+        } else if (report.contains("launch")) {
+            EXPECT_EQ(layers[0][i], 0.0f) << x;
+            EXPECT_EQ(report.at("launch").at("drawn"), false) << x;
+            EXPECT_TRUE(report.at("launch").at("refusal").is_string()) << x;
+            ++refused;
+        }
         if (layers[0][i] == 0.0f) {
             EXPECT_FALSE(report.contains("position")) << x;
             continue;
@@ -768,6 +780,7 @@ TEST_F(Cli, RenderProbeTellsWhatAPixelShowsAndAViewThatShowsItDirectly)
         if (layers[0][i] == 2.0f && drawn.z < -0.3) farSide = drawn, farReport = report;
     }
     EXPECT_GT(indirect, 4);
+    EXPECT_GT(refused, 0) << "the picture's margin: rays that do not land";
     ASSERT_TRUE(farSide.has_value()) << "the rings show the far half";
 
     // The view it names shows the point in its direct part.

@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace ivis::render {
 namespace {
@@ -78,6 +80,73 @@ TEST(PixelProbe, AnIndirectPixelShowsWhatTheRendererDrawsThereAndAViewFromBehind
         ++probed;
     }
     EXPECT_GT(probed, 4);
+}
+
+// A curved ray's pixel tells where its ray starts and, where the method draws none, why: across a
+// wrapped picture of the sphere every drawn ray starts inside its ring at the launch's speed
+// 2.5 t (2 - t), a seed beyond its ring is refused as such, and a rule tighter than the rays'
+// bends refuses them as unstable.
+TEST(PixelProbe, ACurvedRaysPixelTellsWhereItsRayStartsAndWhyItIsNotDrawn)
+{
+    const RenderScene& scene = *test::sphereScene().scene;
+    const int size = 160;
+    // Rings 0.3 wide (0.3 radii of the unit sphere) inside the hull 0.6 wide: the seeds between lie beyond them.
+    const MethodPtr method = makeMethod("inversevis-wrap", {{"ring_scale", {0.3f}}});
+    core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
+    camera.fovYDeg = 80.0;  // beyond the hull (radius 1.6) at the picture's edge
+    const float rule = method->values().at("stable_shift")[0];
+    int drawn = 0, beyond = 0;
+    float largestBend = 0.0f;
+    std::vector<int> drawnColumns;
+    for (int x = 0; x < size; ++x) {
+        const PixelProbe probe = probePixel(scene, method, camera, size, size, x + 0.5, size / 2 + 0.5);
+        if (probe.mapping.region == Region::Direct) {
+            EXPECT_FALSE(probe.launch.has_value()) << x;
+            continue;
+        }
+        if (!probe.launch) {
+            EXPECT_EQ(probe.mapping.region, Region::Background) << x;
+            continue;
+        }
+        const ProbedLaunch& launch = *probe.launch;
+        ASSERT_TRUE(launch.ring.has_value()) << x;
+        const float t = *launch.ring;
+        EXPECT_GE(t, 0.0f) << x;
+        EXPECT_GT(glm::length(launch.seed), 0.99f) << x << ": seeded outside the sphere";
+        if (probe.mapping.region == Region::Indirect) {
+            EXPECT_EQ(launch.refusal, nullptr) << x;
+            EXPECT_LT(t, 1.0f) << x;
+            ASSERT_TRUE(launch.speed.has_value()) << x;
+            EXPECT_NEAR(*launch.speed, 2.5f * t * (2.0f - t), 1e-4f) << x;
+            EXPECT_LE(launch.bend, rule) << x;
+            largestBend = std::max(largestBend, launch.bend);
+            drawnColumns.push_back(x);
+            ++drawn;
+        } else {
+            ASSERT_NE(launch.refusal, nullptr) << x;
+            if (std::string(launch.refusal) == "beyond its ring") {
+                EXPECT_GE(t, 1.0f) << x;
+                EXPECT_FALSE(launch.speed.has_value()) << x << ": refused before its launch";
+                ++beyond;
+            }
+        }
+    }
+    EXPECT_GT(drawn, 8);
+    EXPECT_GT(beyond, 0) << "the picture's margin lies beyond the rings";
+
+    // Under a rule tighter than the largest bend drawn, that ray is refused as unstable.
+    ASSERT_GT(largestBend, 0.0002f);
+    const MethodPtr tight = makeMethod("inversevis-wrap", {{"ring_scale", {0.3f}}, {"stable_shift", {0.5f * largestBend}}});
+    int unstable = 0;
+    for (int x : drawnColumns) {
+        const PixelProbe probe = probePixel(scene, tight, camera, size, size, x + 0.5, size / 2 + 0.5);
+        if (probe.mapping.region != Region::Background) continue;
+        ASSERT_TRUE(probe.launch.has_value()) << x;
+        EXPECT_STREQ(probe.launch->refusal, "its landing is unstable") << x;
+        EXPECT_GT(probe.launch->bend, 0.5f * largestBend) << x;
+        ++unstable;
+    }
+    EXPECT_GT(unstable, 0);
 }
 
 TEST(FacingView, APointInsideAClosedSurfaceHasNoView)

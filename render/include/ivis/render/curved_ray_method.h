@@ -25,6 +25,8 @@ struct CurvedRayStart {
     /// The end of the first launch's ray where aim() traced it already (the wrap's stability
     /// rule does), set only where that end is final: CurvedRayMap::traceMany() takes it as it is.
     std::optional<CurvedRayEnd> traced;
+    /// Why aim() gives the pixel no ray, in words ("beyond its ring"), where it refuses one (a probe says it).
+    const char* refusal = nullptr;
 };
 
 /// @brief Where on its view ray a curved ray starts.

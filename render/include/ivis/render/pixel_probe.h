@@ -17,6 +17,17 @@
 
 namespace ivis::render {
 
+/// @brief How a curved-ray method starts a pixel's ray, and whether it draws it.
+struct ProbedLaunch {
+    glm::vec3 seed{0.0f};      ///< where the ray starts (normalised units)
+    std::optional<float> ring;  ///< where across its ring the seed lies, 0 at the silhouette to 1 at the
+                                ///< ring's outer edge (closest-approach seeds only: inversevis-wrap)
+    std::optional<float> speed;  ///< the first launch velocity's length (inversevis-wrap: its alpha); none
+                                 ///< for a seed refused before its launch
+    float bend = 0.0f;         ///< the stability rule's measure (inversevis-wrap; 0 where not measured)
+    const char* refusal = nullptr;  ///< why the method draws no ray here (CurvedRayStart::refusal); null: drawn
+};
+
 /// @brief What one pixel shows.
 struct PixelProbe {
     PixelMapping mapping;  ///< the region and the surface point (normalised units), as the renderer maps the pixel
@@ -24,6 +35,8 @@ struct PixelProbe {
     /// The unit normal of the side of the surface the pixel shows: the point's triangle normal,
     /// turned against the direction the point is seen along (zero for the background).
     glm::vec3 facing{0.0f};
+    /// A curved-ray method's ray of a pixel whose view ray misses the surface and meets the hull.
+    std::optional<ProbedLaunch> launch;
 };
 
 /// @brief What continuous pixel position (x, y) (pixel centres at +0.5, from the top left) of a
