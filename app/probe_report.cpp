@@ -41,10 +41,11 @@ std::string launchText(const ProbeReport& report)
 {
     const render::ProbedLaunch& launch = *report.probe.launch;
     auto hundredths = [](float value) { return sixDigits(std::round(value * 100.0) / 100.0); };
-    std::string text = "; its ray";
-    if (launch.ring) text += (launch.refusal ? " from " : " starts ") + hundredths(*launch.ring) + " across its ring";
-    if (launch.speed) text += (launch.ring || launch.refusal ? " at speed " : " starts at speed ") + hundredths(*launch.speed);
-    if (launch.refusal) text += std::string(" is not drawn: ") + launch.refusal;
+    const std::string where = launch.ring ? " " + hundredths(*launch.ring) + " across its ring" : "";
+    const std::string speed = launch.speed ? " at speed " + hundredths(*launch.speed) : "";
+    std::string text = launch.refusal ? "; its ray" + (where.empty() ? "" : " from" + where) + speed +
+                                            " is not drawn: " + launch.refusal
+                                      : "; its ray starts" + where + speed;
     if (launch.bend > 0.0f && !report.ruleName.empty())
         text += " (bend " + sixDigits(std::round(launch.bend * 1000.0) / 1000.0) + ", " + report.ruleName + " " +
                 sixDigits(report.rule) + ")";
