@@ -3,7 +3,7 @@
 # method (the wrapped InverseVis) to a PNG and says where it is.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
-ivis_build
+IVIS_TARGETS=inversevis ivis_build  # the command-line tool alone: no tests, viewer or benchmarks
 out="$IVIS_ROOT/demo"
 mkdir -p "$out"
 "$IVIS_BUILD/app/inversevis" render scene:vessel-tree --res 1000x1000 \

@@ -43,11 +43,14 @@ ivis_install_packages() {
   apt-get install -y -qq --no-install-recommends $missing >/dev/null
 }
 
+# Configures build/ (cmake arguments in "$@") and builds it: every target, or only the targets
+# named in IVIS_TARGETS (space-separated).
 ivis_build() {
-  local jobs
+  local jobs targets=()
   jobs=$(nproc 2>/dev/null || echo 2)
   cmake -S "$IVIS_ROOT" -B "$IVIS_BUILD" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-  cmake --build "$IVIS_BUILD" -j "$jobs"
+  for t in ${IVIS_TARGETS:-}; do targets+=(--target "$t"); done
+  cmake --build "$IVIS_BUILD" -j "$jobs" "${targets[@]}"
 }
 
 ivis_install_packages

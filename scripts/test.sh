@@ -21,5 +21,10 @@ if [ "$SANITIZE" = 1 ]; then
 else
   ivis_build
 fi
+shared=${IVIS_SHARED_DIR:-$IVIS_ROOT/../shared}
+if [ ! -d "$shared/meshes" ]; then
+  echo "inversevis: $shared/meshes is missing (the project's shared meshes; IVIS_SHARED_DIR names another" \
+    "folder): every test that reads them fails, naming the file" >&2
+fi
 cd "$IVIS_BUILD"
 ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" "$@"
