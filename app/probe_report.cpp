@@ -76,11 +76,12 @@ glm::ivec2 parseProbePixel(const std::string& text, int width, int height)
 }
 
 ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPtr& method,
-                        const core::Camera& camera, int width, int height, const glm::ivec2& pixel)
+                        const core::Camera& camera, int width, int height, const glm::ivec2& pixel,
+                        const render::AdaptiveSampling& sampling)
 {
     ProbeReport report;
     report.pixel = pixel;
-    report.probe = render::probePixel(scene, method, camera, width, height, pixel.x + 0.5, pixel.y + 0.5);
+    report.probe = render::probePixel(scene, method, camera, width, height, pixel.x + 0.5, pixel.y + 0.5, sampling);
     const render::SurfacePoint& point = report.probe.mapping.point;
     if (point.valid())
         report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);

@@ -34,7 +34,8 @@ glm::ivec2 parseProbePixel(const std::string& text, int width, int height);
 /// @brief Probes the centre of @a pixel of a @a width x @a height picture of @a method from
 ///        @a camera, and finds the view that sees its point head-on.
 ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPtr& method,
-                        const core::Camera& camera, int width, int height, const glm::ivec2& pixel);
+                        const core::Camera& camera, int width, int height, const glm::ivec2& pixel,
+                        const render::AdaptiveSampling& sampling = {});
 
 /// @brief {"pixel", "region" ("background", "direct", "indirect"), for a point: "position"
 ///        (mesh units), "cell" (the file's cell; null on a cap over a hole), "scalar" (null for

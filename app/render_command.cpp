@@ -288,6 +288,9 @@ Command addRenderCommand(CLI::App& app)
                                       {"pixels_direct", s.pixelsDirect},
                                       {"pixels_indirect", s.pixelsIndirect},
                                       {"pixels_background", s.pixelsBackground},
+                                      {"seeds_interpolated", s.seedsInterpolated},
+                                      {"pixels_skipped", s.pixelsSkipped},
+                                      {"full_trace", !renderOptions.adaptive.enabled},
                                       {"rays_launched", s.raysLaunched},
                                       {"rays_landed", s.raysLanded},
                                       {"mean_steps", s.meanSteps()},
@@ -318,7 +321,8 @@ Command addRenderCommand(CLI::App& app)
         std::string probeLines;  // said once the outputs are in place
         for (const glm::ivec2& pixel : probePixels) {
             const ProbeReport report =
-                probeReport(scene, renderOptions.method, camera, renderOptions.width, renderOptions.height, pixel);
+                probeReport(scene, renderOptions.method, camera, renderOptions.width, renderOptions.height, pixel,
+                            renderOptions.adaptive);
             stats["probes"].push_back(probeJson(report, field));
             probeLines += probeLine(report, field) + "\n";
         }

@@ -48,6 +48,9 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (supersampling)")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
+    command.add_flag("--full-trace", fullTrace,
+                     "Trace every pixel's curved ray (slower) instead of tracing a lattice refined where the landings "
+                     "are not smooth and interpolating between (docs/rendering.md, \"Adaptive image sampling\")");
     method.addTo(command);
     std::string names;
     for (const std::string& name : core::colormapNames()) names += (names.empty() ? "" : ", ") + name;
@@ -166,6 +169,7 @@ render::RenderOptions ViewOptions::renderOptions() const
     if (!parsePictureSize(resolution, options.width, options.height))
         throw InputError("--res '" + resolution + "': expected WIDTHxHEIGHT, e.g. 1000x1000 (1 to 32768 each)");
     options.samplesPerPixel = samplesPerPixel;
+    options.adaptive.enabled = !fullTrace;
     options.method = method.create(view() ? view()->method.get() : nullptr);
     options.shading.colormap = colormap;
     core::colormap(colormap);  // validates the name

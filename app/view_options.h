@@ -33,6 +33,7 @@ struct ViewOptions {
     std::string viewFile;  ///< --view: camera, method, scalar and look from a view file (flags override)
     std::string resolution = "1000x1000";
     int samplesPerPixel = 1;
+    bool fullTrace = false;  ///< --full-trace: every pixel's curved ray traced, no adaptive image sampling
     MethodOptions method;
     std::string colormap = "viridis";
     std::vector<double> range;

@@ -22,7 +22,7 @@ ParameterValues AdaptiveInverseVisMethod::values() const
 
 glm::vec3 AdaptiveInverseVisMethod::launchVelocity(const CurvedRayStart& start, int launch) const
 {
-    return launchAlpha(mProfile, start, launch) * start.velocityPerAlpha;
+    return launchAlpha(mProfile, start, launch) * start.tangent;
 }
 
 bool AdaptiveInverseVisMethod::launchSensitivity(const CurvedRayStart& start, int launch,
@@ -32,7 +32,7 @@ bool AdaptiveInverseVisMethod::launchSensitivity(const CurvedRayStart& start, in
     const float alpha = mProfile.at(start.alignment);
     if (alpha <= 0.0f || alpha >= kMaxAlpha) return false;
     const double relaunchScale = double(launchAlpha(mProfile, start, launch) / alpha);
-    sensitivity.direction = start.velocityPerAlpha;
+    sensitivity.direction = start.tangent;
     sensitivity.perParameter.assign(mProfile.coefficients.size(), 0.0);
     double power = 1.0;
     for (double& d : sensitivity.perParameter) {

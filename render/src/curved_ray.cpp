@@ -122,25 +122,13 @@ void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, co
     }
 }
 
-bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
-                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance)
+namespace {
+
+/// The golden-section search for the least phi along origin + t direction within [lo, hi]: the
+/// parameter of a local minimum there (to 1e-5).
+float goldenMinimum(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction, float lo,
+                    float hi)
 {
-    float tEnter, tExit;
-    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
-    const float tolerance = 0.25f * sampler.field().voxelSize();
-    float best = hullOffset, tBest = tEnter;
-    // A coarse march first: its best sample bounds the minimum from above, so the fine march
-    // skips by phi - best from the start instead of creeping down the slope toward it.
-    for (float step : {16.0f * tolerance, tolerance})
-        for (float t = tEnter; t < tExit;) {
-            const float phi = sampler.phi(origin + t * direction);
-            if (phi < best) best = phi, tBest = t;
-            // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
-            t += std::max(phi - best, step);
-        }
-    if (!(best < hullOffset)) return false;
-    // Golden-section search for the minimum around the best sample.
-    float lo = std::max(tEnter, tBest - 2.0f * tolerance), hi = std::min(tExit, tBest + 2.0f * tolerance);
     // Each step keeps one inner point of the last (it lies at the golden ratio of the new interval).
     const float ratio = 0.6180340f;
     float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
@@ -156,12 +144,20 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
             phiB = sampler.phi(origin + b * direction);
         }
     }
+    return 0.5f * (lo + hi);
+}
+
+/// The seed of findClosestApproach from the valley's bottom @a tMin within [tEnter, tExit]: the
+/// centre of the valley round it.
+bool valleyCentre(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction, float hullOffset,
+                  float tEnter, float tExit, float tMin, glm::vec3& seed, float& distance)
+{
     // The seed: the centre of the valley round that minimum, where phi stays within a voxel of it
     // (each sample weighted by how far below that it lies). Where a view ray skims a surface (a
     // concave crease, a flat face) phi barely rises along it, and its lowest point jumps from
     // pixel to pixel between the voxel-sized bumps of the trilinear field: the rings there showed
     // flames of the surface behind. The valley's centre moves continuously with the ray.
-    const float tMin = 0.5f * (lo + hi);
+    const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
     const float phiMin = sampler.phi(origin + tMin * direction);
     const float depth = kClosestApproachValley * sampler.field().voxelSize();
     float weights = 0.0f, weighted = 0.0f;
@@ -177,6 +173,46 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     seed = origin + (weights > 0.0f ? weighted / weights : tMin) * direction;
     distance = sampler.phi(seed);
     return distance < hullOffset;
+}
+
+}  // namespace
+
+bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance, float* bottom)
+{
+    float tEnter, tExit;
+    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
+    const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
+    float best = hullOffset, tBest = tEnter;
+    // A coarse march first: its best sample bounds the minimum from above, so the fine march
+    // skips by phi - best from the start instead of creeping down the slope toward it.
+    for (float step : {kClosestApproachCoarseSteps * tolerance, tolerance})
+        for (float t = tEnter; t < tExit;) {
+            const float phi = sampler.phi(origin + t * direction);
+            if (phi < best) best = phi, tBest = t;
+            // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
+            t += std::max(phi - best, step);
+        }
+    if (!(best < hullOffset)) return false;
+    // Golden-section search for the minimum around the best sample.
+    const float tMin = goldenMinimum(sampler, origin, direction, std::max(tEnter, tBest - 2.0f * tolerance),
+                                     std::min(tExit, tBest + 2.0f * tolerance));
+    if (bottom) *bottom = tMin;
+    return valleyCentre(sampler, origin, direction, hullOffset, tEnter, tExit, tMin, seed, distance);
+}
+
+bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                             float hullOffset, const core::Bounds3& hullBox, float bottomGuess, float reach,
+                             glm::vec3& seed, float& distance, float* bottom)
+{
+    float tEnter, tExit;
+    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
+    const float within = reach + 2.0f * kClosestApproachSpacing * sampler.field().voxelSize();
+    const float lo = std::max(tEnter, bottomGuess - within), hi = std::min(tExit, bottomGuess + within);
+    if (!(lo < hi)) return false;
+    const float tMin = goldenMinimum(sampler, origin, direction, lo, hi);
+    if (bottom) *bottom = tMin;
+    return valleyCentre(sampler, origin, direction, hullOffset, tEnter, tExit, tMin, seed, distance);
 }
 
 glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirection, float alpha)

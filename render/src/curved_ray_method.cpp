@@ -2,10 +2,25 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
 namespace ivis::render {
+
+const char* describe(Refusal refusal)
+{
+    switch (refusal) {
+    case Refusal::None: return nullptr;
+    case Refusal::NoSeed: return "no seed: its view ray does not come within the hull";
+    case Refusal::NoSurfaceNearSeed: return "no surface near its seed";
+    case Refusal::BeyondRing: return "beyond its ring";
+    case Refusal::DoesNotLand: return "its ray does not land";
+    case Refusal::NeighbourDoesNotLand: return "a neighbouring pixel's ray does not land";
+    case Refusal::Unstable: return "its landing is unstable";
+    }
+    return nullptr;
+}
 
 std::vector<ParameterSpec> curvedRaySpecs(const CurvedRayParams& defaults)
 {
@@ -53,32 +68,106 @@ bool CurvedRayMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sample
 {
     const glm::vec3 direction(ray.direction);
     const float hullOffset = mMethod.rayParams().hullOffset;
-    if (mMethod.seedRule() == SeedRule::ClosestApproach) {
-        float distance;
-        if (!findClosestApproach(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed, distance))
-            return false;
-        start.ring = distance / hullOffset;
-    } else if (!findHullExit(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed)) {
+    const bool seeded =
+        mMethod.seedRule() == SeedRule::ClosestApproach
+            ? findClosestApproach(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed,
+                                  start.seedDistance, &start.valleyBottom)
+            : findHullExit(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed);
+    if (!seeded) {
+        start.refusal = Refusal::NoSeed;
         return false;
     }
+    start.rayParameter = glm::dot(start.seed - glm::vec3(ray.origin), direction);
     return aimFromSeed(direction, sampler, start);
+}
+
+bool CurvedRayMap::aimedStartNear(double x, double y, float bottomGuess, float reach, DistanceField::Sampler& sampler,
+                                  CurvedRayStart& start) const
+{
+    const core::CameraRay ray = mFrame.ray(x, y);
+    const glm::vec3 origin(ray.origin), direction(ray.direction);
+    if (!findClosestApproachNear(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomGuess,
+                                 reach, start.seed, start.seedDistance, &start.valleyBottom)) {
+        start.refusal = Refusal::NoSeed;
+        return false;
+    }
+    start.rayParameter = glm::dot(start.seed - origin, direction);
+    return aimFromSeed(direction, sampler, start);
+}
+
+float CurvedRayMap::pixelFootprint(const glm::vec3& p) const
+{
+    const double perUnit = 2.0 * mFrame.imagePlaneHalfHeight() / mFrame.height();
+    const core::Camera& camera = mFrame.camera();
+    return float(camera.orthographic ? perUnit : perUnit * glm::length(glm::dvec3(p) - camera.eye));
 }
 
 bool CurvedRayMap::aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
-    glm::vec3 gradient;
-    sampler.phiAndGradient(start.seed, gradient);
-    start.velocityPerAlpha = initialVelocity(gradient, direction, 1.0f);
-    const float length = glm::length(gradient);
-    start.alignment = length > 0.0f ? glm::dot(direction, gradient) / length : 0.0f;
+    start.seedDistance = sampler.phiAndGradient(start.seed, start.gradient);
+    start.tangent = initialVelocity(start.gradient, direction, 1.0f);
+    const float length = glm::length(start.gradient);
+    start.alignment = length > 0.0f ? glm::dot(direction, start.gradient) / length : 0.0f;
     return mMethod.aim(*this, start, sampler);
+}
+
+bool CurvedRayMap::aimedStart(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const
+{
+    return seedFromRay(mFrame.ray(x, y), sampler, start);
+}
+
+bool CurvedRayMap::hitsSurface(double x, double y) const
+{
+    const core::CameraRay ray = mFrame.ray(x, y);
+    return mScene.bvh().intersect(glm::vec3(ray.origin), glm::vec3(ray.direction)).hit();
 }
 
 bool CurvedRayMap::start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
-    const core::CameraRay ray = mFrame.ray(x, y);
-    if (mScene.bvh().intersect(glm::vec3(ray.origin), glm::vec3(ray.direction)).hit()) return false;
-    return seedFromRay(ray, sampler, start);
+    return !hitsSurface(x, y) && aimedStart(x, y, sampler, start) && isStable(start, sampler);
+}
+
+bool CurvedRayMap::isStable(CurvedRayStart& start, DistanceField::Sampler& sampler) const
+{
+    CurvedRayStart* one = &start;
+    bool stable = false;
+    areStable(&one, 1, sampler, &stable);
+    return stable;
+}
+
+void CurvedRayMap::areStable(CurvedRayStart* const* starts, std::size_t count, DistanceField::Sampler& sampler,
+                             bool* stable) const
+{
+    if (!mMethod.stabilityScale()) {  // no rule: every ray is drawn
+        std::fill(stable, stable + count, true);
+        return;
+    }
+    constexpr int kProbes = CurvedRayMethod::kMaxStabilityProbes;
+    // The own rays not traced yet, then the probes of those that landed, all traced together.
+    std::vector<CurvedRayStart> own;
+    std::vector<std::size_t> owner;
+    for (std::size_t i = 0; i < count; ++i)
+        if (!starts[i]->traced) own.push_back(*starts[i]), owner.push_back(i);
+    std::vector<CurvedRayTrace> ownTraces(own.size());
+    traceMany(own.data(), own.size(), sampler, ownTraces.data());
+    for (std::size_t k = 0; k < own.size(); ++k) starts[owner[k]]->traced = ownTraces[k].end;
+
+    std::vector<CurvedRayStart> probes;
+    std::vector<int> probeCount(count, 0);
+    CurvedRayStart buffer[kProbes];
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!starts[i]->traced->landed) continue;
+        probeCount[i] = mMethod.stabilityProbes(*starts[i], buffer);
+        probes.insert(probes.end(), buffer, buffer + probeCount[i]);
+    }
+    std::vector<CurvedRayTrace> probeTraces(probes.size());
+    traceMany(probes.data(), probes.size(), sampler, probeTraces.data());
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        CurvedRayEnd ends[kProbes];
+        for (int k = 0; k < probeCount[i]; ++k) ends[k] = probeTraces[next++].end;
+        stable[i] = mMethod.isStable(*starts[i], *starts[i]->traced, ends);
+    }
 }
 
 CurvedRayTrace CurvedRayMap::trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const
@@ -153,13 +242,11 @@ void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, Dista
 {
     std::vector<CurvedRayStart> starts;
     std::vector<std::size_t> pixels;  // the pixel of each start
-    auto keep = [&](std::size_t i, bool seeded, const CurvedRayStart& start) {
-        if (seeded) {
-            starts.push_back(start);
-            pixels.push_back(i);
-        } else {
-            mappings[i] = {};
-        }
+    auto keep = [&](std::size_t i, bool aimed, const CurvedRayStart& start) {
+        mappings[i] = {};
+        if (!aimed) return;
+        starts.push_back(start);
+        pixels.push_back(i);
     };
     if (mMethod.seedRule() == SeedRule::HullExit) {
         // Seed the pixels' rays together (findHullExits clears neighbouring rays at once).
@@ -175,6 +262,7 @@ void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, Dista
         for (std::size_t i = 0; i < count; ++i) {
             CurvedRayStart start;
             start.seed = seeds[i];
+            start.rayParameter = glm::dot(seeds[i] - origins[i], directions[i]);
             keep(i, found[i] && aimFromSeed(directions[i], sampler, start), start);
         }
     } else {
@@ -183,9 +271,18 @@ void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, Dista
             keep(i, seedFromRay(mFrame.ray(positions[i].x, positions[i].y), sampler, start), start);
         }
     }
-    std::vector<PixelMapping> landings(starts.size());
-    landingMany(starts.data(), starts.size(), sampler, landings.data());
-    for (std::size_t j = 0; j < starts.size(); ++j) mappings[pixels[j]] = landings[j];
+    // The stability rule on them all, then the landings of those it draws.
+    std::vector<CurvedRayStart*> judged(starts.size());
+    for (std::size_t j = 0; j < starts.size(); ++j) judged[j] = &starts[j];
+    std::unique_ptr<bool[]> stable(new bool[starts.size()]);
+    areStable(judged.data(), judged.size(), sampler, stable.get());
+    std::size_t drawn = 0;
+    for (std::size_t j = 0; j < starts.size(); ++j)
+        if (stable[j]) starts[drawn] = starts[j], pixels[drawn++] = pixels[j];
+    starts.resize(drawn);
+    std::vector<PixelMapping> landings(drawn);
+    landingMany(starts.data(), drawn, sampler, landings.data());
+    for (std::size_t j = 0; j < drawn; ++j) mappings[pixels[j]] = landings[j];
 }
 
 void CurvedRayMap::landingMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
@@ -213,7 +310,7 @@ PixelMapping CurvedRayMap::landing(const CurvedRayStart& start, DistanceField::S
 PixelMapping CurvedRayMap::map(double x, double y, DistanceField::Sampler& sampler) const
 {
     CurvedRayStart start;
-    if (!seedFromRay(mFrame.ray(x, y), sampler, start)) return {};
+    if (!seedFromRay(mFrame.ray(x, y), sampler, start) || !isStable(start, sampler)) return {};
     return landing(start, sampler);
 }
 

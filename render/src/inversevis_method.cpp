@@ -11,13 +11,13 @@ ParameterValues InverseVisMethod::values() const
 
 glm::vec3 InverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
 {
-    return mAlpha * start.velocityPerAlpha;
+    return mAlpha * start.tangent;
 }
 
 bool InverseVisMethod::launchSensitivity(const CurvedRayStart& start, int /*launch*/,
                                          LaunchSensitivity& sensitivity) const
 {
-    sensitivity.direction = start.velocityPerAlpha;
+    sensitivity.direction = start.tangent;
     sensitivity.perParameter = {1.0};
     return true;
 }

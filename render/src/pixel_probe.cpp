@@ -7,7 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ivis::render {
 namespace {
@@ -18,13 +20,21 @@ constexpr int kEyeCount = 4000;
 }  // namespace
 
 PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const core::Camera& camera, int width,
-                      int height, double x, double y)
+                      int height, double x, double y, const AdaptiveSampling& sampling)
 {
     const core::CameraFrame frame(camera, width, height);
     const ScreenMap map(scene, frame, method);
     DistanceField::Sampler sampler = scene.distance().sampler();
     PixelProbe probe;
-    probe.mapping = map.map(x, y, sampler);
+    // The pixel's tile, as the renderer maps it (renderer.cpp: tiles of kAdaptiveTileSize from the top left).
+    const int px = std::clamp(int(std::floor(x)), 0, width - 1), py = std::clamp(int(std::floor(y)), 0, height - 1);
+    PixelTile tile;
+    tile.x0 = px / kAdaptiveTileSize * kAdaptiveTileSize, tile.y0 = py / kAdaptiveTileSize * kAdaptiveTileSize;
+    tile.width = std::min(kAdaptiveTileSize, width - tile.x0), tile.height = std::min(kAdaptiveTileSize, height - tile.y0);
+    std::vector<PixelMapping> mappings(std::size_t(tile.width) * tile.height);
+    TileCounts counts;
+    map.mapTile(tile, {x - px, y - py}, sampling, sampler, mappings.data(), counts);
+    probe.mapping = mappings[std::size_t(py - tile.y0) * tile.width + (px - tile.x0)];
     probe.scalar = scalarAt(scene.field(), probe.mapping.point);
     if (probe.mapping.point.valid()) {
         const glm::vec3 normal = triangleNormal(scene.mesh(), probe.mapping.point.triangle);
@@ -33,17 +43,20 @@ PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const c
     const CurvedRayMap* rays = map.curvedRays();
     if (!rays || probe.mapping.region == Region::Direct) return probe;
     CurvedRayStart start;
-    if (!rays->start(x, y, sampler, start) && !start.refusal) return probe;  // no seed: outside the hull
+    // No launch to tell where the view ray hits the surface after all or does not come within the hull.
+    if (!rays->start(x, y, sampler, start) && (start.refusal == Refusal::None || start.refusal == Refusal::NoSeed))
+        return probe;
     const CurvedRayMethod& curved = *method->curved();
     ProbedLaunch& launch = probe.launch.emplace();
     launch.seed = start.seed;
-    if (curved.seedRule() == SeedRule::ClosestApproach) launch.ring = start.ring;
+    if (start.ring) launch.ring = start.ring->coordinate;
     const float speed = glm::length(curved.launchVelocity(start, 0));
-    if (speed > 0.0f || !start.refusal) launch.speed = speed;  // a seed refused before its launch has none
+    if (speed > 0.0f || start.refusal == Refusal::None) launch.speed = speed;  // a seed refused before its launch has none
     launch.bend = start.bend;
     // A ray the method launched but that did not land shows the background too.
-    launch.refusal = start.refusal ? start.refusal
-                                   : probe.mapping.region == Region::Indirect ? nullptr : "its ray does not land";
+    launch.refusal = start.refusal != Refusal::None                ? describe(start.refusal)
+                     : probe.mapping.region == Region::Indirect ? nullptr
+                                                                 : describe(Refusal::DoesNotLand);
     return probe;
 }
 

@@ -70,64 +70,73 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
     const float nan = std::numeric_limits<float>::quiet_NaN();
 
     std::mutex statsMutex;
-    std::atomic<int> rowsDone{0};
+    std::atomic<int> tilesDone{0};
     std::atomic<bool> cancelled{false};
+    const int tileSize = kAdaptiveTileSize;
+    const int columns = (options.width + tileSize - 1) / tileSize, rows = (options.height + tileSize - 1) / tileSize;
     if (interrupter) interrupter->start("render");
-    tbb::parallel_for(tbb::blocked_range<int>(0, options.height, 8), [&](const tbb::blocked_range<int>& rows) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, columns * rows), [&](const tbb::blocked_range<int>& tiles) {
         if (cancelled) return;
         DistanceField::Sampler sampler = scene.distance().sampler();
         RenderStats local;
-        std::vector<glm::dvec2> positions(std::size_t(options.width));
-        std::vector<PixelMapping> mappings(std::size_t(options.width));
-        std::vector<glm::vec4> colours(std::size_t(options.width));
-        for (int y = rows.begin(); y != rows.end(); ++y) {
+        TileCounts counts;
+        std::vector<PixelMapping> mappings(std::size_t(tileSize) * tileSize);
+        std::vector<glm::vec4> colours(mappings.size());
+        for (int t = tiles.begin(); t != tiles.end(); ++t) {
+            PixelTile tile;
+            tile.x0 = (t % columns) * tileSize, tile.y0 = (t / columns) * tileSize;
+            tile.width = std::min(tileSize, options.width - tile.x0), tile.height = std::min(tileSize, options.height - tile.y0);
             std::fill(colours.begin(), colours.end(), glm::vec4(0.0f));
             for (int k = 0; k < options.samplesPerPixel; ++k) {
-                const glm::dvec2 offset = sampleOffset(k);
-                for (int x = 0; x < options.width; ++x) positions[std::size_t(x)] = {x + offset.x, y + offset.y};
-                screen.mapMany(positions.data(), positions.size(), sampler, mappings.data());
-                for (int x = 0; x < options.width; ++x) {
-                    const PixelMapping& m = mappings[std::size_t(x)];
-                    const std::size_t index = std::size_t(y) * options.width + x;
-                    bool isNan = false;
-                    colours[std::size_t(x)] += shader.shade(m, sampler, isNan);
-                    if (m.launched) {
-                        ++local.raysLaunched;
-                        local.totalSteps += std::size_t(m.steps);
-                        if (m.region == Region::Indirect) ++local.raysLanded;
+                screen.mapTile(tile, sampleOffset(k), options.adaptive, sampler, mappings.data(), counts);
+                for (int y = 0; y < tile.height; ++y)
+                    for (int x = 0; x < tile.width; ++x) {
+                        const std::size_t inTile = std::size_t(y) * tile.width + x;
+                        const PixelMapping& m = mappings[inTile];
+                        const std::size_t index = std::size_t(tile.y0 + y) * options.width + tile.x0 + x;
+                        bool isNan = false;
+                        colours[inTile] += shader.shade(m, sampler, isNan);
+                        if (m.launched && m.region == Region::Indirect) ++local.raysLanded;
+                        if (k != 0) continue;
+                        const bool shown = m.region != Region::Background;
+                        (m.region == Region::Direct     ? local.pixelsDirect
+                         : m.region == Region::Indirect ? local.pixelsIndirect
+                                                        : local.pixelsBackground)++;
+                        if (isNan) ++local.nanPixels;
+                        (*layers[0])[index] = shown ? m.depth : nan;
+                        (*layers[1])[index] = float(m.region);
+                        (*layers[2])[index] = shown ? float(m.point.triangle) : -1.0f;
+                        (*layers[3])[index] = shown ? m.point.position.x : nan;
+                        (*layers[4])[index] = shown ? m.point.position.y : nan;
+                        (*layers[5])[index] = shown ? m.point.position.z : nan;
+                        (*layers[6])[index] = shown ? scalarAt(scene.field(), m.point) : nan;
+                        (*layers[7])[index] = float(m.steps);
                     }
-                    if (k != 0) continue;
-                    const bool shown = m.region != Region::Background;
-                    (m.region == Region::Direct     ? local.pixelsDirect
-                     : m.region == Region::Indirect ? local.pixelsIndirect
-                                                    : local.pixelsBackground)++;
-                    if (isNan) ++local.nanPixels;
-                    (*layers[0])[index] = shown ? m.depth : nan;
-                    (*layers[1])[index] = float(m.region);
-                    (*layers[2])[index] = shown ? float(m.point.triangle) : -1.0f;
-                    (*layers[3])[index] = shown ? m.point.position.x : nan;
-                    (*layers[4])[index] = shown ? m.point.position.y : nan;
-                    (*layers[5])[index] = shown ? m.point.position.z : nan;
-                    (*layers[6])[index] = shown ? scalarAt(scene.field(), m.point) : nan;
-                    (*layers[7])[index] = float(m.steps);
-                }
             }
-            for (int x = 0; x < options.width; ++x)
-                result.image.at(x, y) = colours[std::size_t(x)] / float(options.samplesPerPixel);
+            for (int y = 0; y < tile.height; ++y)
+                for (int x = 0; x < tile.width; ++x)
+                    result.image.at(tile.x0 + x, tile.y0 + y) =
+                        colours[std::size_t(y) * tile.width + x] / float(options.samplesPerPixel);
         }
+        local.raysLaunched = counts.raysTraced;
+        local.totalSteps = counts.steps;
+        local.seedsInterpolated = counts.seedsInterpolated;
+        local.pixelsSkipped = counts.pixelsSkipped;
         {
             std::lock_guard<std::mutex> lock(statsMutex);
             RenderStats& s = result.stats;
             s.pixelsDirect += local.pixelsDirect;
             s.pixelsIndirect += local.pixelsIndirect;
             s.pixelsBackground += local.pixelsBackground;
+            s.seedsInterpolated += local.seedsInterpolated;
+            s.pixelsSkipped += local.pixelsSkipped;
             s.raysLaunched += local.raysLaunched;
             s.raysLanded += local.raysLanded;
             s.totalSteps += local.totalSteps;
             s.nanPixels += local.nanPixels;
         }
-        const int done = rowsDone += int(rows.size());
-        if (interrupter && interrupter->wasInterrupted(int(100.0 * done / options.height))) cancelled = true;
+        const int done = tilesDone += int(tiles.size());
+        if (interrupter && interrupter->wasInterrupted(int(100.0 * done / (columns * rows)))) cancelled = true;
     });
     if (interrupter) interrupter->end();
     if (cancelled) throw Cancelled("render cancelled");

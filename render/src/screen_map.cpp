@@ -51,6 +51,24 @@ void ScreenMap::mapMany(const glm::dvec2* positions, std::size_t count, Distance
     for (std::size_t j = 0; j < missed.size(); ++j) mappings[where[j]] = indirect[j];
 }
 
+void ScreenMap::mapTile(const PixelTile& tile, const glm::dvec2& offset, const AdaptiveSampling& adaptive,
+                        DistanceField::Sampler& sampler, PixelMapping* mappings, TileCounts& counts) const
+{
+    // The hull-exit methods trace every pixel: their seeds are cheap and they have no stability rule to spare.
+    if (mCurved && adaptive.enabled && mCurved->method().seedRule() == SeedRule::ClosestApproach) {
+        mapTileAdaptively(*this, *mCurved, adaptive, tile, offset, sampler, mappings, counts);
+        return;
+    }
+    std::vector<glm::dvec2> positions(std::size_t(tile.width));
+    for (int y = 0; y < tile.height; ++y) {
+        for (int x = 0; x < tile.width; ++x) positions[std::size_t(x)] = {tile.x0 + x + offset.x, tile.y0 + y + offset.y};
+        PixelMapping* row = mappings + std::size_t(y) * tile.width;
+        mapMany(positions.data(), positions.size(), sampler, row);
+        for (int x = 0; x < tile.width; ++x)
+            if (row[x].launched) counts.raysTraced += 1, counts.steps += std::size_t(row[x].steps);
+    }
+}
+
 PixelMapping ScreenMap::indirect(double x, double y, DistanceField::Sampler& sampler) const
 {
     return mIndirect ? mIndirect->map(x, y, sampler) : PixelMapping{};

@@ -52,14 +52,30 @@ ParameterValues WrapInverseVisMethod::values() const
     return values;
 }
 
-bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const
+namespace {
+
+/// The wrap's launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
+/// tangential to the hull, tilted outward by tilt t.
+float alphaAt(const WrapLaunch& launch, float t) { return launch.speed * t * (2.0f - t); }
+glm::vec3 directionAt(const WrapLaunch& launch, const glm::vec3& along, const glm::vec3& outward, float t)
+{
+    return glm::normalize(along + launch.tilt * t * outward);
+}
+
+/// The unit outward normal of the hull at a start's seed (zero where the gradient vanishes).
+glm::vec3 outwardAt(const CurvedRayStart& start)
+{
+    const float length = glm::length(start.gradient);
+    return length > 0.0f ? start.gradient / length : glm::vec3(0.0f);
+}
+
+}  // namespace
+
+bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& /*sampler*/) const
 {
     const RenderScene& scene = rays.scene();
-    const float distance = start.ring * rayParams().hullOffset;
-    glm::vec3 gradient;
-    sampler.phiAndGradient(start.seed, gradient);
-    const float length = glm::length(gradient);
-    const glm::vec3 outward = length > 0.0f ? gradient / length : glm::vec3(0.0f);
+    const float distance = start.seedDistance;
+    const glm::vec3 outward = outwardAt(start);
     // The radius where phi and its gradient lead down from the seed (as the viewer's shader finds
     // it): a search within two voxels of that foot, not within phi of the seed, which meets many
     // more triangles; where the foot lies off the surface, the search from the seed.
@@ -67,51 +83,63 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     float radius = localRadiusNear(scene, start.seed - distance * outward, 2.0 * voxel);
     if (radius < 0.0f) radius = localRadiusNear(scene, start.seed, 1.01 * distance + voxel);
     if (radius < 0.0f) {
-        start.refusal = "no surface near its seed";
+        start.refusal = Refusal::NoSurfaceNearSeed;
         return false;
     }
-    const float width = std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
-    start.ring = distance / width;
-    if (!(start.ring < 1.0f)) {
-        start.refusal = "beyond its ring";
+    RingPosition& ring = start.ring.emplace();
+    ring.width = std::min(mLaunch.ringScale * radius, rayParams().hullOffset);
+    ring.coordinate = distance / ring.width;
+    if (!(ring.coordinate < 1.0f)) {
+        start.refusal = Refusal::BeyondRing;
         return false;
     }
+    const glm::vec3 along = glm::normalize(start.tangent);
+    start.launchDirection = directionAt(mLaunch, along, outward, ring.coordinate);
+    start.alpha = alphaAt(mLaunch, ring.coordinate);
+    return true;
+}
 
-    // The launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
-    // tangential to the hull, tilted outward by tilt t.
-    const glm::vec3 along = glm::normalize(start.velocityPerAlpha);
-    auto alphaAt = [&](float t) { return mLaunch.speed * t * (2.0f - t); };
-    auto directionAt = [&](float t) { return glm::normalize(along + mLaunch.tilt * t * outward); };
-    auto launchAt = [&](float t) { return alphaAt(t) * directionAt(t); };
-    start.velocityPerAlpha = directionAt(start.ring);
-    start.alpha = alphaAt(start.ring);
-
+int WrapInverseVisMethod::stabilityProbes(const CurvedRayStart& start, CurvedRayStart* probes) const
+{
     // Where rays fly smoothly, the landings of neighbouring pixels across the ring lie on a smooth
     // curve; where they fly chaotically, or part on either side of a tear, the rays launched from
     // a seed a pixel further in and out land far off it. Each probe moves the seed along the
     // outward gradient and the ring coordinate with it, as the neighbouring pixel's ray would.
-    auto traceAt = [&](float shift) {
-        return traceCurvedRay(sampler, start.seed + shift * outward, launchAt(start.ring + shift / width), rayParams(),
-                              rays.epsilon());
-    };
-    const CurvedRayEnd here = traceAt(0.0f);
-    const float step = std::min(kNeighbourStep, distance);  // the inner seed stays off the surface
-    const CurvedRayEnd inner = here.landed ? traceAt(-step) : CurvedRayEnd{};
-    const CurvedRayEnd outer = inner.landed ? traceAt(step) : CurvedRayEnd{};
-    if (!outer.landed) {
-        start.refusal = here.landed ? "a neighbouring pixel's ray does not land" : "its ray does not land";
+    const glm::vec3 outward = outwardAt(start);
+    const glm::vec3 along = glm::normalize(start.tangent);
+    const float step = std::min(kNeighbourStep, start.seedDistance);  // the inner seed stays off the surface
+    const RingPosition& ring = *start.ring;
+    for (int k = 0; k < 2; ++k) {
+        const float shift = k == 0 ? -step : step;
+        const float t = ring.coordinate + shift / ring.width;
+        CurvedRayStart& probe = probes[k];
+        probe.seed = start.seed + shift * outward;
+        probe.alpha = alphaAt(mLaunch, t);
+        probe.launchDirection = directionAt(mLaunch, along, outward, t);
+    }
+    return 2;
+}
+
+bool WrapInverseVisMethod::isStable(CurvedRayStart& start, const CurvedRayEnd& own, const CurvedRayEnd* probes) const
+{
+    if (!own.landed || !probes[0].landed || !probes[1].landed) {
+        start.refusal = own.landed ? Refusal::NeighbourDoesNotLand : Refusal::DoesNotLand;
         return false;
     }
-    start.bend = glm::length(inner.position + outer.position - 2.0f * here.position);
-    start.traced = here;  // the ray drawn: launchVelocity(start, 0) from the seed, as traced here
-    const bool stable = start.bend <= mLaunch.stableShift;
-    if (!stable) start.refusal = "its landing is unstable";
-    return stable;
+    start.bend = glm::length(probes[0].position + probes[1].position - 2.0f * own.position);
+    if (start.bend <= mLaunch.stableShift) return true;
+    start.refusal = Refusal::Unstable;
+    return false;
+}
+
+std::optional<StabilityScale> WrapInverseVisMethod::stabilityScale() const
+{
+    return StabilityScale{mLaunch.stableShift, kNeighbourStep};
 }
 
 glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
 {
-    return start.alpha * start.velocityPerAlpha;
+    return start.alpha * start.launchDirection;
 }
 
 PictureExtent WrapInverseVisMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const

@@ -62,7 +62,8 @@ TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
 
 TEST(Readability, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
 {
-    // Brute force: a 150 x 90 picture rendered with each value, its coherence counted on its layers.
+    // Brute force: a 150 x 90 picture rendered with each value, every ray traced (the rule judges
+    // each view ray alone), its coherence counted on its layers.
     const auto& fixture = test::vesselScene();
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
@@ -72,6 +73,7 @@ TEST(Readability, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
         render::RenderOptions options;
         options.width = 150;
         options.height = 90;
+        options.adaptive.enabled = false;
         options.method = render::withValues(*wrap, {{"stable_shift", {values[k]}}});
         const Coherence rendered = mappingCoherence(render::renderImage(*fixture.scene, camera, options).layers);
         EXPECT_GT(rendered.pairs, 1000u);

@@ -173,7 +173,7 @@ TEST(WrapInverseVis, ItsStabilityRuleDependsOnTheViewRayNotOnThePicturesSize)
             render::CurvedRayStart a, b;
             const bool drawnA = coarseRays.start(x + 0.5, y + 0.5, sampler, a);
             const bool drawnB = fineRays.start(3 * x + 1.5, 3 * y + 1.5, sampler, b);
-            if (a.ring <= 0.0f && b.ring <= 0.0f) continue;  // a direct hit or no seed in both
+            if (!a.ring && !b.ring) continue;  // a direct hit, no seed or no surface near it in both
             ++seeded;
             drawn += drawnA;
             agree += drawnA == drawnB;

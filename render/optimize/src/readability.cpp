@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace ivis::optimize {
 namespace {
@@ -50,16 +51,26 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
     std::vector<float> bends(pixels, std::numeric_limits<float>::infinity());
     tbb::parallel_for(0, size.y, [&](int y) {
         render::DistanceField::Sampler sampler = scene.distance().sampler();
-        std::vector<render::CurvedRayStart> starts;
-        std::vector<std::size_t> at;
+        std::vector<render::CurvedRayStart> aimed;
+        std::vector<std::size_t> aimedAt;
         for (int x = 0; x < size.x; ++x) {
             const bool sampled = y % stride == 0 ? x % stride == 0 || (x - 1) % stride == 0
                                                  : (y - 1) % stride == 0 && x % stride == 0;
             render::CurvedRayStart start;
-            if (!sampled || !rays.start(x + 0.5, y + 0.5, sampler, start)) continue;
-            starts.push_back(start);
-            at.push_back(std::size_t(y) * size.x + x);
+            if (!sampled || rays.hitsSurface(x + 0.5, y + 0.5) || !rays.aimedStart(x + 0.5, y + 0.5, sampler, start))
+                continue;
+            aimed.push_back(start);
+            aimedAt.push_back(std::size_t(y) * size.x + x);
         }
+        // The stability rule on the row's rays together (their probes traced in lanes).
+        std::vector<render::CurvedRayStart*> judged(aimed.size());
+        for (std::size_t k = 0; k < aimed.size(); ++k) judged[k] = &aimed[k];
+        std::unique_ptr<bool[]> stable(new bool[aimed.size()]);
+        rays.areStable(judged.data(), judged.size(), sampler, stable.get());
+        std::vector<render::CurvedRayStart> starts;
+        std::vector<std::size_t> at;
+        for (std::size_t k = 0; k < aimed.size(); ++k)
+            if (stable[k]) starts.push_back(aimed[k]), at.push_back(aimedAt[k]);
         std::vector<render::PixelMapping> landings(starts.size());
         rays.landingMany(starts.data(), starts.size(), sampler, landings.data());
         for (std::size_t k = 0; k < starts.size(); ++k) {

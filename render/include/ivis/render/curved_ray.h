@@ -48,20 +48,31 @@ void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, co
 
 /// @brief How far above its lowest value (in fine voxels) phi may rise along a view ray within the
 ///        valley whose centre findClosestApproach takes.
-/// @note The viewer's shader (assets/shaders/method_inversevis-wrap.glsl) writes it as a literal:
-///       change both together.
 constexpr float kClosestApproachValley = 1.0f;
+/// @brief The spacing (in fine voxels) of findClosestApproach's fine march and of its valley's samples.
+constexpr float kClosestApproachSpacing = 0.25f;
+/// @brief findClosestApproach's coarse march steps this many times kClosestApproachSpacing.
+constexpr float kClosestApproachCoarseSteps = 16.0f;
 
 /// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
 ///        comes within @a hullOffset of it: phi sampled along the ray inside @a hullBox, skipping
 ///        by the 1-Lipschitz bound, refined by golden-section search, and centred in the valley of
 ///        the ray round that minimum where phi stays within kClosestApproachValley voxels of it
-///        (the weighted mean of its samples a quarter voxel apart, each weighted by how far below
-///        that it lies), so that it moves continuously with the ray where phi barely rises.
+///        (the weighted mean of its samples kClosestApproachSpacing voxels apart, each weighted by
+///        how far below that it lies), so that it moves continuously with the ray where phi barely rises.
+/// @param bottom if given, the parameter t of the valley's bottom (the golden-section minimum)
 /// @return false when the ray never comes within hullOffset of the surface, or when the valley's
 ///         centre does not (its least within about a voxel of hullOffset)
 bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
-                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance);
+                         float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance,
+                         float* bottom = nullptr);
+
+/// @brief findClosestApproach with the valley's bottom sought only near @a bottomGuess (one
+///        interpolated from neighbouring view rays' bottoms): golden-section search within @a reach
+///        and two fine samples of it, no march along the whole ray to find where phi is least.
+bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                             float hullOffset, const core::Bounds3& hullBox, float bottomGuess, float reach,
+                             glm::vec3& seed, float& distance, float* bottom = nullptr);
 
 /// @brief A box around the hull {phi = hullOffset} of @a mesh: its bounds grown by the offset
 ///        plus one voxel, clipped to the volume's box.

@@ -7,32 +7,65 @@
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/method.h>
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace ivis::render {
 
-/// @brief Start of one pixel's curved ray.
+/// @brief Why a pixel whose view ray misses the surface gets no curved ray.
+enum class Refusal : std::uint8_t {
+    None,                ///< a ray is drawn
+    NoSeed,              ///< the view ray does not come within the hull (no seed)
+    NoSurfaceNearSeed,   ///< the method finds no surface near the seed
+    BeyondRing,          ///< the seed lies beyond its ring (the wrap's rings)
+    DoesNotLand,         ///< the ray does not land
+    NeighbourDoesNotLand,  ///< a neighbouring pixel's ray does not land (the stability rule)
+    Unstable             ///< the landing is unstable (the stability rule)
+};
+
+/// @brief The refusal in words, as a probe tells it ("beyond its ring"); null for None.
+const char* describe(Refusal refusal);
+
+/// @brief Where across its ring a seed lies, for a method whose rays start in rings (the wrap).
+struct RingPosition {
+    float coordinate = 0.0f;  ///< 0 at the silhouette, 1 at the ring's outer edge
+    float width = 0.0f;       ///< the ring's width (normalised units): the seed's distance is coordinate * width
+};
+
+/// @brief Start of one pixel's curved ray: where it starts (CurvedRayMap), then how the method
+///        launches it (CurvedRayMethod::aim) and whether it draws it (CurvedRayMethod::isStable).
 struct CurvedRayStart {
-    glm::vec3 seed{};              ///< farthest crossing of the view ray with the hull
-    glm::vec3 velocityPerAlpha{};  ///< g x (r x g), g = grad phi / |grad phi|: the view direction's part tangential to the hull
-    float alignment = 0.0f;        ///< c = r . grad phi / |grad phi| at the seed
-    float ring = 0.0f;             ///< closest-approach seeds: phi at the seed / phi0 (0 at the silhouette, 1 at the hull); aim() may rescale it
-    float alpha = 0.0f;            ///< launch speed the method chose for this ray (CurvedRayMethod::aim)
-    float bend = 0.0f;             ///< how far the landing strays from a smooth function of the launch, where
-                                   ///< the method measures it (the wrap's stability rule); rays bending more
-                                   ///< than its readability parameter are not drawn (MethodInfo::readabilityParameter)
-    /// The end of the first launch's ray where aim() traced it already (the wrap's stability
-    /// rule does), set only where that end is final: CurvedRayMap::traceMany() takes it as it is.
+    glm::vec3 seed{};           ///< where the ray starts on its view ray (SeedRule)
+    float rayParameter = 0.0f;  ///< the seed's parameter t on its view ray origin + t direction
+    float valleyBottom = 0.0f;  ///< closest-approach seeds: the parameter t of the least phi on the view ray
+    glm::vec3 gradient{};       ///< grad phi at the seed
+    float seedDistance = 0.0f;  ///< phi at the seed
+    glm::vec3 tangent{};        ///< g x (r x g), g = gradient / |gradient|: the view direction's part tangential to the hull
+    float alignment = 0.0f;     ///< c = r . g
+    glm::vec3 launchDirection{};  ///< unit launch direction, where the method aims each ray itself (the wrap)
+    float alpha = 0.0f;         ///< launch speed, where the method aims each ray itself (the wrap)
+    std::optional<RingPosition> ring;  ///< where across its ring the seed lies, for a method with rings
+    float bend = 0.0f;          ///< how far the landing strays from a smooth function of the launch, where
+                                ///< the method measures it (the wrap's stability rule); rays bending more
+                                ///< than its readability parameter are not drawn (MethodInfo::readabilityParameter)
+    /// The end of the first launch's ray where it was traced already (the wrap's stability rule
+    /// traces it), set only where that end is final: CurvedRayMap::traceMany() takes it as it is.
     std::optional<CurvedRayEnd> traced;
-    /// Why aim() gives the pixel no ray, in words ("beyond its ring"), where it refuses one (a probe says it).
-    const char* refusal = nullptr;
+    Refusal refusal = Refusal::None;  ///< why the pixel gets no ray, where it gets none
 };
 
 /// @brief Where on its view ray a curved ray starts.
 enum class SeedRule {
     HullExit,        ///< the farthest crossing with the hull (the paper)
     ClosestApproach  ///< the point of the view ray closest to the surface, within the hull (findClosestApproach)
+};
+
+/// @brief The scale of a method's stability rule: a ray is drawn when the landings of the rays
+///        seeded @a probeStep further in and out bend from a straight line by at most @a largestBend.
+struct StabilityScale {
+    float largestBend = 0.0f;  ///< normalised units (the wrap's stable_shift)
+    float probeStep = 0.0f;    ///< normalised units between the probes' seeds
 };
 
 /// @brief How a launch velocity moves with the optimised parameters: along one direction,
@@ -69,12 +102,31 @@ public:
     virtual glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const = 0;
     /// @brief Where the rays start (the paper: the hull exit).
     virtual SeedRule seedRule() const { return SeedRule::HullExit; }
-    /// @brief Chooses this ray's own launch (start.alpha) once it is seeded; the default: nothing.
-    /// @return false when the pixel gets no ray after all (it shows the background)
+    /// @brief Chooses this ray's own launch once it is seeded (the wrap: start.alpha,
+    ///        start.launchDirection, start.ring); the default: nothing.
+    /// @return false (start.refusal set) when the pixel gets no ray after all (it shows the background)
     virtual bool aim(const CurvedRayMap& /*rays*/, CurvedRayStart& /*start*/, DistanceField::Sampler& /*sampler*/) const
     {
         return true;
     }
+    /// @brief Most probes stabilityProbes() gives.
+    static constexpr int kMaxStabilityProbes = 2;
+    /// @brief The starts of the rays the stability rule compares an aimed start's ray with (the
+    ///        wrap: the seeds of the neighbouring pixels further in and out across its ring), at most
+    ///        kMaxStabilityProbes into @a probes; none by default (every ray that lands is drawn).
+    /// @return how many
+    virtual int stabilityProbes(const CurvedRayStart& /*start*/, CurvedRayStart* /*probes*/) const { return 0; }
+    /// @brief The stability rule's verdict on an aimed start from the end of its own ray and of its
+    ///        probes' rays (as stabilityProbes() lists them; not traced where its own did not land):
+    ///        sets start.bend and, when false, start.refusal.
+    /// @return whether its ray is drawn
+    virtual bool isStable(CurvedRayStart& /*start*/, const CurvedRayEnd& /*own*/, const CurvedRayEnd* /*probes*/) const
+    {
+        return true;
+    }
+    /// @brief The scale of the stability rule, for a method with one (isStable then refuses rays);
+    ///        none by default.
+    virtual std::optional<StabilityScale> stabilityScale() const { return std::nullopt; }
     /// @brief How often a ray that does not land is launched again.
     virtual int relaunches() const { return 0; }
     /// @brief The sensitivity of launch @a launch's velocity to the optimised parameters; the
@@ -111,9 +163,31 @@ public:
     void mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
                  PixelMapping* mappings) const override;
 
-    /// @brief Start of the curved ray of pixel position (x, y).
-    /// @return false when the view ray hits the surface or misses the hull
+    /// @brief Start of the curved ray of pixel position (x, y): seeded, aimed and judged by the
+    ///        method's stability rule.
+    /// @return false when the view ray hits the surface or the pixel gets no ray (start.refusal says why)
     bool start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// @brief Whether the view ray of pixel position (x, y) hits the surface (any face).
+    bool hitsSurface(double x, double y) const;
+    /// @brief The start of a pixel whose view ray misses the surface, without the stability rule:
+    ///        the ray as the method aims it, which isStable() then judges (adaptive image sampling
+    ///        judges only the rays it must).
+    /// @return false when the pixel gets no ray (start.refusal says why)
+    bool aimedStart(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// @brief aimedStart() of a pixel whose valley bottom is sought only within @a reach of
+    ///        @a bottomGuess (one interpolated from its neighbours' bottoms:
+    ///        findClosestApproachNear), for the closest-approach seed rule.
+    /// @return false when the pixel gets no ray (start.refusal says why)
+    bool aimedStartNear(double x, double y, float bottomGuess, float reach, DistanceField::Sampler& sampler,
+                        CurvedRayStart& start) const;
+    /// @brief The distance (normalised) between the view rays of neighbouring pixels at point @a p.
+    float pixelFootprint(const glm::vec3& p) const;
+    /// @brief The method's stability rule on an aimed start: its own ray traced (unless
+    ///        start.traced holds it already; then kept there) and, where it lands, its probes.
+    bool isStable(CurvedRayStart& start, DistanceField::Sampler& sampler) const;
+    /// @brief isStable() of each of @a count aimed starts into @a stable, every probe traced
+    ///        together (traceMany).
+    void areStable(CurvedRayStart* const* starts, std::size_t count, DistanceField::Sampler& sampler, bool* stable) const;
     /// @brief Traces the ray of @a start, launching it again while it does not land (as the method says).
     CurvedRayTrace trace(const CurvedRayStart& start, DistanceField::Sampler& sampler) const;
     /// @brief trace() of each of @a count starts into @a traces: kLanes rays step in turn, a lane
@@ -140,8 +214,9 @@ public:
     float epsilon() const { return mEpsilon; }
 
 private:
+    /// The seed of the view ray and the method's aim (not its stability rule).
     bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
-    /// The rest of a start whose seed is set: launch velocity per alpha, alignment, the method's aim.
+    /// The rest of a start whose seed is set: gradient, tangent, alignment, the method's aim.
     bool aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
 
     const RenderScene& mScene;

@@ -6,6 +6,7 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/triangle_bvh.h>
+#include <ivis/render/adaptive_sampling.h>
 #include <ivis/render/method.h>
 #include <ivis/render/pixel_mapping.h>
 #include <ivis/render/render_scene.h>
@@ -39,10 +40,11 @@ struct PixelProbe {
     std::optional<ProbedLaunch> launch;
 };
 
-/// @brief What continuous pixel position (x, y) (pixel centres at +0.5, from the top left) of a
-///        @a width x @a height picture of @a method from @a camera shows.
+/// @brief What continuous pixel position (x, y) (pixel centres at +0.5, from the top left, inside
+///        the picture) of a @a width x @a height picture of @a method from @a camera shows: as the
+///        renderer maps it under @a sampling (its pixel's tile sampled as the renderer samples it).
 PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const core::Camera& camera, int width,
-                      int height, double x, double y);
+                      int height, double x, double y, const AdaptiveSampling& sampling = {});
 
 /// @brief True when the straight line from @a eye to @a point meets the surface first at @a point
 ///        (within 10^-4 of the line's length, or on @a triangle).

@@ -8,6 +8,7 @@
 #include <ivis/core/color_bar.h>
 #include <ivis/core/image.h>
 #include <ivis/core/interrupter.h>
+#include <ivis/render/adaptive_sampling.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/render_scene.h>
 #include <ivis/render/shading.h>
@@ -23,6 +24,7 @@ struct RenderOptions {
     int height = 1000;
     int samplesPerPixel = 1;  ///< supersampling: a fixed R2 pattern per pixel, the first at its centre
     MethodPtr method = defaultMethod();  ///< the method and its parameters
+    AdaptiveSampling adaptive;  ///< how a curved-ray method's rays are sampled (off: the full trace)
     ShadingOptions shading;
     bool outline = true;      ///< dark outline around the directly visible object
     bool legend = true;       ///< colour bar with the scalar's name and range, in a margin
@@ -32,15 +34,17 @@ struct RenderOptions {
     std::string units;        ///< legend units
 };
 
-/// @brief Counts over the pixel centres (regions) and over every launched indirect ray.
+/// @brief Counts over the pixel centres (regions) and over every traced indirect ray.
 struct RenderStats {
     double seconds = 0.0;
     std::size_t pixelsDirect = 0;
     std::size_t pixelsIndirect = 0;
     std::size_t pixelsBackground = 0;
-    std::size_t raysLaunched = 0;  ///< indirect rays (all samples)
-    std::size_t raysLanded = 0;
-    std::size_t totalSteps = 0;    ///< integration steps over launched rays
+    std::size_t seedsInterpolated = 0;  ///< samples whose seeds adaptive sampling took from its lattice
+    std::size_t pixelsSkipped = 0;      ///< samples adaptive sampling set to background without a ray
+    std::size_t raysLaunched = 0;  ///< indirect rays traced (all samples; a curved-ray method's stability probes not counted)
+    std::size_t raysLanded = 0;    ///< samples drawn from a ray of their own that landed
+    std::size_t totalSteps = 0;    ///< integration steps over the traced rays
     std::size_t nanPixels = 0;     ///< pixel centres showing NaN data
     /// @brief Mean integration steps per launched ray (0 when none).
     double meanSteps() const { return raysLaunched ? double(totalSteps) / double(raysLaunched) : 0.0; }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/render/adaptive_sampling.h>
 #include <ivis/render/curved_ray_method.h>
 #include <ivis/render/method.h>
 #include <ivis/render/pixel_mapping.h>
@@ -27,6 +28,13 @@ public:
     ///        together (IndirectMap::mapMany): what a renderer calls per row.
     void mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
                  PixelMapping* mappings) const;
+
+    /// @brief map() of every pixel of @a tile at continuous positions (x, y) + @a offset, row-major
+    ///        into @a mappings: the rays of a method with closest-approach seeds (the wrap) sampled
+    ///        adaptively (mapTileAdaptively) unless @a adaptive is off, every other method's pixels
+    ///        row by row with mapMany().
+    void mapTile(const PixelTile& tile, const glm::dvec2& offset, const AdaptiveSampling& adaptive,
+                 DistanceField::Sampler& sampler, PixelMapping* mappings, TileCounts& counts) const;
 
     /// @brief The direct part of map(): the surface point the view ray of (x, y) hits, or background.
     PixelMapping directHit(double x, double y) const;

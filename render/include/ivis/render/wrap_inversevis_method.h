@@ -32,10 +32,18 @@ public:
     const MethodInfo& info() const override { return wrapInverseVisMethodInfo(); }
     ParameterValues values() const override;
     SeedRule seedRule() const override { return SeedRule::ClosestApproach; }
-    /// @brief Sets the ring coordinate from the local radius, the launch direction and alpha; false
-    ///        outside the ring or where the landing is unstable.
+    /// @brief Sets the ring position from the local radius, the launch direction and alpha; false
+    ///        beyond the ring or with no surface near the seed.
     bool aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& sampler) const override;
+    /// @brief The rays seeded a neighbouring pixel further in and out across the ring (along the
+    ///        outward normal), the ring coordinate moving with them.
+    int stabilityProbes(const CurvedRayStart& start, CurvedRayStart* probes) const override;
+    /// @brief The stability rule: the ray and both probes land, their landings bending by at most
+    ///        stable_shift.
+    bool isStable(CurvedRayStart& start, const CurvedRayEnd& own, const CurvedRayEnd* probes) const override;
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
+    /// @brief stable_shift between probes a neighbouring pixel (of a 1000-pixel picture) apart.
+    std::optional<StabilityScale> stabilityScale() const override;
     /// @brief The object and the pixels whose rays land (landedExtent within the hull): the rings
     ///        are narrower than the hull round thin parts and where their outer rays are not drawn.
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
