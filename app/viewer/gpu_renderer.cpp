@@ -28,6 +28,7 @@ GpuRenderer::GpuRenderer()
       mLocalRadii(newName(glGenBuffers)),
       mColormap(newName(glGenTextures))
 {
+    shaders::checkIndirectSnippets();
     mSceneUniforms.set("uVolumeReady", false);
     setColormap(core::kDefaultColormap);
     checkGl("creating the renderer");
@@ -86,7 +87,7 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
                  slices.localRadii.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(mField->mesh, 0.0f, fineVoxelSize));
-    mVolumeScale = {fineVoxelSize, slices.voxelSize, slices.reach};
+    mVolumeScale = {fineVoxelSize, slices.reach};
     mHasVolume = true;
 }
 
@@ -136,8 +137,7 @@ void GpuRenderer::render(const GpuFrame& frame)
 
     mSceneUniforms.applyTo(mMeshProgram);
     setMeshPassUniforms(mMeshProgram, frame, camera);
-    const bool indirect = mHasVolume && shaders::hasIndirectFragment(method.name());
-    GlProgram* indirectProgram = indirect ? &mIndirectPrograms.get(method.name()) : nullptr;
+    GlProgram* indirectProgram = mHasVolume && method.drawsIndirect() ? &mIndirectPrograms.get(method.info()) : nullptr;
     if (indirectProgram) {
         mSceneUniforms.applyTo(*indirectProgram);
         setIndirectUniforms(*indirectProgram, frame, camera, *mField, mVolumeScale);

@@ -2,8 +2,8 @@
 
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/curved_ray_method.h>
-#include <ivis/render/mirror_method.h>
 #include <ivis/render/ring_map_method.h>
+#include <ivis/render/shading.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <glm/geometric.hpp>
@@ -65,22 +65,6 @@ glm::mat4 clipFromWorld(const core::CameraFrame& frame)
     return glm::mat4(projection * view);
 }
 
-/// The uniform a parameter feeds: "u" and its key in UpperCamelCase (alpha_profile -> uAlphaProfile).
-std::string parameterUniform(const std::string& key)
-{
-    std::string name = "u";
-    bool upper = true;
-    for (char c : key) {
-        if (c == '_') {
-            upper = true;
-            continue;
-        }
-        name += upper ? char(std::toupper(static_cast<unsigned char>(c))) : c;
-        upper = false;
-    }
-    return name;
-}
-
 /// Sets every parameter of @a method as its uniform: an int for whole numbers, a vec3 for three
 /// components, else a float or a float array.
 void setParameterUniforms(GlProgram& p, const render::Method& method)
@@ -112,13 +96,29 @@ void setSharedUniforms(GlProgram& program, const GpuFrame& frame, const core::Ca
     program.set("uEye", toFloat(frame.camera.eye));
     program.set("uForward", toFloat(camera.forward()));
     program.set("uOrtho", frame.camera.orthographic);
-    program.set("uToLight", toFloat(glm::normalize(-0.35 * camera.right() + 0.55 * camera.upVector() -
-                                                   0.75 * camera.forward())));
+    program.set("uToLight", toFloat(glm::normalize(render::kKeyLightRight * camera.right() +
+                                                   render::kKeyLightUp * camera.upVector() +
+                                                   render::kKeyLightForward * camera.forward())));
     program.set("uAmbient", shading.ambient);
     program.set("uShadows", shading.shadows);
 }
 
 }  // namespace
+
+std::string parameterUniform(const std::string& key)
+{
+    std::string name = "u";
+    bool upper = true;
+    for (char c : key) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        name += upper ? char(std::toupper(static_cast<unsigned char>(c))) : c;
+        upper = false;
+    }
+    return name;
+}
 
 void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field)
 {
@@ -167,6 +167,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
                                                          : std::tan(0.5 * frame.camera.fovYDeg * M_PI / 180.0)));
     p.set("uAspect", float(double(frame.width) / double(frame.height)));
     p.set("uWindowCentre", glm::vec2(frame.camera.windowCentre));
+    p.set("uTargetDistance", float(glm::length(frame.camera.target - frame.camera.eye)));
     p.set("uRight", toFloat(camera.right()));
     p.set("uUp", toFloat(camera.upVector()));
     p.set("uIndirectBrightness", frame.shading.indirectBrightness);
@@ -175,8 +176,9 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     const render::Method& method = *frame.method;
     setParameterUniforms(p, method);
     const render::CurvedRayMethod* curved = method.curved();
-    // rays land within the method's landing threshold in voxels (render::landingEpsilon)
-    p.set("uEpsilon", (curved ? curved->rayParams() : render::CurvedRayParams{}).landingVoxels * volume.textureVoxelSize);
+    // rays land within the method's landing threshold in voxels (render::landingEpsilon), the
+    // wrap's own parameter `landing`
+    p.set("uLanding", (curved ? curved->rayParams() : render::CurvedRayParams{}).landingVoxels);
     if (curved) {
         const float hullOffset = curved->rayParams().hullOffset;
         p.set("uMaxAlpha", render::kMaxAlpha);
@@ -187,15 +189,10 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
         p.set("uHullLo", glm::vec3(hull.lo));
         p.set("uHullHi", glm::vec3(hull.hi));
     }
-    if (const auto* mirror = dynamic_cast<const render::MirrorMethod*>(&method)) {
-        p.set("uMirrorZm", float(-glm::length(frame.camera.target - frame.camera.eye) - mirror->params().distanceBehind));
-        p.set("uMirrorMaxSteps", mirror->params().maxSteps);
-    }
     if (const auto* ring = dynamic_cast<const render::RingMapMethod*>(&method)) {
         const render::RingLayout rings = render::layoutRings(camera, field.mesh, ring->params());
         p.set("uRingPixelCentre", glm::vec2(rings.centre));
         p.set("uRingInner", float(rings.innerRadius));
-        p.set("uRingOuter", float(rings.outerRadius));
         p.set("uBackCentre", glm::vec2(rings.backCentre));
         p.set("uBackRadius", float(rings.backRadius));
         p.set("uRingMaxSteps", kRingMaxSteps);

@@ -11,14 +11,19 @@
 #include <ivis/core/camera.h>
 #include <ivis/core/surface_field.h>
 
+#include <string>
+
 namespace ivis::app {
 
 /// @brief Sizes of the uploaded volume the indirect pass's uniforms derive from.
 struct VolumeScale {
     float fineVoxelSize = 0.0f;     ///< the volume's own voxel size (the CPU's hull box uses it)
-    float textureVoxelSize = 0.0f;  ///< voxel size of the band and triangle textures
     float reach = 0.0f;             ///< exterior distance up to which phi is exact
 };
+
+/// @brief The uniform a method's parameter feeds: "u" and its key in UpperCamelCase
+///        (alpha_profile -> uAlphaProfile).
+std::string parameterUniform(const std::string& key);
 
 /// @brief Keeps the mesh's uniforms in @a scene: whether it has a scalar, where the hole caps start.
 void keepMeshUniforms(UniformSet& scene, const core::SurfaceField& field);

@@ -6,6 +6,8 @@
 
 #include "gl_objects.h"
 
+#include <ivis/render/method.h>
+
 #include <map>
 #include <string>
 
@@ -14,10 +16,11 @@ namespace ivis::app {
 /// @brief Indirect programs by method name, compiled lazily.
 class IndirectPrograms {
 public:
-    /// @brief The program of the method named @a method (its command-line name), compiled on first use
-    ///        from shaders::indirectFragment(@a method).
-    /// @throw GlError when the method has no snippet or the program does not compile
-    GlProgram& get(const std::string& method);
+    /// @brief The program of the method @a method describes, compiled on first use from
+    ///        shaders::indirectFragment(its name).
+    /// @throw GlError when the method has no snippet, the program does not compile, or it reads no
+    ///        uniform for one of the method's parameters (a renamed key would feed nothing)
+    GlProgram& get(const render::MethodInfo& method);
 
 private:
     std::map<std::string, GlProgram> mPrograms;

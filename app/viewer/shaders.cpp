@@ -4,6 +4,14 @@
 #include "embedded_shaders.h"
 #include "gl_objects.h"
 
+#include <ivis/render/curved_ray.h>
+#include <ivis/render/method_registry.h>
+#include <ivis/render/quadratic_mirror.h>
+#include <ivis/render/shading.h>
+#include <ivis/render/shadow.h>
+#include <ivis/render/wrap_inversevis_method.h>
+
+#include <cstdio>
 #include <initializer_list>
 #include <string>
 
@@ -25,10 +33,46 @@ const char* file(const std::string& name)
     throw GlError("no shader file '" + name + "' is embedded (assets/shaders/, app/CMakeLists.txt)");
 }
 
-/// The GLSL version line followed by the files @a names, in order.
+/// A GLSL float literal of @a value that parses to the same float.
+std::string floatLiteral(double value)
+{
+    char text[40];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    std::string literal = text;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    return literal;
+}
+
+/// @brief GLSL constant declarations of render's constants that the snippets read: one source for
+///        both sides (the CPU renderer's headers), so that the two cannot drift.
+std::string renderConstants()
+{
+    std::string text;
+    auto real = [&](const char* name, double value) { text += "const float " + std::string(name) + " = " + floatLiteral(value) + ";\n"; };
+    auto whole = [&](const char* name, int value) { text += "const int " + std::string(name) + " = " + std::to_string(value) + ";\n"; };
+    real("kClosestApproachSpacing", render::kClosestApproachSpacing);
+    real("kClosestApproachCoarseSteps", render::kClosestApproachCoarseSteps);
+    real("kClosestApproachValley", render::kClosestApproachValley);
+    real("kGoldenSectionRatio", render::kGoldenSectionRatio);
+    real("kWrapProbeStep", render::kWrapProbeStep);
+    real("kShadowSoftness", render::kShadowSoftness);
+    real("kShadowStartVoxels", render::kShadowStartVoxels);
+    real("kShadowHitVoxels", render::kShadowHitVoxels);
+    real("kShadowLeastStepVoxels", render::kShadowLeastStepVoxels);
+    whole("kShadowMaxSteps", render::kShadowMaxSteps);
+    real("kShadowMaxDistance", render::kShadowMaxDistance);
+    real("kShadowWallVoxels", render::kShadowWallVoxels);
+    real("kKeyLightRight", render::kKeyLightRight);
+    real("kKeyLightUp", render::kKeyLightUp);
+    real("kKeyLightForward", render::kKeyLightForward);
+    whole("kMirrorMaxSteps", render::MirrorParams{}.maxSteps);
+    return text;
+}
+
+/// The GLSL version line, render's constants, then the files @a names, in order.
 std::string compose(std::initializer_list<std::string> names)
 {
-    std::string source = "#version 430 core\n";
+    std::string source = "#version 430 core\n" + renderConstants();
     for (const std::string& name : names) source += file(name);
     return source;
 }
@@ -39,18 +83,26 @@ std::string meshVertex() { return compose({"mesh_vertex.glsl"}); }
 
 std::string meshFragment()
 {
-    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "shading.glsl", "mesh_fragment.glsl"});
+    return compose({"distance_field.glsl", "mesh_buffers.glsl", "srgb.glsl", "colour_map.glsl", "shading.glsl",
+                    "mesh_fragment.glsl"});
 }
 
 std::string fullScreenVertex() { return compose({"full_screen_vertex.glsl"}); }
 
-std::string outlineFragment() { return compose({"outline_fragment.glsl"}); }
+std::string outlineFragment() { return compose({"srgb.glsl", "outline_fragment.glsl"}); }
 
-bool hasIndirectFragment(const std::string& method) { return findFile("method_" + method + ".glsl") != nullptr; }
+void checkIndirectSnippets()
+{
+    for (const render::MethodInfo* info : render::methodRegistry())
+        if (render::makeMethod(info->name)->drawsIndirect() && !findFile("method_" + info->name + ".glsl"))
+            throw GlError("the method " + info->name + " has no viewer shader: assets/shaders/method_" + info->name +
+                          ".glsl is missing (or not embedded by app/CMakeLists.txt)");
+}
 
 std::string indirectFragment(const std::string& method)
 {
-    return compose({"distance_field.glsl", "mesh_buffers.glsl", "colour_map.glsl", "shading.glsl", "camera_ray.glsl", "landing.glsl",
+    return compose({"distance_field.glsl", "mesh_buffers.glsl", "srgb.glsl", "colour_map.glsl", "shading.glsl",
+                    "camera_ray.glsl", "landing.glsl",
                     "hull_search.glsl", "curved_ray.glsl", "method_" + method + ".glsl", "indirect_main.glsl"});
 }
 

@@ -17,8 +17,10 @@ std::string meshFragment();
 std::string fullScreenVertex();
 /// @brief Fragment shader of the outline pass (full screen, image load/store, no outputs).
 std::string outlineFragment();
-/// @brief True when a snippet method_<method>.glsl was embedded: the method has an indirect pass.
-bool hasIndirectFragment(const std::string& method);
+/// @brief Checks that every registered method that draws an indirect part has its snippet
+///        method_<name>.glsl embedded.
+/// @throw GlError naming the first method without one
+void checkIndirectSnippets();
 /// @brief Fragment shader of the full-screen pass for the method named @a method: the shared
 ///        snippets, then method_<method>.glsl (which defines indirectRay), then indirect_main.glsl.
 /// @throw GlError when no snippet method_<method>.glsl was embedded

@@ -4,6 +4,7 @@ uniform float uHalfHeight;      // tan(fov / 2), or the orthographic half height
 uniform float uAspect;
 uniform vec2 uWindowCentre;     // the image centre on the image plane (core::Camera::windowCentre)
 uniform vec3 uEye;
+uniform float uTargetDistance;  // from the eye to the camera's target
 uniform vec3 uRight;
 uniform vec3 uUp;
 uniform vec3 uForward;

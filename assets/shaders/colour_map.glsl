@@ -41,10 +41,3 @@ vec3 albedo(int triangle, float value)
     if (vertexNormal[v.x].w + vertexNormal[v.y].w + vertexNormal[v.z].w > 0.0) return uNanColour;
     return colormap(normalizedScalar(value));
 }
-
-// core::srgbFromLinear: the colour attachment holds sRGB-encoded 8-bit values, as the PNGs do.
-vec3 srgbFromLinear(vec3 c)
-{
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
-}

@@ -14,13 +14,13 @@ vec3 initialVelocity(vec3 gradient, vec3 viewDirection, float alpha)
 }
 
 // render::integrateCurvedRay from @a p with velocity @a v: symplectic Euler, h = uStep; true
-// when it lands (phi < uEpsilon), with p and v there.
+// when it lands (phi < uLanding voxels), with p and v there.
 bool integrateCurvedRay(inout vec3 p, inout vec3 v)
 {
     vec3 gradient;
     for (int step = 0; step < uMaxSteps; ++step) {
         float phi = phiAndGradient(p, gradient);
-        if (phi < uEpsilon) return true;
+        if (phi < uLanding * uVoxel) return true;
         if (phi >= uEscape) return false;
         v -= uStep * gradient;
         float speed = length(v);

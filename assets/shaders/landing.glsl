@@ -2,7 +2,7 @@
 uniform float uIndirectBrightness;
 uniform bool uShadeIndirect;   // light indirect pixels from their arriving ray (else flat colour)
 uniform bool uIndirectShadows; // shadow them too (not where the rays arrive from inside the object)
-uniform float uEpsilon;         // landing threshold: phi < this
+uniform float uLanding;         // landing threshold in voxels: phi < uLanding * uVoxel (render::landingEpsilon)
 
 // render::landedAt + Shader::shade for an indirect pixel: the nearest voxel's triangle, the
 // exact closest point on it (core::closestPointOnTriangle), lit from the arriving ray and dimmed.
@@ -50,7 +50,7 @@ vec3 toLightAlong(vec3 arrival)
     vec3 right = cross(arrival, uUp);
     right = length(right) > 1e-3 ? normalize(right) : uRight;
     vec3 up = cross(right, arrival);
-    return normalize(-0.35 * right + 0.55 * up - 0.75 * arrival);
+    return normalize(kKeyLightRight * right + kKeyLightUp * up + kKeyLightForward * arrival);
 }
 
 // Colour of an indirect pixel that shows point @a barycentric of @a triangle, seen along @a arrival.

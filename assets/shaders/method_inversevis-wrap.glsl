@@ -7,17 +7,18 @@ uniform float uStableShift;
 layout(std430, binding = 4) readonly buffer LocalRadii { float localRadius[]; };  // render::vertexLocalRadii
 
 // render::findClosestApproach: the point of the view ray closest to the surface, within the hull,
-// centred in the ray's valley where phi stays within a voxel of its least.
+// centred in the ray's valley where phi stays within a voxel of its least (the k* constants are
+// render's: app/viewer/shaders.cpp writes them).
 bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float distance)
 {
     float tEnter, tExit;
     seed = origin;
     distance = uHullOffset;
     if (!boxInterval(origin, direction, tEnter, tExit)) return false;
-    float tolerance = 0.25 * uVoxel;
+    float tolerance = kClosestApproachSpacing * uVoxel;
     float best = uHullOffset, tBest = tEnter;
     for (int pass = 0; pass < 2; ++pass) {  // coarse, then fine from the coarse best
-        float step = pass == 0 ? 16.0 * tolerance : tolerance;
+        float step = pass == 0 ? kClosestApproachCoarseSteps * tolerance : tolerance;
         float t = tEnter;
         for (int i = 0; i < uMaxHullSteps && t < tExit; ++i) {
             float phi = phiAt(origin + t * direction);
@@ -30,7 +31,7 @@ bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float dista
     }
     if (!(best < uHullOffset)) return false;
     float lo = max(tEnter, tBest - 2.0 * tolerance), hi = min(tExit, tBest + 2.0 * tolerance);
-    const float ratio = 0.6180340;
+    const float ratio = kGoldenSectionRatio;
     float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     float phiA = phiAt(origin + a * direction), phiB = phiAt(origin + b * direction);
     for (int k = 0; k < 64 && hi - lo > 1e-5; ++k) {
@@ -51,7 +52,7 @@ bool closestApproach(vec3 origin, vec3 direction, out vec3 seed, out float dista
     // The centre of the valley round that minimum, where phi stays within a voxel of it.
     float tMin = 0.5 * (lo + hi);
     float phiMin = phiAt(origin + tMin * direction);
-    float depth = 1.0 * uVoxel;  // render::kClosestApproachValley
+    float depth = kClosestApproachValley * uVoxel;
     float weights = 0.0, weighted = 0.0;
     for (int side = -1; side <= 1; side += 2) {
         float s = side > 0 ? tolerance : 0.0;
@@ -110,7 +111,7 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     vec3 along = normalize(initialVelocity(gradient, direction, 1.0));
     // The ray, and the rays of the neighbouring pixels across the ring: seeds a step further in and
     // out (WrapInverseVisMethod's kNeighbourStep), the ring coordinate moving with them.
-    float step = min(0.003, distance);
+    float step = min(kWrapProbeStep, distance);
     vec3 here = seed, inner = seed - step * outward, outer = seed + step * outward;
     vec3 v = wrapLaunch(ring, along, outward);
     vec3 vInner = wrapLaunch(ring - step / width, along, outward);

@@ -2,8 +2,7 @@
 // MirrorMethod's MirrorMap::map).
 // ---- quadratic mirror (render::MirrorParams)
 uniform float uMirrorW[5];
-uniform float uMirrorZm;        // apex height in eye space
-uniform int uMirrorMaxSteps;
+uniform float uMirrorDistanceBehind;  // the apex behind the object's centre (render::MirrorParams)
 
 vec3 toEye(vec3 v) { return vec3(dot(v, uRight), dot(v, uUp), -dot(v, uForward)); }
 vec3 toWorld(vec3 v) { return v.x * uRight + v.y * uUp - v.z * uForward; }
@@ -39,16 +38,17 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     vec3 o = toEye(origin - uEye), r = toEye(direction);
     float a = -(w0 * r.x * r.x + w1 * r.y * r.y + w2 * r.x * r.y);
     float b = r.z - (2.0 * w0 * o.x * r.x + 2.0 * w1 * o.y * r.y + w2 * (o.x * r.y + o.y * r.x) + w3 * r.x + w4 * r.y);
-    float c = o.z - uMirrorZm - (w0 * o.x * o.x + w1 * o.y * o.y + w2 * o.x * o.y + w3 * o.x + w4 * o.y);
+    float zm = -uTargetDistance - uMirrorDistanceBehind;  // the apex's height in eye space
+    float c = o.z - zm - (w0 * o.x * o.x + w1 * o.y * o.y + w2 * o.x * o.y + w3 * o.x + w4 * o.y);
     float t;
     if (!smallestPositiveRoot(a, b, c, t)) return false;
     vec3 m = o + t * r;
     vec3 normal = toWorld(normalize(vec3(-2.0 * w0 * m.x - w2 * m.y - w3, -2.0 * w1 * m.y - w2 * m.x - w4, 1.0)));
     vec3 p = uEye + toWorld(m);
-    for (int step = 0; step < uMirrorMaxSteps; ++step) {
+    for (int step = 0; step < kMirrorMaxSteps; ++step) {
         if (any(greaterThan(abs(p), vec3(uBoxHalf)))) return false;
         float phi = phiAt(p);
-        if (phi < uEpsilon) return shadeLanding(p, normal, colour);
+        if (phi < uLanding * uVoxel) return shadeLanding(p, normal, colour);
         p += phi * normal;
     }
     return false;

@@ -3,7 +3,7 @@
 // ---- ring map (render::RingLayout, pixels)
 uniform vec2 uRingPixelCentre;
 uniform float uRingInner;
-uniform float uRingOuter;
+uniform float uRingWidth;       // r2 - r1 in image half-heights (render::RingParams::ringWidth)
 uniform vec2 uBackCentre;
 uniform float uBackRadius;
 uniform vec3 uRingCentre;       // the centre c the ring rays start from
@@ -13,7 +13,7 @@ uniform float uInteriorStep;    // largest trusted step where phi < 0 (inside a 
 const float kPi = 3.14159265358979;
 
 // The ring map's CPU reference intersects its straight ray with the BVH. Here the ray was
-// sphere-traced to within uEpsilon of the surface at p: intersect it exactly (Moller-Trumbore) with
+// sphere-traced to within uLanding voxels of the surface at p: intersect it exactly (Moller-Trumbore) with
 // the triangles stored at the 8 voxels around p and take the first hit; when none is hit (grazing
 // rays), take the closest stored point to p.
 bool shadeRayLanding(vec3 origin, vec3 direction, vec3 p, out vec3 colour)
@@ -64,16 +64,17 @@ bool ringRayDirection(vec2 pixel, out vec3 direction)
     }
     vec2 offset = pixel - uRingPixelCentre;
     float r = length(offset);
-    if (r < uRingInner || r > uRingOuter) return false;
+    float outer = uRingInner + uRingWidth * 0.5 * uViewport.y;  // render::layoutRings
+    if (r < uRingInner || r > outer) return false;
     vec3 u = normalize(offset.x * uRight - offset.y * uUp);
-    float k = 2.0 * r / (uRingInner + uRingOuter) - 1.0;
+    float k = 2.0 * r / (uRingInner + outer) - 1.0;
     direction = normalize(u + k * uForward);
     return true;
 }
 
 // The indirect ray of @a pixel: the ring ray from the centre uRingCentre. The CPU intersects it with
 // the BVH; here it is sphere-traced with |phi| (steps capped inside closed meshes, where the field
-// only bounds the distance) and lands within uEpsilon of the same first hit.
+// only bounds the distance) and lands within uLanding voxels of the same first hit.
 bool indirectRay(vec2 pixel, out vec3 colour)
 {
     colour = vec3(0.0);
@@ -84,7 +85,7 @@ bool indirectRay(vec2 pixel, out vec3 colour)
         vec3 p = uRingCentre + t * direction;
         if (any(greaterThan(abs(p), vec3(uBoxHalf)))) return false;
         float phi = phiAt(p);
-        if (abs(phi) < uEpsilon) return shadeRayLanding(uRingCentre, direction, p, colour);
+        if (abs(phi) < uLanding * uVoxel) return shadeRayLanding(uRingCentre, direction, p, colour);
         t += phi > 0.0 ? phi : min(-phi, uInteriorStep);
     }
     return false;

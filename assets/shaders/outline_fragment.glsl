@@ -12,9 +12,6 @@ bool isDirect(ivec2 p, ivec2 size)
     return imageLoad(uRegionImage, p).r == kDirect;
 }
 
-float linearFromSrgb(float c) { return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4); }
-float srgbFromLinear(float c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055; }
-
 void main()
 {
     ivec2 size = imageSize(uRegionImage);
@@ -30,7 +27,5 @@ void main()
     if (!edge) return;
     // core::Image::blendOver(colour 0.05, opacity 0.85) in linear light, stored sRGB-encoded.
     vec4 stored = imageLoad(uColourImage, p);
-    vec3 c;
-    for (int i = 0; i < 3; ++i) c[i] = srgbFromLinear(mix(linearFromSrgb(stored[i]), 0.05, 0.85));
-    imageStore(uColourImage, p, vec4(c, stored.a));
+    imageStore(uColourImage, p, vec4(srgbFromLinear(mix(linearFromSrgb(stored.rgb), vec3(0.05), 0.85)), stored.a));
 }

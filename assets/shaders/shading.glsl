@@ -8,30 +8,30 @@ uniform vec3 uSurfaceHi;
 
 // render::shadowFactor: soft shadow toward the key light, sphere-traced by max(phi, distance to the
 // surface's box) (phi is clamped beyond the field's reach) until the ray leaves the box for good; on
-// an unsigned field a wall thinner than a step shows up as phi falling then rising within two voxels.
+// an unsigned field a wall thinner than a step shows up as phi falling then rising within
+// kShadowWallVoxels. The k* constants are render's (app/viewer/shaders.cpp writes them).
 float shadowFactor(vec3 point, vec3 normal, vec3 toLight)
 {
-    const float kSoftness = 8.0;
-    float hitDistance = 0.5 * uVoxel;
-    vec3 start = point + 2.0 * uVoxel * normal;
+    float hitDistance = kShadowHitVoxels * uVoxel;
+    vec3 start = point + kShadowStartVoxels * uVoxel * normal;
     float lit = 1.0;
     float t = uVoxel;
     float previousSlope = 0.0;
-    for (int step = 0; step < 512 && t < 6.0; ++step) {
+    for (int step = 0; step < kShadowMaxSteps && t < kShadowMaxDistance; ++step) {
         vec3 p = start + t * toLight;
         vec3 gradient;
         float phi = phiAndGradient(p, gradient);
         if (phi < hitDistance) return 0.0;
         float slope = dot(gradient, toLight);
-        if (phi < 2.0 * uVoxel && previousSlope < 0.0 && slope > 0.0 && uUnsigned) return 0.0;
+        if (phi < kShadowWallVoxels * uVoxel && previousSlope < 0.0 && slope > 0.0 && uUnsigned) return 0.0;
         previousSlope = slope;
         float distance = max(phi, length(max(max(uSurfaceLo - p, p - uSurfaceHi), vec3(0.0))));
-        lit = min(lit, kSoftness * distance / t);
+        lit = min(lit, kShadowSoftness * distance / t);
         bool leaves = false;  // left the surface's box for good: nothing ahead can shadow it
         for (int a = 0; a < 3; ++a)
             leaves = leaves || (p[a] > uSurfaceHi[a] && toLight[a] >= 0.0) || (p[a] < uSurfaceLo[a] && toLight[a] <= 0.0);
         if (leaves) break;
-        t += max(distance, 0.5 * uVoxel);
+        t += max(distance, kShadowLeastStepVoxels * uVoxel);
     }
     return clamp(lit, 0.0, 1.0);
 }

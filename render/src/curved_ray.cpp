@@ -130,7 +130,7 @@ float goldenMinimum(DistanceField::Sampler& sampler, const glm::vec3& origin, co
                     float hi)
 {
     // Each step keeps one inner point of the last (it lies at the golden ratio of the new interval).
-    const float ratio = 0.6180340f;
+    const float ratio = kGoldenSectionRatio;
     float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     float phiA = sampler.phi(origin + a * direction), phiB = sampler.phi(origin + b * direction);
     for (int k = 0; k < 64 && hi - lo > 1e-5f; ++k) {  // far from the origin a float step exceeds 1e-5

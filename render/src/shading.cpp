@@ -14,7 +14,8 @@ Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const S
     : mScene(scene),
       mOptions(options),
       mColormap(core::colormap(options.colormap)),
-      mToLight(glm::normalize(glm::vec3(-0.35 * frame.right() + 0.55 * frame.upVector() - 0.75 * frame.forward()))),
+      mToLight(glm::normalize(glm::vec3(kKeyLightRight * frame.right() + kKeyLightUp * frame.upVector() +
+                                        kKeyLightForward * frame.forward()))),
       mUp(frame.upVector()),
       mRight(frame.right()),
       mIndirectShadows(options.shadows && method.indirectRaysArriveFromOutside()),
@@ -28,7 +29,7 @@ glm::vec3 Shader::toLightAlong(const glm::vec3& arrival) const
     glm::vec3 right = glm::cross(arrival, mUp);
     right = glm::length(right) > 1e-3f ? glm::normalize(right) : mRight;
     const glm::vec3 up = glm::cross(right, arrival);
-    return glm::normalize(-0.35f * right + 0.55f * up - 0.75f * arrival);
+    return glm::normalize(float(kKeyLightRight) * right + float(kKeyLightUp) * up + float(kKeyLightForward) * arrival);
 }
 
 float Shader::lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& toLight, bool shadows,

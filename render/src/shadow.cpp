@@ -28,15 +28,14 @@ bool leavesBox(const glm::vec3& p, const glm::vec3& d, const glm::vec3& lo, cons
 float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, const glm::vec3& normal,
                    const glm::vec3& toLight, const core::Bounds3& surfaceBox)
 {
-    constexpr float kSoftness = 8.0f;
     const float voxel = sampler.field().voxelSize();
-    const float hitDistance = 0.5f * voxel;
+    const float hitDistance = kShadowHitVoxels * voxel;
     const glm::vec3 lo(surfaceBox.lo), hi(surfaceBox.hi);
-    const glm::vec3 start = point + 2.0f * voxel * normal;
+    const glm::vec3 start = point + kShadowStartVoxels * voxel * normal;
     float lit = 1.0f;
     float t = voxel;
     float previousSlope = 0.0f;  // d phi / dt at the previous sample
-    for (int step = 0; step < 512 && t < 6.0f; ++step) {
+    for (int step = 0; step < kShadowMaxSteps && t < kShadowMaxDistance; ++step) {
         const glm::vec3 p = start + t * toLight;
         glm::vec3 gradient;
         const float phi = sampler.phiAndGradient(p, gradient);
@@ -44,15 +43,15 @@ float shadowFactor(DistanceField::Sampler& sampler, const glm::vec3& point, cons
         // An unsigned distance never goes negative: a wall thinner than the step shows up as phi
         // falling then rising again while it is within two voxels.
         const float slope = glm::dot(gradient, toLight);
-        if (phi < 2.0f * voxel && previousSlope < 0.0f && slope > 0.0f && sampler.field().isUnsigned()) return 0.0f;
+        if (phi < kShadowWallVoxels * voxel && previousSlope < 0.0f && slope > 0.0f && sampler.field().isUnsigned()) return 0.0f;
         previousSlope = slope;
         // Beyond the field's reach phi is clamped; the distance to the surface's box bounds the
         // true distance from below there, so a ray leaving the object is not darkened by the clamp,
         // and it ends once it has left the box for good.
         const float distance = std::max(phi, distanceToBox(p, lo, hi));
-        lit = std::min(lit, kSoftness * distance / t);
+        lit = std::min(lit, kShadowSoftness * distance / t);
         if (leavesBox(p, toLight, lo, hi)) break;  // nothing ahead can shadow it
-        t += std::max(distance, 0.5f * voxel);
+        t += std::max(distance, kShadowLeastStepVoxels * voxel);
     }
     return std::clamp(lit, 0.0f, 1.0f);
 }

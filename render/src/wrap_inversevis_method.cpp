@@ -6,14 +6,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace ivis::render {
 namespace {
-
-/// A landing is stable when the rays of the ring's neighbouring pixels, their seeds this much
-/// further in and out (about one pixel of a 1000-pixel picture of the object, normalised units),
-/// land on a straight line through it, within WrapLaunch::stableShift.
-constexpr float kNeighbourStep = 0.003f;
 
 /// The wrap's ray parameters by default: a hull wider than the paper's 0.4, so that a thick
 /// part's rings reach further round it, and rays that land a fifth as far from the surface as
@@ -107,7 +103,7 @@ int WrapInverseVisMethod::stabilityProbes(const CurvedRayStart& start, CurvedRay
     // outward gradient and the ring coordinate with it, as the neighbouring pixel's ray would.
     const glm::vec3 outward = outwardAt(start);
     const glm::vec3 along = glm::normalize(start.tangent);
-    const float step = std::min(kNeighbourStep, start.seedDistance);  // the inner seed stays off the surface
+    const float step = std::min(kWrapProbeStep, start.seedDistance);  // the inner seed stays off the surface
     const RingPosition& ring = *start.ring;
     for (int k = 0; k < 2; ++k) {
         const float shift = k == 0 ? -step : step;
@@ -134,7 +130,7 @@ bool WrapInverseVisMethod::isStable(CurvedRayStart& start, const CurvedRayEnd& o
 
 std::optional<StabilityScale> WrapInverseVisMethod::stabilityScale() const
 {
-    return StabilityScale{mLaunch.stableShift, kNeighbourStep};
+    return StabilityScale{mLaunch.stableShift, kWrapProbeStep};
 }
 
 glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
@@ -155,11 +151,15 @@ const MethodInfo& wrapInverseVisMethodInfo()
         i.help = "curved rays from the view ray's closest approach, unwrapping the back side outward from the "
                  "silhouette in rings as wide as each part is thick (beyond the paper)";
         const WrapLaunch defaults;
+        char probeStep[16];
+        std::snprintf(probeStep, sizeof probeStep, "%g", double(kWrapProbeStep));
         i.parameters = {
             {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha},
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
-            {"stable_shift", "largest bend (normalised units) of the landings of a ray and of the rays seeded 0.003 further in and out across its ring (its neighbouring pixels'); rays that bend more fly chaotically or straddle a tear and are not drawn",
+            {"stable_shift", std::string("largest bend (normalised units) of the landings of a ray and of the rays seeded ") + probeStep +
+                                 " further in and out across its ring (its neighbouring pixels'); rays that bend more fly "
+                                 "chaotically or straddle a tear and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f},
             {"landing", "a ray lands where phi falls below this many fine voxels (the paper's model: half a voxel)",
              {wrapRayDefaults().landingVoxels}, 0.01f, 1.0f, false, false, false, true}};

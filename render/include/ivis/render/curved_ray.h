@@ -47,12 +47,15 @@ void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, co
                    std::size_t count, float hullOffset, const core::Bounds3& hullBox, glm::vec3* seeds, bool* found);
 
 /// @brief How far above its lowest value (in fine voxels) phi may rise along a view ray within the
-///        valley whose centre findClosestApproach takes.
+///        valley whose centre findClosestApproach takes. This and the constants below are the
+///        viewer's shader's too (app/viewer/shaders.cpp writes them into it).
 constexpr float kClosestApproachValley = 1.0f;
 /// @brief The spacing (in fine voxels) of findClosestApproach's fine march and of its valley's samples.
 constexpr float kClosestApproachSpacing = 0.25f;
 /// @brief findClosestApproach's coarse march steps this many times kClosestApproachSpacing.
 constexpr float kClosestApproachCoarseSteps = 16.0f;
+/// @brief The golden-section search's ratio, (sqrt 5 - 1) / 2.
+constexpr float kGoldenSectionRatio = 0.6180340f;
 
 /// @brief The point of the straight ray origin + t dir (t >= 0) closest to the surface, where it
 ///        comes within @a hullOffset of it: phi sampled along the ray inside @a hullBox, skipping

@@ -139,6 +139,7 @@ public:
     }
 
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    bool drawsIndirect() const override { return true; }
     /// @brief The hull {phi = hull_offset}: the mesh grown by the hull offset (offsetMeshExtent).
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     const CurvedRayMethod* curved() const override { return this; }

@@ -103,6 +103,8 @@ public:
     virtual core::FaceFilter directFaces() const { return core::FaceFilter::Any; }
     /// @brief The map of the pixels that miss the surface for one view; null when they stay background.
     virtual std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const;
+    /// @brief Whether indirectMap() maps the pixels that miss the surface (false: they stay background).
+    virtual bool drawsIndirect() const { return false; }
     /// @brief How far this method's picture seen from @a camera reaches: the object and the region
     ///        where its indirect pixels can lie (render/framing.h fits the field of view to it).
     ///        By default the object's own extent.

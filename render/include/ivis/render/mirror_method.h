@@ -19,6 +19,7 @@ public:
     const MethodInfo& info() const override { return mirrorMethodInfo(); }
     ParameterValues values() const override;
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    bool drawsIndirect() const override { return true; }
     /// @brief The object and the mirror's footprint (mirrorFootprint).
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     /// @brief The mirror parameters.

@@ -20,6 +20,7 @@ public:
     ParameterValues values() const override;
     bool indirectRaysArriveFromOutside() const override { return false; }
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
+    bool drawsIndirect() const override { return true; }
     /// @brief The outer ring (ringExtent).
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     /// @brief The ring parameters.

@@ -17,6 +17,10 @@
 
 namespace ivis::render {
 
+/// @brief The key light's direction in a camera's frame, normalised after weighting its right, up
+///        and forward vectors: above left of the camera (the viewer's shader reads them too).
+inline constexpr double kKeyLightRight = -0.35, kKeyLightUp = 0.55, kKeyLightForward = -0.75;
+
 /// @brief Look of the rendered pixels (colours are linear RGB).
 struct ShadingOptions {
     std::string colormap = "viridis";

@@ -11,6 +11,11 @@
 
 namespace ivis::render {
 
+/// @brief The stability rule's probes are seeded this far (normalised units) further in and out
+///        across the ring: about one pixel of a 1000-pixel picture of the object (the viewer's
+///        shader reads it too).
+inline constexpr float kWrapProbeStep = 0.003f;
+
 /// @brief Launch of the wrap rays across the ring coordinate t in [0, 1).
 struct WrapLaunch {
     float ringScale = 12.0f;  ///< ring width in local radii of the part it surrounds (at most the hull offset)
