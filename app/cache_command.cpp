@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "mesh_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/log.h>
 
@@ -33,7 +34,7 @@ std::vector<CacheEntry> cacheEntries(const std::string& folder)
     if (!fs::exists(folder)) return entries;
     std::error_code error;
     for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
-        if (!entry.is_regular_file() || !isVolumeCacheName(entry.path().filename().string())) continue;
+        if (!entry.is_regular_file() || !vdb::isVolumeCacheName(entry.path().filename().string())) continue;
         entries.push_back({entry.path(), entry.file_size()});
     }
     if (error) throw InputError(folder + ": cannot list the cache folder (" + error.message() + ")");
@@ -65,7 +66,7 @@ Command addCacheCommand(CLI::App& app)
     clear->fallthrough();
 
     return {command, [cacheDir, list, clear] {
-        const std::string folder = cacheFolder(*cacheDir, false);
+        const std::string folder = vdb::cacheFolder(*cacheDir, false);
         const std::vector<CacheEntry> entries = cacheEntries(folder);
         std::uintmax_t total = 0;
         for (const CacheEntry& e : entries) total += e.bytes;

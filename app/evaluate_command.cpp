@@ -9,6 +9,7 @@
 #include "evaluation_report.h"
 #include "optimization_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
@@ -223,7 +224,7 @@ Command addEvaluateCommand(CLI::App& app)
         }
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
-        const std::string cacheFolder = optionalCacheFolder(options->cacheDir);
+        const std::string cacheFolder = vdb::optionalCacheFolder(options->cacheDir);
 
         for (const std::string& mesh : options->meshes) {
             std::vector<std::string> methods;  // of this mesh, as --only selects them
@@ -239,7 +240,7 @@ Command addEvaluateCommand(CLI::App& app)
             progress.setContext(meshLabel);
             const core::SurfaceField field = core::loadSurface(mesh, options->mesh.load);
             const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-                field.mesh, volumeOptions, defaultVolumePath(cacheFolder, mesh, field.mesh, volumeOptions),
+                field.mesh, volumeOptions, vdb::defaultVolumePath(cacheFolder, mesh, field.mesh, volumeOptions),
                 &progress);
             const render::RenderScene scene(field, volume);
             const core::ScalarRange range = core::scalarRangeFromData(field.values);

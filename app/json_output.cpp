@@ -25,17 +25,6 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
     return json;
 }
 
-nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
-{
-    const std::string& parameter = setting.method->info().readabilityParameter;
-    return {{"parameter", parameter},
-            {"value", setting.method->values().at(parameter).at(0)},
-            {"estimated_coherence", setting.coherence.value()},
-            {"sampled_pairs", setting.coherence.pairs},
-            {"picture_size", {setting.size.x, setting.size.y}},
-            {"keeps_min_coherence", setting.keepsMinimum}};
-}
-
 std::string readableSettingLine(const optimize::ReadableSetting& setting)
 {
     const std::string& parameter = setting.method->info().readabilityParameter;

@@ -16,9 +16,6 @@ namespace ivis::app {
 ///        and, for a finalist, its energy on the finalists' evaluator.
 nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 
-/// @brief The readability step's choice (optimize::loosestReadable): parameter, value, its
-///        estimated coherence, the sampled pairs it was estimated on and that picture's size.
-nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting);
 /// @brief "readable rule: stable_shift 0.02, estimated coherence 0.9931 on 20051 sampled pairs of a
 ///        1000x1000 picture".
 std::string readableSettingLine(const optimize::ReadableSetting& setting);

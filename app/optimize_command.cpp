@@ -10,6 +10,7 @@
 #include "series_survey.h"
 #include "view_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
@@ -132,11 +133,11 @@ Command addOptimizeCommand(CLI::App& app)
         render::RenderOptions renderOptions = options->view.renderOptions(field);
         const core::ScalarRange importanceRange = isSeries ? core::ScalarRange{0.0f, 1.0f} : renderOptions.shading.scale.range;
         const std::string source = isSeries ? series->source() : options->mesh.source;
-        const std::string folder = optionalCacheFolder(options->cacheDir);
+        const std::string folder = vdb::optionalCacheFolder(options->cacheDir);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(source));
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(
-            field.mesh, volumeOptions, defaultVolumePath(folder, source, field.mesh, volumeOptions),
+            field.mesh, volumeOptions, vdb::defaultVolumePath(folder, source, field.mesh, volumeOptions),
             &progress);
         const render::RenderScene scene(field, volume);
 

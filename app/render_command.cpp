@@ -11,12 +11,14 @@
 #include "series_survey.h"
 #include "view_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture.h>
 #include <ivis/optimize/readability.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
@@ -51,7 +53,7 @@ Command addRenderCommand(CLI::App& app)
         double fps = 5;
         bool noVideo = false;
         bool measure = false;
-        double minCoherence = 0.99;
+        double minCoherence = optimize::kDefaultMinCoherence;
         std::vector<CLI::Option*> seriesFlags;
     };
     auto options = std::make_shared<Options>();
@@ -207,7 +209,7 @@ Command addRenderCommand(CLI::App& app)
                 return;
             }
             request.volume = volumeOptions;
-            request.cacheFolder = optionalCacheFolder(options->cacheDir);  // after the checks: their one line
+            request.cacheFolder = vdb::optionalCacheFolder(options->cacheDir);  // after the checks: their one line
             request.cameraOut = options->cameraOut;
             request.fps = options->fps;
             request.measure = options->measure;
@@ -235,21 +237,20 @@ Command addRenderCommand(CLI::App& app)
         }
 
         const std::string volumePath =
-            defaultVolumePath(optionalCacheFolder(options->cacheDir), options->mesh.source, field.mesh, volumeOptions);
+            vdb::defaultVolumePath(vdb::optionalCacheFolder(options->cacheDir), options->mesh.source, field.mesh, volumeOptions);
         const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
         const render::RenderScene scene(field, volume);
-        core::Camera camera = options->view.pictureCamera(scene, requested, *renderOptions.method,
-                                                          renderOptions.width, renderOptions.height);
-        std::optional<optimize::ReadableSetting> readable;
-        if (chooseRule) {
-            const glm::ivec2 judged = optimize::readabilityPictureSize(renderOptions.width, renderOptions.height);
-            readable = optimize::loosestReadable(scene, camera, renderOptions.method, judged, options->minCoherence);
-            core::logInfo(readableSettingLine(*readable));
-            renderOptions.method = readable->method;
-            camera = options->view.pictureCamera(scene, requested, *renderOptions.method, renderOptions.width,
-                                                 renderOptions.height);
-        }
-        const render::RenderResult result = render::renderImage(scene, camera, renderOptions, &progress);
+        optimize::PictureRequest pictureRequest;
+        pictureRequest.options = renderOptions;
+        pictureRequest.camera = requested;
+        pictureRequest.framed = options->view.framed();
+        pictureRequest.minCoherence = chooseRule ? options->minCoherence : 0.0;
+        const optimize::Picture picture = optimize::makePicture(scene, pictureRequest, &progress);
+        if (picture.readable) core::logInfo(readableSettingLine(*picture.readable));
+        const std::optional<optimize::ReadableSetting>& readable = picture.readable;
+        const core::Camera& camera = picture.camera;
+        renderOptions.method = picture.method;
+        const render::RenderResult& result = picture.result;
 
         // Every output under a temporary name, renamed into place together once all are written.
         core::AtomicFileSet files;

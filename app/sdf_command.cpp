@@ -3,6 +3,7 @@
 #include "mesh_options.h"
 #include "output_files.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
 #include <ivis/render/method_registry.h>
@@ -39,11 +40,11 @@ Command addSdfCommand(CLI::App& app)
         options->mesh.raiseReachFor({render::defaultMethod()});  // the volume `render` uses by default
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         // The cache is sdf's output: a folder it cannot write is refused before the mesh is read.
-        const std::string folder = options->output.empty() ? writableCacheFolder(options->cacheDir) : "";
+        const std::string folder = options->output.empty() ? vdb::writableCacheFolder(options->cacheDir) : "";
         options->mesh.load.defaultArray = false;  // the volume shows no scalar: no note of one
         const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
         const std::string path = options->output.empty()
-                                     ? defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions)
+                                     ? vdb::defaultVolumePath(folder, options->mesh.source, field.mesh, volumeOptions)
                                      : options->output;
         vdb::CacheOutcome outcome{};
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info && !options->json);

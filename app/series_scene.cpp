@@ -2,6 +2,7 @@
 
 #include "mesh_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/content_hash.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -22,7 +23,7 @@ std::string SeriesScene::show(core::SurfaceField field, core::Interrupter* inter
     }
     mScene.reset();
     mField = std::make_unique<core::SurfaceField>(std::move(field));
-    mVolumePath = defaultVolumePath(mCacheFolder, mSource, mField->mesh, mOptions);
+    mVolumePath = vdb::defaultVolumePath(mCacheFolder, mSource, mField->mesh, mOptions);
     vdb::CacheOutcome outcome{};
     mVolume = std::make_unique<vdb::SurfaceVolume>(
         vdb::loadOrBuildVolume(mField->mesh, mOptions, mVolumePath, interrupter, &outcome));

@@ -18,7 +18,7 @@ namespace ivis::app {
 /// @brief The current step's field, volume and render scene.
 class SeriesScene {
 public:
-    /// @param cacheFolder folder of the volume caches, named defaultVolumePath(cacheFolder, @a source, ...)
+    /// @param cacheFolder folder of the volume caches, named vdb::defaultVolumePath(cacheFolder, @a source, ...)
     /// @param source the source that names the series (core::SurfaceSeries::source)
     SeriesScene(const vdb::VolumeOptions& options, std::string cacheFolder, std::string source);
 

@@ -3,8 +3,7 @@
 #include "cli_checks.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/core/log.h>
-#include <ivis/render/framing.h>
+#include <ivis/optimize/picture.h>
 
 #include <cstdio>
 
@@ -108,14 +107,7 @@ core::Camera ViewOptions::camera() const
 core::Camera ViewOptions::pictureCamera(const render::RenderScene& scene, const core::Camera& camera,
                                         const render::Method& method, int width, int height) const
 {
-    if (!framed()) return camera;
-    bool fits = true;
-    const core::Camera framedCamera = render::frameView(scene, camera, method, double(width) / height, &fits);
-    if (!fits)
-        core::logWarning(method.name() + "'s picture from theta " + std::to_string(camera.angles().x) + " phi " +
-                         std::to_string(camera.angles().y) + " does not fit the widest framed field of view; it is "
-                         "cut at the frame");
-    return framedCamera;
+    return framed() ? optimize::framedCamera(scene, camera, method, width, height) : camera;
 }
 
 std::string ViewOptions::describeFraming(const core::Camera& camera) const

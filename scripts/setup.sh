@@ -10,6 +10,7 @@ IVIS_PACKAGES=(
   libopenvdb-dev libboost-iostreams-dev libtbb-dev libopenmesh-dev libopenexr-dev
   libglm-dev libpng-dev libfreetype-dev fonts-dejavu-core nlohmann-json3-dev libcli11-dev libgtest-dev libembree-dev libpugixml-dev zlib1g-dev
   libglfw3-dev libepoxy-dev libimgui-dev xvfb libgl1-mesa-dri xauth
+  python3-dev pybind11-dev python3-numpy python3-pytest
   ffmpeg  # for the tests only: the MP4 of a rendered series (the tool runs without it)
 )
 

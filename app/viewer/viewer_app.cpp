@@ -6,6 +6,7 @@
 #include "../frame_video.h"
 #include "../mesh_options.h"
 
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/image_io.h>
@@ -64,7 +65,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
       mField(std::make_unique<core::SurfaceField>(std::move(field))),
       mSeries(std::move(series)),
       mSurvey(std::move(survey)),
-      mCacheFolder(optionalCacheFolder(options.cacheDir))  // once: a series' every geometry would warn
+      mCacheFolder(vdb::optionalCacheFolder(options.cacheDir))  // once: a series' every geometry would warn
 {
     mPlayRate = float(mOptions.playRate);
     mOptions.view.resolution = std::to_string(options.width) + "x" + std::to_string(options.height);
@@ -156,7 +157,7 @@ void ViewerApp::startLoading()
 {
     const vdb::VolumeOptions volumeOptions = mOptions.mesh.volumeOptions();
     const std::string cachePath =
-        defaultVolumePath(mCacheFolder, mOptions.mesh.source, mField->mesh, volumeOptions);
+        vdb::defaultVolumePath(mCacheFolder, mOptions.mesh.source, mField->mesh, volumeOptions);
     DenseSliceOptions slices;
     slices.budgetBytes = std::size_t(mOptions.textureBudgetMiB) << 20;
     GLint maxSize = 0;

@@ -36,7 +36,7 @@ struct ViewerOptions {
     double playRate = 4.0;      ///< steps per second while playing (the panel's "steps/s")
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
-    std::string cacheDir;       ///< --cache-dir ("" = app::cacheFolder's default)
+    std::string cacheDir;       ///< --cache-dir ("" = vdb::cacheFolder's default)
     int textureBudgetMiB = 512; ///< GPU memory allowed for the volume textures
 
     /// @brief Registers every option on @a app.

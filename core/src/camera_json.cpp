@@ -76,10 +76,16 @@ Camera detail::parseCameraJson(const std::string& path, const std::string& text)
     }
 }
 
-void writeCameraJson(const Camera& camera, const std::string& path, const Similarity& meshUnits)
+nlohmann::json cameraFileJson(const Camera& camera, const Similarity& meshUnits)
 {
     nlohmann::json json = cameraToJson(camera);
     json["mesh_units"] = meshUnitsJson(meshUnits);
+    return json;
+}
+
+void writeCameraJson(const Camera& camera, const std::string& path, const Similarity& meshUnits)
+{
+    const nlohmann::json json = cameraFileJson(camera, meshUnits);
     writeAtomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
         out << json.dump(2) << "\n";

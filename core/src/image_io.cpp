@@ -60,14 +60,21 @@ std::vector<std::uint8_t> pngBytes(const Image& image, bool withAlpha)
     return bytes;
 }
 
-void writePngFile(const Image& image, const std::string& file, bool withAlpha)
+/// The png_image header of an 8-bit picture of @a image's size.
+png_image pngHeader(const Image& image, bool withAlpha)
 {
-    const std::vector<std::uint8_t> bytes = pngBytes(image, withAlpha);
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     png.width = static_cast<png_uint_32>(image.width());
     png.height = static_cast<png_uint_32>(image.height());
     png.format = withAlpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
+    return png;
+}
+
+void writePngFile(const Image& image, const std::string& file, bool withAlpha)
+{
+    const std::vector<std::uint8_t> bytes = pngBytes(image, withAlpha);
+    png_image png = pngHeader(image, withAlpha);
     std::FILE* stream = std::fopen(file.c_str(), "wb");
     if (!stream) throw errnoFailure();
     const bool written = png_image_write_to_stdio(&png, stream, 0, bytes.data(), 0, nullptr) != 0;
@@ -123,6 +130,31 @@ std::string channelList(const Imf::ChannelList& channels)
 }
 
 }  // namespace
+
+std::vector<std::uint8_t> srgbPixels(const Image& image, bool transparentBackground)
+{
+    return pngBytes(image, transparentBackground);
+}
+
+std::vector<std::uint8_t> encodePng(const Image& image, bool transparentBackground)
+{
+    if (image.width() == 0 || image.height() == 0) throw ValueError("cannot encode an empty image as PNG");
+    const std::vector<std::uint8_t> bytes = pngBytes(image, transparentBackground);
+    png_image png = pngHeader(image, transparentBackground);
+    png_alloc_size_t size = 0;  // first the size, then the bytes (libpng's simplified API)
+    if (!png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr)) {
+        const std::string message = png.message;
+        png_image_free(&png);
+        throw std::runtime_error("cannot encode a PNG: " + message);
+    }
+    std::vector<std::uint8_t> encoded(size);
+    const bool written = png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), 0, nullptr) != 0;
+    const std::string message = png.message;
+    png_image_free(&png);
+    if (!written) throw std::runtime_error("cannot encode a PNG: " + message);
+    encoded.resize(size);
+    return encoded;
+}
 
 void writePng(const Image& image, const std::string& path, bool transparentBackground)
 {

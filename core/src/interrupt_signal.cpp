@@ -20,4 +20,16 @@ void installInterruptHandler() { std::signal(SIGINT, onInterrupt); }
 
 bool interruptRequested() { return gInterrupted; }
 
+ScopedInterruptHandler::ScopedInterruptHandler()
+{
+    gInterrupted = false;
+    mPrevious = std::signal(SIGINT, onInterrupt);
+}
+
+ScopedInterruptHandler::~ScopedInterruptHandler()
+{
+    std::signal(SIGINT, mPrevious == SIG_ERR ? SIG_DFL : mPrevious);
+    gInterrupted = false;
+}
+
 }  // namespace ivis::core

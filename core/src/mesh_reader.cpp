@@ -122,6 +122,30 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options, M
     return std::move(field);
 }
 
+SurfaceField meshFromArrays(const std::string& name, std::vector<glm::vec3> positions,
+                            std::vector<std::int64_t> triangles, std::vector<DataArray> arrays,
+                            MeshReadReport* report)
+{
+    if (triangles.size() % 3 != 0) failInput(name, "the triangles' indices are not three per triangle");
+    RawMesh raw;
+    raw.positions = std::move(positions);
+    raw.cellCount = triangles.size() / 3;
+    raw.corners = std::move(triangles);
+    for (std::size_t f = 1; f <= raw.cellCount; ++f) raw.faceEnds.push_back(3 * f);
+    for (const DataArray& array : arrays) {
+        const std::size_t tuples = array.association == Association::Point ? raw.positions.size() : raw.cellCount;
+        if (array.components < 1 || array.values.size() != tuples * std::size_t(array.components))
+            failInput(name, std::string(associationName(array.association)) + " array '" + array.name + "' holds " +
+                                std::to_string(array.values.size()) + " values, not " + std::to_string(tuples) +
+                                " tuples of " + std::to_string(array.components));
+    }
+    raw.arrays = std::move(arrays);
+    LoadedMesh loaded = collect(name, std::move(raw), false);
+    loaded.field.sourcePath = name;
+    if (report != nullptr) *report = std::move(loaded.report);
+    return std::move(loaded.field);
+}
+
 MeshInfo describeMesh(const std::string& path)
 {
     LoadedMesh loaded = loadMesh(path);
@@ -136,14 +160,21 @@ MeshInfo describeMesh(const std::string& path)
     info.boundaryEdges = boundaryEdgeCount(mesh);
     info.components = componentCount(mesh);
     info.report = std::move(loaded.report);
-    const DataArray* shown = loaded.field.arrays.empty() ? nullptr : &defaultArray(loaded.field);
-    for (const DataArray& array : loaded.field.arrays) {
+    info.arrays = describeArrays(loaded.field);
+    return info;
+}
+
+std::vector<ArrayInfo> describeArrays(const SurfaceField& field)
+{
+    std::vector<ArrayInfo> infos;
+    const DataArray* shown = field.arrays.empty() ? nullptr : &defaultArray(field);
+    for (const DataArray& array : field.arrays) {
         ArrayInfo a{array.name, array.association, array.type, array.components, 0.0, 0.0, 0, &array == shown};
         std::tie(a.min, a.max) = finiteRange(array, array.defaultComponent());
         for (std::size_t t = 0; t < array.tuples(); ++t) a.nanCount += std::isnan(array.at(t, kMagnitude)) ? 1 : 0;
-        info.arrays.push_back(a);
+        infos.push_back(a);
     }
-    return info;
+    return infos;
 }
 
 std::vector<float> readScalarFile(const std::string& path, std::size_t expectedCount)

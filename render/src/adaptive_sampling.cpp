@@ -325,7 +325,7 @@ private:
             p = r.end.position;
             return r.state == PointState::Landed;
         };
-        glm::vec3 a, b, c;
+        glm::vec3 a(0.0f), b(0.0f), c(0.0f);
         if ((landing(x - dx, y - dy, a) && landing(x, y, b) && landing(x + dx, y + dy, c)) ||
             (landing(x, y, a) && landing(x + dx, y + dy, b) && landing(x + 2 * dx, y + 2 * dy, c)) ||
             (landing(x - 2 * dx, y - 2 * dy, a) && landing(x - dx, y - dy, b) && landing(x, y, c)))

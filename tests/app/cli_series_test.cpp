@@ -93,7 +93,7 @@ protected:
     }
     nlohmann::json stats() const { return nlohmann::json::parse(test::readFile(output("s.json"))); }
     /// The volume cache name of @a source's geometry at N = 48 for the default method, whose far field
-    /// reaches 1 (app/mesh_options.h defaultVolumePath).
+    /// reaches 1 (vdb/cache_folder.h defaultVolumePath).
     static std::string cacheName(const std::string& stem, const std::string& mesh, const std::string& scalar)
     {
         core::SurfaceLoadOptions options;

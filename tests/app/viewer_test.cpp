@@ -145,7 +145,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, 
     vdb::VolumeOptions volumeOptions;
     volumeOptions.resolution = volumeResolution;
     volumeOptions.farFieldReach = render::reachNeededBy({render::makeMethod(method)}, volumeOptions.farFieldReach);
-    // The viewer's cache name (app/mesh_options.h defaultVolumePath): it reuses this very volume.
+    // The viewer's cache name (vdb/cache_folder.h defaultVolumePath): it reuses this very volume.
     char reach[32];
     std::snprintf(reach, sizeof reach, ".reach%g", volumeOptions.farFieldReach);
     const std::string cache = dir.file(core::sourceStem(source) + "." + core::toHex(core::meshHash(field.mesh)) + ".res" +

@@ -1,6 +1,7 @@
 #include <ivis/optimize/readability.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/interrupt_signal.h>
 #include <ivis/render/curved_ray_method.h>
 #include <ivis/render/method_registry.h>
 
@@ -50,6 +51,7 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
     std::vector<glm::vec3> points(pixels);
     std::vector<float> bends(pixels, std::numeric_limits<float>::infinity());
     tbb::parallel_for(0, size.y, [&](int y) {
+        if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         render::DistanceField::Sampler sampler = scene.distance().sampler();
         std::vector<render::CurvedRayStart> aimed;
         std::vector<std::size_t> aimedAt;
@@ -79,6 +81,7 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
             bends[at[k]] = starts[k].bend;
         }
     });
+    if (core::interruptRequested()) throw Cancelled("readability step cancelled");
     std::vector<Coherence> result;
     std::vector<char> drawn(pixels);
     for (const float value : values) {
@@ -124,6 +127,17 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
     const bool keepsMinimum = coherenceLowerBound(coherence[chosen]) >= minCoherence;
     if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen], size, keepsMinimum};
     return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen], size, keepsMinimum};
+}
+
+nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
+{
+    const std::string& parameter = setting.method->info().readabilityParameter;
+    return {{"parameter", parameter},
+            {"value", setting.method->values().at(parameter).at(0)},
+            {"estimated_coherence", setting.coherence.value()},
+            {"sampled_pairs", setting.coherence.pairs},
+            {"picture_size", {setting.size.x, setting.size.y}},
+            {"keeps_min_coherence", setting.keepsMinimum}};
 }
 
 }  // namespace ivis::optimize

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
+#include <ivis/core/similarity.h>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,10 @@ namespace ivis::core {
 
 /// @brief The camera's JSON object.
 nlohmann::json cameraToJson(const Camera& camera);
+
+/// @brief What writeCameraJson writes: cameraToJson and the mesh's normalising transform
+///        @a meshUnits ("mesh_units").
+nlohmann::json cameraFileJson(const Camera& camera, const Similarity& meshUnits);
 
 /// @brief The camera of a JSON object: "eye" is required, missing other keys keep their defaults.
 /// @throw std::invalid_argument (or nlohmann::json's errors) for bad values; callers name the file

@@ -8,6 +8,7 @@
 #include <ivis/core/image.h>
 #include <ivis/core/similarity.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,14 @@ namespace ivis::core {
 /// @throw ValueError for an empty image; InputError "<path>: cannot write (<reason>)" on any I/O
 ///        failure (missing folder, no permission, disk full)
 void writePng(const Image& image, const std::string& path, bool transparentBackground);
+
+/// @brief The bytes of writePng's file, in memory (a notebook shows them).
+/// @throw ValueError for an empty image
+std::vector<std::uint8_t> encodePng(const Image& image, bool transparentBackground);
+
+/// @brief The 8-bit sRGB-encoded pixels writePng writes, row-major from the top row: RGBA with
+///        straight alpha when @a transparentBackground, else RGB.
+std::vector<std::uint8_t> srgbPixels(const Image& image, bool transparentBackground);
 
 /// @brief Reads any PNG as 8-bit sRGB RGBA (libpng converts other layouts) into a linear,
 ///        premultiplied Image.

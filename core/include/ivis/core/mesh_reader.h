@@ -18,6 +18,7 @@
 #include <ivis/core/surface_field.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -75,9 +76,23 @@ struct MeshInfo {
 SurfaceField readMesh(const std::string& path, const MeshReadOptions& options = {},
                       MeshReadReport* report = nullptr);
 
+/// @brief A mesh given as arrays (the Python module's Mesh(vertices, faces, ...)) as readMesh reads
+///        the same mesh from a file: coordinates checked finite, indices in range, degenerate
+///        triangles dropped (counted in @a report), the arrays attached (each checked to hold a
+///        tuple per point or per triangle), no scalar shown.
+/// @param name what messages call the mesh (one line "<name>: <problem>")
+/// @param triangles three vertex indices per triangle
+/// @throw InputError as readMesh; for an array of the wrong length, naming it
+SurfaceField meshFromArrays(const std::string& name, std::vector<glm::vec3> positions,
+                            std::vector<std::int64_t> triangles, std::vector<DataArray> arrays,
+                            MeshReadReport* report = nullptr);
+
 /// @brief Reads a mesh and reports its counts, bounds and every array.
 /// @throw InputError as readMesh
 MeshInfo describeMesh(const std::string& path);
+
+/// @brief What `inversevis info` says of each array of @a field's file.
+std::vector<ArrayInfo> describeArrays(const SurfaceField& field);
 
 /// @brief Reads a sidecar scalar file: whitespace/newline separated numbers ("nan" allowed).
 /// @param expectedCount number of vertices; a different count is an error

@@ -10,10 +10,15 @@
 #include <ivis/render/render_scene.h>
 
 #include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
 
 #include <vector>
 
 namespace ivis::optimize {
+
+/// @brief The coherence a picture a person can read needs at least (docs/measures.md): the
+///        readability step's default minimum.
+inline constexpr double kDefaultMinCoherence = 0.99;
 
 /// @brief What the readability step chose.
 struct ReadableSetting {
@@ -61,5 +66,9 @@ std::vector<float> readabilityLadder(const render::Method& method);
 /// @throw ValueError for a size below 1 or a minimum coherence outside (0, 1]
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, const glm::ivec2& size, double minCoherence);
+
+/// @brief What the readability step chose, as --stats-json reports it: {"parameter", "value",
+///        "estimated_coherence", "sampled_pairs", "picture_size", "keeps_min_coherence"}.
+nlohmann::json readableSettingJson(const ReadableSetting& setting);
 
 }  // namespace ivis::optimize

@@ -37,7 +37,7 @@ struct AnnealingOptions {
     double polishDeg = 0.0;  ///< after the proposals, a compass search round the best view: steps of this, halved each round; 0: none
     int polishRounds = 3;    ///< the compass search's rounds (4 views each)
     int readableResolution = 0;  ///< pixels per side of the picture the readability step keeps coherent (loosestReadable); 0: no step
-    double minCoherence = 0.99;  ///< the coherence that step keeps
+    double minCoherence = kDefaultMinCoherence;  ///< the coherence that step keeps
 };
 
 /// @brief The six views along the coordinate axes, (theta, phi) in degrees: from +y, -y, +z, +x, -z, -x.

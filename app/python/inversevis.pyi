@@ -1,0 +1,66 @@
+# Type hints of the inversevis module (app/python/module.cpp holds the docstrings).
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+class InputError(ValueError):
+    """A file or input the engine cannot use: one line naming it and the problem."""
+
+class Mesh:
+    def __init__(
+        self,
+        vertices: npt.NDArray[np.floating],
+        faces: npt.NDArray[np.integer],
+        point_data: Optional[Mapping[str, npt.NDArray[Any]]] = None,
+        cell_data: Optional[Mapping[str, npt.NDArray[Any]]] = None,
+    ) -> None: ...
+    @staticmethod
+    def read(path: str) -> "Mesh": ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def vertices(self) -> npt.NDArray[np.float32]: ...
+    @property
+    def faces(self) -> npt.NDArray[np.int64]: ...
+    @property
+    def arrays(self) -> List[Dict[str, Any]]: ...
+
+class Picture:
+    @property
+    def rgba(self) -> npt.NDArray[np.uint8]: ...
+    @property
+    def layers(self) -> Dict[str, npt.NDArray[np.float32]]: ...
+    @property
+    def camera(self) -> Dict[str, Any]: ...
+    @property
+    def method(self) -> Dict[str, Any]: ...
+    @property
+    def measures(self) -> Dict[str, Any]: ...
+    def save(self, path: str) -> None: ...
+    def _repr_png_(self) -> bytes: ...
+
+def render(
+    mesh: Mesh,
+    method: str = "inversevis-wrap",
+    *,
+    scalar: Optional[str] = None,
+    theta: float = 90.0,
+    phi: float = 0.0,
+    fov: Optional[float] = None,
+    camera: Optional[Dict[str, Any]] = None,
+    size: Tuple[int, int] = (1000, 1000),
+    colormap: str = "viridis",
+    range: Optional[Tuple[float, float]] = None,
+    volume_resolution: int = 200,
+    min_coherence: float = 0.99,
+    full_trace: bool = False,
+    legend: bool = True,
+    shadows: bool = True,
+    transparent: bool = False,
+    spp: int = 1,
+    progress: Optional[Callable[[str, int], None]] = None,
+    **parameters: Union[float, Sequence[float]],
+) -> Picture: ...
+
+def methods() -> List[str]: ...

@@ -1,0 +1,161 @@
+// The Python module `inversevis`: PYBIND11_MODULE and the docstrings users read with help().
+#include "python_errors.h"
+#include "python_mesh.h"
+#include "python_picture.h"
+#include "python_render.h"
+
+#include <ivis/core/camera_json.h>
+#include <ivis/core/data_array.h>
+#include <ivis/optimize/readability.h>
+#include <ivis/render/method_registry.h>
+
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+using namespace ivis;
+
+namespace {
+
+/// A JSON value as the Python object json.loads would give.
+py::object fromJson(const nlohmann::json& json)
+{
+    return py::module_::import("json").attr("loads")(json.dump());
+}
+
+/// One array as a dict, the keys `inversevis info --json` uses.
+py::dict arrayDict(const core::ArrayInfo& a)
+{
+    py::dict d;
+    d["name"] = a.name;
+    d["association"] = core::associationName(a.association);
+    d["type"] = core::valueTypeName(a.type);
+    d["components"] = a.components;
+    d["min"] = a.min;
+    d["max"] = a.max;
+    d["nan_count"] = a.nanCount;
+    d["shown_by_default"] = a.shownByDefault;
+    return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(inversevis, m)
+{
+    m.doc() = "InverseVis: both sides of a surface in one picture. Read a mesh (or give it as numpy arrays), "
+              "render it with a method, get the picture's pixels and layers as numpy arrays. The pictures are "
+              "those of `inversevis render` with the same arguments (docs/python.md).";
+    python::registerErrors(m);
+
+    py::class_<python::Mesh, std::shared_ptr<python::Mesh>>(m, "Mesh", R"(A surface mesh with its point and cell arrays.
+
+Mesh(vertices, faces, point_data=None, cell_data=None): vertices an (n, 3) float32 or float64
+array, faces an (m, 3) int32 or int64 array of vertex indices from 0, point_data and cell_data
+dicts of arrays with n (or m) rows: (n,) for a scalar, (n, k) for k components. Mesh.read(path)
+reads a file instead. Renders of one mesh share its volumes (and the command line's cache).)")
+        .def(py::init([](const py::array& vertices, const py::array& faces, const py::object& pointData,
+                         const py::object& cellData) {
+                 auto dictOf = [](const py::object& o, const char* name) {
+                     if (o.is_none()) return py::dict();
+                     if (!py::isinstance<py::dict>(o)) throw py::type_error(std::string(name) + " must be a dict of arrays");
+                     return o.cast<py::dict>();
+                 };
+                 return python::Mesh::fromArrays(vertices, faces, dictOf(pointData, "point_data"),
+                                                 dictOf(cellData, "cell_data"));
+             }),
+             py::arg("vertices"), py::arg("faces"), py::arg("point_data") = py::none(), py::arg("cell_data") = py::none())
+        .def_static("read", &python::Mesh::read, py::arg("path"),
+                    "Reads a mesh file (.obj .off .ply .stl .vtk .vtp .vtu, as `inversevis render` does) or a "
+                    "generated scene ('scene:vessel-tree'); raises InputError naming the file and the problem.")
+        .def_property_readonly("source", &python::Mesh::source, "The file read, 'scene:<name>', or 'Mesh' for arrays.")
+        .def_property_readonly("vertices", &python::Mesh::vertices, "(n, 3) float32 copy of the vertices, in the mesh's own units.")
+        .def_property_readonly("faces", &python::Mesh::faces, "(m, 3) int64 copy of the triangles (polygons fan-triangulated).")
+        .def_property_readonly(
+            "arrays",
+            [](const python::Mesh& mesh) {
+                py::list list;
+                for (const core::ArrayInfo& a : mesh.arrays()) list.append(arrayDict(a));
+                return list;
+            },
+            "The point and cell arrays, as `inversevis info` lists them: dicts with name, association, type, "
+            "components, min, max, nan_count, shown_by_default.")
+        .def("__repr__", [](const python::Mesh& mesh) {
+            return "<inversevis.Mesh " + mesh.source() + ": " + std::to_string(mesh.arrays().size()) + " arrays>";
+        });
+
+    py::class_<python::Picture, std::shared_ptr<python::Picture>>(m, "Picture", "A rendered picture (render()).")
+        .def_property_readonly("rgba", &python::Picture::rgba,
+                               "(height, width, 4) uint8: the PNG's pixels, sRGB, with the colour bar's margin.")
+        .def_property_readonly(
+            "layers", [](const py::object& self) { return self.cast<const python::Picture&>().layers(self); },
+            "The EXR's layers by name ('depth', 'region' (0 background, 1 direct, 2 indirect), 'triangle', 'P.X', "
+            "'P.Y', 'P.Z' (normalised units), 'scalar', 'steps'): (height, width) float32 views of the picture.")
+        .def_property_readonly("camera", [](const python::Picture& p) { return fromJson(core::cameraFileJson(p.camera, p.meshUnits)); },
+                               "The camera, as the camera file `render` writes (render(camera=...) takes it back).")
+        .def_property_readonly("method", [](const python::Picture& p) { return fromJson(p.method); },
+                               "The method and its parameters as drawn (the readable rule chosen where it ran).")
+        .def_property_readonly("measures", [](const python::Picture& p) { return fromJson(p.measures); },
+                               "The mapping coherence, what the readability step chose, timing and pixel counts.")
+        .def("save", &python::Picture::save, py::arg("path"),
+             "Writes the picture as PNG (.png, with its colour bar) or the multi-layer EXR (.exr), as `render -o` "
+             "and `--exr` write them.")
+        .def("_repr_png_", &python::Picture::png)
+        .def("__repr__", [](const python::Picture& p) {
+            return "<inversevis.Picture " + std::to_string(p.result.image.width()) + "x" +
+                   std::to_string(p.result.image.height()) + " " + p.method.value("method", std::string()) + ">";
+        });
+
+    m.def(
+        "render",
+        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, double theta, double phi,
+           const std::optional<double>& fov, const std::optional<py::dict>& camera, const std::pair<int, int>& size,
+           const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
+           double minCoherence, bool fullTrace, bool legend, bool shadows, bool transparent, int spp,
+           const py::object& progress, const py::kwargs& parameters) {
+            python::RenderRequest request;
+            request.method = method;
+            if (!scalar.is_none()) request.scalar = scalar.cast<std::string>();
+            request.theta = theta;
+            request.phi = phi;
+            request.fov = fov;
+            request.camera = camera;
+            request.size = size;
+            request.colormap = colormap;
+            request.range = range;
+            request.volumeResolution = volumeResolution;
+            request.minCoherence = minCoherence;
+            request.fullTrace = fullTrace;
+            request.legend = legend;
+            request.shadows = shadows;
+            request.transparent = transparent;
+            request.samplesPerPixel = spp;
+            request.parameters = parameters;
+            return python::renderMesh(mesh, request, progress);
+        },
+        py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
+        py::arg("scalar") = py::none(), py::arg("theta") = 90.0, py::arg("phi") = 0.0, py::arg("fov") = py::none(),
+        py::arg("camera") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
+        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
+        py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("full_trace") = false,
+        py::arg("legend") = true, py::arg("shadows") = true, py::arg("transparent") = false, py::arg("spp") = 1,
+        py::arg("progress") = py::none(),
+        R"(A picture of mesh, as `inversevis render MESH` makes it with the same arguments.
+
+method: a method's name (methods() lists them); its parameters as keywords by their keys
+(stable_shift=0.2, alpha=0.5, mirror_w=[0.3, 0.3, 0, 0, 0]). scalar: the array to colour by
+('NAME', 'NAME:0' for a component, 'cell:NAME'; None: the file's default). theta, phi: the
+camera on the sphere of radius 2.5, the field of view framed to the picture unless fov (degrees)
+or camera (a Picture.camera) fixes it. size: (width, height). range: (lo, hi) of the colour scale
+(None: the data's). volume_resolution: the volume's N (cached as the command line caches it).
+min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
+full_trace: trace every pixel's ray (no adaptive image sampling). progress: None or a callable
+(stage, percent). The GIL is released while it renders; Ctrl-C raises KeyboardInterrupt.)");
+
+    m.def(
+        "methods", [] {
+            std::vector<std::string> names{render::defaultMethod()->name()};
+            for (const render::MethodInfo* info : render::methodRegistry())
+                if (info->name != names.front()) names.push_back(info->name);
+            return names;
+        },
+        "The methods' names, the default first.");
+}

@@ -1,0 +1,220 @@
+#include "python_mesh.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/show_array.h>
+#include <ivis/core/surface_source.h>
+#include <ivis/vdb/cache_folder.h>
+#include <ivis/vdb/volume_cache.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+
+namespace py = pybind11;
+
+namespace ivis::python {
+namespace {
+
+/// "float64 (5, 3)": an array's dtype and shape, for messages.
+std::string described(const py::array& array)
+{
+    std::ostringstream text;
+    text << py::str(array.dtype()).cast<std::string>() << " (";
+    for (py::ssize_t k = 0; k < array.ndim(); ++k) text << (k ? ", " : "") << array.shape(k);
+    text << (array.ndim() == 1 ? ",)" : ")");
+    return text.str();
+}
+
+/// The value type of a numeric dtype; throws TypeError naming @a what for any other.
+core::ValueType valueType(const py::array& array, const std::string& what)
+{
+    const char kind = array.dtype().kind();
+    const py::ssize_t size = array.itemsize();
+    if (kind == 'f' && (size == 4 || size == 8)) return size == 4 ? core::ValueType::Float32 : core::ValueType::Float64;
+    if (kind == 'i' || kind == 'u') {
+        const bool sign = kind == 'i';
+        switch (size) {
+        case 1: return sign ? core::ValueType::Int8 : core::ValueType::UInt8;
+        case 2: return sign ? core::ValueType::Int16 : core::ValueType::UInt16;
+        case 4: return sign ? core::ValueType::Int32 : core::ValueType::UInt32;
+        case 8: return sign ? core::ValueType::Int64 : core::ValueType::UInt64;
+        }
+    }
+    throw py::type_error(what + " must hold numbers (integers or float32/float64), got " + described(array));
+}
+
+/// The elements of @a array (any numeric dtype, any strides) converted to Out, row-major: the one
+/// copy of the data into the engine.
+template <typename In, typename Out>
+void copyInto(const py::array& array, Out* out)
+{
+    const py::ssize_t n = array.ndim() == 1 ? array.shape(0) : array.shape(0) * array.shape(1);
+    const char* base = static_cast<const char*>(array.data());
+    const py::ssize_t columns = array.ndim() == 1 ? 1 : array.shape(1);
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const py::ssize_t row = i / columns, column = i % columns;
+        const char* at = base + row * array.strides(0) + (array.ndim() == 1 ? 0 : column * array.strides(1));
+        In value;
+        std::memcpy(&value, at, sizeof(In));
+        out[i] = Out(value);
+    }
+}
+
+/// flattened()'s copy into @a out, which holds the array's elements.
+template <typename Out>
+void flattenInto(const py::array& array, Out* out)
+{
+    const char kind = array.dtype().kind();
+    const py::ssize_t size = array.itemsize();
+    if (kind == 'f' && size == 4) copyInto<float>(array, out);
+    else if (kind == 'f' && size == 8) copyInto<double>(array, out);
+    else if (kind == 'i' && size == 1) copyInto<std::int8_t>(array, out);
+    else if (kind == 'i' && size == 2) copyInto<std::int16_t>(array, out);
+    else if (kind == 'i' && size == 4) copyInto<std::int32_t>(array, out);
+    else if (kind == 'i' && size == 8) copyInto<std::int64_t>(array, out);
+    else if (kind == 'u' && size == 1) copyInto<std::uint8_t>(array, out);
+    else if (kind == 'u' && size == 2) copyInto<std::uint16_t>(array, out);
+    else if (kind == 'u' && size == 4) copyInto<std::uint32_t>(array, out);
+    else if (kind == 'u' && size == 8) copyInto<std::uint64_t>(array, out);
+    else throw py::type_error("an array of " + described(array) + " holds no numbers the engine reads");
+}
+
+/// The elements of a one- or two-dimensional numeric array as Out, row-major.
+template <typename Out>
+std::vector<Out> flattened(const py::array& array)
+{
+    const py::ssize_t n = array.ndim() == 1 ? array.shape(0) : array.shape(0) * array.shape(1);
+    std::vector<Out> out(std::size_t(std::max<py::ssize_t>(n, 0)));
+    flattenInto(array, out.data());
+    return out;
+}
+
+/// Each array of @a data (name -> n or n x k values) as a DataArray of @a association with @a tuples tuples.
+std::vector<core::DataArray> dataArrays(const py::dict& data, core::Association association, py::ssize_t tuples)
+{
+    const std::string where = association == core::Association::Point ? "point_data" : "cell_data";
+    const std::string per = association == core::Association::Point ? "vertex" : "face";
+    std::vector<core::DataArray> arrays;
+    for (const auto& [key, value] : data) {
+        if (!py::isinstance<py::str>(key)) throw py::type_error(where + " keys must be array names (str)");
+        const std::string name = key.cast<std::string>();
+        if (name.empty()) throw py::value_error(where + ": an array needs a name");
+        const py::array array = py::array::ensure(value);
+        if (!array) throw py::type_error(where + "['" + name + "'] must be a numpy array");
+        core::DataArray data;
+        data.name = name;
+        data.association = association;
+        data.type = valueType(array, where + "['" + name + "']");
+        if ((array.ndim() != 1 && array.ndim() != 2) || array.shape(0) != tuples)
+            throw py::value_error(where + "['" + name + "'] must have shape (" + std::to_string(tuples) + ",) or (" +
+                                  std::to_string(tuples) + ", k), one tuple per " + per + ", got " + described(array));
+        data.components = array.ndim() == 1 ? 1 : int(array.shape(1));
+        if (data.components < 1) throw py::value_error(where + "['" + name + "'] has no components");
+        data.values = flattened<double>(array);
+        arrays.push_back(std::move(data));
+    }
+    return arrays;
+}
+
+/// Volume options as a key: every field that names a cache file.
+std::string volumeKey(const vdb::VolumeOptions& o)
+{
+    std::ostringstream key;
+    key << o.resolution << '/' << o.farFieldResolution << '/' << o.farFieldReach << '/' << o.bandVoxels << '/'
+        << int(o.sign);
+    return key.str();
+}
+
+}  // namespace
+
+std::shared_ptr<Mesh> Mesh::read(const std::string& source)
+{
+    auto mesh = std::make_shared<Mesh>();
+    mesh->mSource = source;
+    if (source.rfind(core::kScenePrefix, 0) == 0) {
+        mesh->mRaw = core::loadSurface(source);  // generated: its own scalar, already normalised
+    } else {
+        if (core::isTimeSeries(source))
+            throw InputError(source + ": a time series; read one step's file (its steps are listed by `inversevis info`)");
+        mesh->mRaw = core::readMesh(source, {}, &mesh->mReport);
+    }
+    return mesh;
+}
+
+std::shared_ptr<Mesh> Mesh::fromArrays(const py::array& vertices, const py::array& faces, const py::dict& pointData,
+                                       const py::dict& cellData)
+{
+    const char vertexKind = vertices.dtype().kind();
+    if (vertices.ndim() != 2 || vertices.shape(1) != 3 || vertexKind != 'f' ||
+        (vertices.itemsize() != 4 && vertices.itemsize() != 8))
+        throw py::value_error("vertices must be a float32 or float64 array of shape (n, 3), got " + described(vertices));
+    const char faceKind = faces.dtype().kind();
+    if (faces.ndim() != 2 || faces.shape(1) != 3 || (faceKind != 'i' && faceKind != 'u') || faces.itemsize() < 4)
+        throw py::value_error("faces must be an int32 or int64 array of shape (m, 3) (vertex indices from 0), got " +
+                              described(faces));
+    std::vector<glm::vec3> positions(std::size_t(vertices.shape(0)));
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+    flattenInto(vertices, &positions[0].x);
+    std::vector<std::int64_t> triangles = flattened<std::int64_t>(faces);
+    std::vector<core::DataArray> arrays = dataArrays(pointData, core::Association::Point, vertices.shape(0));
+    for (core::DataArray& array : dataArrays(cellData, core::Association::Cell, faces.shape(0)))
+        arrays.push_back(std::move(array));
+    auto mesh = std::make_shared<Mesh>();
+    mesh->mSource = "Mesh";
+    mesh->mRaw = core::meshFromArrays(mesh->mSource, std::move(positions), std::move(triangles), std::move(arrays),
+                                       &mesh->mReport);
+    return mesh;
+}
+
+py::array Mesh::vertices() const
+{
+    const auto& positions = mRaw.mesh.positions;
+    py::array_t<float> out({py::ssize_t(positions.size()), py::ssize_t(3)});
+    std::memcpy(out.mutable_data(), positions.data(), positions.size() * sizeof(glm::vec3));
+    return std::move(out);
+}
+
+py::array Mesh::faces() const
+{
+    const auto& triangles = mRaw.mesh.triangles;
+    py::array_t<std::int64_t> out({py::ssize_t(triangles.size()), py::ssize_t(3)});
+    std::int64_t* data = out.mutable_data();
+    for (const auto& t : triangles)
+        for (std::uint32_t v : t) *data++ = std::int64_t(v);
+    return std::move(out);
+}
+
+core::SurfaceField Mesh::shown(const std::string& scalar) const
+{
+    if (mSource.rfind(core::kScenePrefix, 0) == 0) {
+        if (!scalar.empty())
+            throw InputError(mSource + ": generated scenes carry their own scalar; scalar= applies to mesh files only");
+        return mRaw;
+    }
+    core::SurfaceField field = mRaw;
+    if (!scalar.empty()) core::showArray(field, scalar, false);
+    return core::loadReadSurface(mSource, std::move(field), mReport, {});
+}
+
+std::shared_ptr<const Scene> Mesh::scene(const std::string& scalar, const vdb::VolumeOptions& options,
+                                         core::Interrupter* interrupter)
+{
+    std::lock_guard<std::mutex> lock(mMutex);
+    const std::string volumeName = volumeKey(options), sceneName = scalar + '\n' + volumeName;
+    if (auto found = mScenes.find(sceneName); found != mScenes.end()) return found->second;
+    auto scene = std::make_shared<Scene>();
+    scene->field = shown(scalar);
+    Volume& volume = mVolumes[volumeName];
+    if (!volume.volume) {
+        volume.path = vdb::defaultVolumePath(vdb::optionalCacheFolder(""), mSource, scene->field.mesh, options);
+        volume.volume = std::make_shared<const vdb::SurfaceVolume>(
+            vdb::loadOrBuildVolume(scene->field.mesh, options, volume.path, interrupter));
+    }
+    scene->volume = volume.volume;
+    scene->volumePath = volume.path;
+    scene->render = std::make_unique<render::RenderScene>(scene->field, *scene->volume);
+    return mScenes[sceneName] = scene;
+}
+
+}  // namespace ivis::python

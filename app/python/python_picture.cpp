@@ -1,0 +1,59 @@
+#include "python_picture.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/core/file_extension.h>
+#include <ivis/core/image_io.h>
+
+#include <cstring>
+
+namespace py = pybind11;
+
+namespace ivis::python {
+
+py::array Picture::rgba() const
+{
+    const core::Image& figure = result.figure;
+    const std::vector<std::uint8_t> pixels = core::srgbPixels(figure, transparent);
+    py::array_t<std::uint8_t> out({py::ssize_t(figure.height()), py::ssize_t(figure.width()), py::ssize_t(4)});
+    std::uint8_t* data = out.mutable_data();
+    const std::size_t count = std::size_t(figure.width()) * figure.height();
+    if (transparent) {
+        std::memcpy(data, pixels.data(), 4 * count);
+    } else {
+        for (std::size_t i = 0; i < count; ++i) {
+            std::memcpy(data + 4 * i, pixels.data() + 3 * i, 3);
+            data[4 * i + 3] = 255;
+        }
+    }
+    return std::move(out);
+}
+
+py::dict Picture::layers(const py::object& self) const
+{
+    py::dict layers;
+    const py::ssize_t height = result.layers.height(), width = result.layers.width();
+    for (const auto& [name, values] : result.layers.channels())
+        layers[py::str(name)] = py::array(py::dtype::of<float>(), {height, width},
+                                          {py::ssize_t(sizeof(float)) * width, py::ssize_t(sizeof(float))},
+                                          values.data(), self);
+    return layers;
+}
+
+void Picture::save(const std::string& path) const
+{
+    const std::string extension = core::lowerCaseExtension(path);
+    if (extension == ".png")
+        core::writePng(result.figure, path, transparent);
+    else if (extension == ".exr")
+        core::writeExr(result.image, result.layers, path, meshUnits);
+    else
+        throw ValueError(path + ": a picture is saved as .png or .exr");
+}
+
+py::bytes Picture::png() const
+{
+    const std::vector<std::uint8_t> bytes = core::encodePng(result.figure, transparent);
+    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+}  // namespace ivis::python

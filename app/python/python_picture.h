@@ -1,0 +1,41 @@
+/// @file python_picture.h
+/// @brief The Python module's Picture: one rendered picture, its pixels and layers as numpy
+///        arrays (no copy: views of the picture's own memory), its camera and measures, saved as
+///        `inversevis render` writes it.
+#pragma once
+
+#include <ivis/core/camera.h>
+#include <ivis/core/similarity.h>
+#include <ivis/render/renderer.h>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace ivis::python {
+
+/// @brief A rendered picture and what made it.
+struct Picture {
+    render::RenderResult result;
+    bool transparent = false;     ///< the PNG carries alpha (as --transparent)
+    core::Camera camera;          ///< the camera it was rendered with (framed when asked)
+    core::Similarity meshUnits;   ///< the mesh's normalising transform (the EXR and camera files carry it)
+    nlohmann::json method;        ///< the method and its parameters, as --stats-json lists them
+    nlohmann::json measures;      ///< coherence, and what the readability step chose
+
+    /// @brief The PNG's pixels: height x width x 4 uint8, sRGB-encoded (alpha 255 unless transparent).
+    pybind11::array rgba() const;
+    /// @brief The EXR's layers by name ("depth", "region", "triangle", "P.X", ...), each a
+    ///        height x width float32 view of the picture's memory (kept alive by @a self).
+    pybind11::dict layers(const pybind11::object& self) const;
+    /// @brief Writes a PNG (".png") or multi-layer EXR (".exr") as `render -o` / `--exr` do, through
+    ///        a temporary name.
+    /// @throw ValueError for another extension; InputError when it cannot be written
+    void save(const std::string& path) const;
+    /// @brief The PNG file's bytes, for a notebook.
+    pybind11::bytes png() const;
+};
+
+}  // namespace ivis::python

@@ -1,0 +1,150 @@
+#include "python_render.h"
+
+#include "python_call.h"
+
+#include <ivis/core/camera_json.h>
+#include <ivis/core/colormap.h>
+#include <ivis/core/errors.h>
+#include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture.h>
+#include <ivis/render/method_json.h>
+#include <ivis/render/method_registry.h>
+#include <ivis/render/picture_extent.h>
+
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace ivis::python {
+namespace {
+
+/// The method's parameters from Python values: a number, or a sequence of numbers per component.
+render::ParameterValues parameterValues(const py::dict& parameters)
+{
+    render::ParameterValues values;
+    for (const auto& [key, value] : parameters) {
+        const std::string name = key.cast<std::string>();
+        if (py::isinstance<py::bool_>(value)) throw py::type_error(name + " must be a number or numbers, not a bool");
+        if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
+            values[name] = {value.cast<float>()};
+            continue;
+        }
+        try {
+            values[name] = value.cast<std::vector<float>>();
+        } catch (const py::cast_error&) {
+            throw py::type_error(name + " must be a number or a sequence of numbers, got " +
+                                 py::str(value.get_type().attr("__name__")).cast<std::string>());
+        }
+    }
+    return values;
+}
+
+/// The method @a name with @a values (render::makeMethod), its errors naming the parameters as
+/// keywords (stable_shift) instead of options (--stable-shift).
+render::MethodPtr methodWith(const std::string& name, const render::ParameterValues& values)
+{
+    const render::MethodInfo& info = render::methodInfo(name);  // an unknown name fails here
+    auto asKeywords = [&](std::string message) {
+        for (const render::ParameterSpec& spec : info.parameters)
+            for (std::size_t at = message.find(spec.option()); at != std::string::npos; at = message.find(spec.option()))
+                message.replace(at, spec.option().size(), spec.key);
+        return message;
+    };
+    try {
+        return render::makeMethod(name, values);
+    } catch (const InputError& e) {
+        throw InputError(asKeywords(e.what()));
+    } catch (const ValueError& e) {
+        throw ValueError(asKeywords(e.what()));
+    }
+}
+
+/// The volume a picture of @a method needs at @a resolution: the far field reaching as far as its
+/// rays fly (as `render` raises --reach for them).
+vdb::VolumeOptions volumeFor(const render::MethodPtr& method, int resolution)
+{
+    vdb::VolumeOptions options;
+    options.resolution = resolution;
+    if (method->reachNeeded() > vdb::kMaxFarFieldReach)
+        throw ValueError(method->name() + " needs a volume reaching " + std::to_string(method->reachNeeded()) +
+                         ", beyond the largest (" + std::to_string(vdb::kMaxFarFieldReach) + ")");
+    options.farFieldReach = render::reachNeededBy({method}, options.farFieldReach);
+    vdb::validate(options);
+    return options;
+}
+
+}  // namespace
+
+std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, const py::object& progress)
+{
+    // Every argument is checked before anything is read or built.
+    const render::ParameterValues values = parameterValues(request.parameters);
+    const render::MethodPtr method = methodWith(request.method, values);
+    render::RenderOptions options;
+    std::tie(options.width, options.height) = request.size;
+    if (options.width < 1 || options.height < 1 || options.width > 32768 || options.height > 32768)
+        throw ValueError("size (" + std::to_string(options.width) + ", " + std::to_string(options.height) +
+                         "): width and height must be 1 to 32768");
+    if (request.samplesPerPixel < 1 || request.samplesPerPixel > 1024)
+        throw ValueError("spp " + std::to_string(request.samplesPerPixel) + " is out of range (1 to 1024)");
+    options.samplesPerPixel = request.samplesPerPixel;
+    options.method = method;
+    options.adaptive.enabled = !request.fullTrace;
+    core::colormap(request.colormap);  // an unknown name fails here, listing the names
+    options.shading.colormap = request.colormap;
+    options.shading.shadows = request.shadows;
+    options.shading.transparentBackground = request.transparent;
+    options.legend = request.legend;
+    core::ColorScaleRequest scale;
+    if (request.range) scale.range = core::scalarRangeFromUser(request.range->first, request.range->second);
+    scale.validate();
+    if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
+        throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
+    optimize::PictureRequest picture;
+    picture.framed = !request.fov && !request.camera;
+    if (request.camera) {
+        const std::string text = py::module_::import("json").attr("dumps")(*request.camera).cast<std::string>();
+        try {
+            picture.camera = core::cameraFromJson(nlohmann::json::parse(text));
+        } catch (const std::exception& e) {
+            throw ValueError(std::string("camera: not a camera (a camera file's JSON, as Picture.camera): ") + e.what());
+        }
+    } else {
+        picture.camera = core::Camera::fromAngles(request.theta, request.phi, core::kCameraDistance,
+                                                  request.fov.value_or(core::kDefaultFovYDeg));
+    }
+    picture.camera.validate();
+    if (picture.framed && double(options.width) <= render::kFramingMargin * options.height)
+        throw ValueError("a framed picture of " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " needs a wider picture");
+    const std::string& rule = method->info().readabilityParameter;
+    picture.minCoherence = rule.empty() || values.count(rule) ? 0.0 : request.minCoherence;
+    const vdb::VolumeOptions volume = volumeFor(method, request.volumeResolution);
+
+    auto made = std::make_shared<Picture>();
+    runReleased(
+        [&](core::Interrupter& interrupter) {
+            const std::shared_ptr<const Scene> scene = mesh.scene(request.scalar, volume, &interrupter);
+            if (request.range && !scene->field.hasScalar())
+                throw InputError(mesh.source() + ": no scalar to colour by (see scalar=)");
+            options.shading.scale = scale.resolve(scene->field.values);
+            options.scalarName = scene->field.name;
+            picture.options = options;
+            optimize::Picture result = optimize::makePicture(*scene->render, picture, &interrupter);
+            made->result = std::move(result.result);
+            made->camera = result.camera;
+            made->meshUnits = scene->field.normalization;
+            made->method = render::methodToJson(*result.method);
+            made->measures = {{"coherence", optimize::mappingCoherence(made->result.layers).value()},
+                              {"seconds", made->result.stats.seconds},
+                              {"pixels_direct", made->result.stats.pixelsDirect},
+                              {"pixels_indirect", made->result.stats.pixelsIndirect},
+                              {"volume_cache", scene->volumePath}};
+            if (result.readable) made->measures["readability"] = optimize::readableSettingJson(*result.readable);
+        },
+        progress);
+    made->transparent = request.transparent;
+    return made;
+}
+
+}  // namespace ivis::python

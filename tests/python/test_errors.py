@@ -1,0 +1,90 @@
+"""Every bad array and bad argument is a ValueError or TypeError with a clear message, never a crash;
+nothing is written where the picture cannot be made."""
+import numpy as np
+import pytest
+
+import inversevis
+from conftest import uv_sphere
+
+
+@pytest.fixture(scope="module")
+def sphere():
+    return uv_sphere(8, 12)
+
+
+@pytest.mark.parametrize("vertices, faces, error, words", [
+    (np.zeros((4, 2)), np.array([[0, 1, 2]]), ValueError, "vertices must be a float32 or float64 array of shape (n, 3), got float64 (4, 2)"),
+    (np.zeros((4, 3), dtype=np.int64), np.array([[0, 1, 2]]), ValueError, "vertices must be"),
+    (np.zeros(12), np.array([[0, 1, 2]]), ValueError, "got float64 (12,)"),
+    (np.eye(3), np.array([[0.0, 1.0, 2.0]]), ValueError, "faces must be an int32 or int64 array of shape (m, 3)"),
+    (np.eye(3), np.array([[0, 1, 2, 0]]), ValueError, "got int64 (1, 4)"),
+    (np.eye(3), np.array([[0, 1, 3]]), inversevis.InputError, "face 0 references vertex 3 but the mesh has 3 vertices"),
+    (np.eye(3), np.array([[0, 1, -1]]), inversevis.InputError, "references vertex -1"),
+    (np.array([[0, 0, 0], [1, 0, 0], [0, np.nan, 0]]), np.array([[0, 1, 2]]), inversevis.InputError,
+     "vertex 2 has a non-finite coordinate"),
+    (np.eye(3), np.array([[0, 1, 1]]), inversevis.InputError, "mesh has no triangles"),
+])
+def test_bad_arrays_are_refused_with_a_clear_message(vertices, faces, error, words):
+    with pytest.raises(error) as refused:
+        inversevis.Mesh(vertices, faces)
+    assert words in str(refused.value)
+
+
+def test_bad_point_and_cell_data_are_refused(sphere):
+    v, f, h = sphere
+    with pytest.raises(ValueError, match=r"point_data\['h'\] must have shape \(86,\) or \(86, k\), one tuple per vertex"):
+        inversevis.Mesh(v, f, point_data={"h": h[:-1]})
+    with pytest.raises(ValueError, match=r"cell_data\['c'\] must have shape \(168,\)"):
+        inversevis.Mesh(v, f, cell_data={"c": np.zeros(3)})
+    with pytest.raises(TypeError, match=r"point_data\['s'\] must hold numbers"):
+        inversevis.Mesh(v, f, point_data={"s": np.array(["a"] * len(v))})
+    with pytest.raises(TypeError, match="point_data must be a dict"):
+        inversevis.Mesh(v, f, point_data=[h])
+    with pytest.raises(TypeError, match="keys must be array names"):
+        inversevis.Mesh(v, f, point_data={1: h})
+
+
+def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_path):
+    mesh = inversevis.Mesh(*sphere[:2], point_data={"h": sphere[2]})
+    cases = [
+        (dict(method="nothing"), ValueError, "unknown method 'nothing'"),
+        (dict(alpha=0.5), ValueError, "alpha"),
+        (dict(stable_shift=-1.0), ValueError, "inversevis-wrap stable_shift -1 is out of range (0.0001 to 10)"),
+        (dict(stable_shift="a"), TypeError, "stable_shift must be a number"),
+        (dict(size=(0, 10)), ValueError, "width and height must be 1 to 32768"),
+        (dict(colormap="jet"), ValueError, "jet"),
+        (dict(scalar="nope"), inversevis.InputError, "nope"),
+        (dict(range=(1.0, 0.0)), ValueError, "range"),
+        (dict(min_coherence=2.0), ValueError, "min_coherence"),
+        (dict(spp=0), ValueError, "spp 0"),
+        (dict(camera={"target": [0, 0, 0]}), ValueError, "camera"),
+        (dict(volume_resolution=3), ValueError, "resolution"),
+        (dict(progress=5), TypeError, "progress must be None or a callable"),
+    ]
+    for arguments, error, words in cases:
+        with pytest.raises(error) as refused:
+            inversevis.render(mesh, **{"size": (40, 40), **arguments})
+        assert words in str(refused.value), arguments
+    with pytest.raises(TypeError):
+        inversevis.render(mesh, size="big")
+
+
+def test_bad_files_raise_the_cli_s_one_line(tmp_path):
+    missing = tmp_path / "missing.ply"
+    with pytest.raises(inversevis.InputError, match=f"^{missing}: "):
+        inversevis.Mesh.read(str(missing))
+    broken = tmp_path / "broken.ply"
+    broken.write_text("ply\nformat ascii 1.0\nelement vertex 3\n")
+    with pytest.raises(inversevis.InputError, match=f"^{broken}: "):
+        inversevis.Mesh.read(str(broken))
+    with pytest.raises(inversevis.InputError, match="unknown scene 'nothing'"):
+        inversevis.Mesh.read("scene:nothing")
+
+
+def test_save_refuses_other_formats_and_writes_nothing(tmp_path):
+    picture = inversevis.render(inversevis.Mesh.read("scene:sphere"), "front", size=(30, 30))
+    with pytest.raises(ValueError, match=r"\.png or \.exr"):
+        picture.save(str(tmp_path / "p.jpg"))
+    with pytest.raises(inversevis.InputError):
+        picture.save(str(tmp_path / "no" / "folder" / "p.png"))
+    assert list(tmp_path.iterdir()) == []
