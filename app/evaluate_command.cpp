@@ -1,4 +1,4 @@
-// `inversevis evaluate MESH...`: the paper's Table 1 with METHOD.md's measures at each method's best
+// `inversevis evaluate MESH...`: the paper's Table 1 with the measures (docs/measures.md) at each method's best
 // view (surface visibility with its front-only part, paper-literal visibility, mapping coherence and,
 // with a scalar, hot-spot reveal) and Table 2 (viewpoint optimisation seconds per resolution).
 #include "commands.h"

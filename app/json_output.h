@@ -20,13 +20,13 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 ///        1000x1000 picture".
 std::string readableSettingLine(const optimize::ReadableSetting& setting);
 
-/// @brief METHOD.md's measures of one view: visibility, paper_literal, front_visibility,
+/// @brief The measures (docs/measures.md) of one view: visibility, paper_literal, front_visibility,
 ///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
 ///        direct, per_region).
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal);
 
 /// @brief measuresJson of a rendered picture (`render --measure`): @a method traced again from
-///        @a camera with @a resolution rays per side, its landings counted on METHOD.md's 200^3 grid;
+///        @a camera with @a resolution rays per side, its landings counted on the 200^3 grid of docs/measures.md;
 ///        with a scalar, the reveal of the importance over @a importanceRange; and surface_pixels
 ///        (direct and indirect) with even_bound, what as many points spread evenly would measure.
 ///        With @a unseen, also the unseen map of the same tracing (optimize/unseen_map.h), its

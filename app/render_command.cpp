@@ -72,7 +72,7 @@ Command addRenderCommand(CLI::App& app)
                         "Multi-layer OpenEXR file (linear colour + per-pixel layers); of a series, numbered as the PNGs");
     command->add_option("--stats-json", options->statsJson, "Write render statistics as JSON (of a series: per frame too)");
     command->add_flag("--measure", options->measure,
-                      "Also measure what the picture shows (METHOD.md: surface visibility on the 200^3 grid, "
+                      "Also measure what the picture shows (docs/measures.md: surface visibility on the 200^3 grid, "
                       "paper-literal, front-only, with a scalar the hot-spot reveal) into --stats-json and the log; "
                       "traces the method again with the picture's height in rays per side");
     command

@@ -35,7 +35,7 @@ struct SeriesRenderRequest {
     std::string cameraOut;    ///< the camera JSON ("" = "<png>.camera.json")
     bool video = true;        ///< an MP4 at videoPath(png) when ffmpeg is on PATH
     double fps = 5;           ///< the video's frames per second (a fraction too: 0.5 shows each step 2 s)
-    bool measure = false;     ///< each frame's METHOD.md measures in its statistics (pictureMeasuresJson)
+    bool measure = false;     ///< each frame's measures (docs/measures.md) in its statistics (pictureMeasuresJson)
     /// Above 0: the method's readable rule (optimize::loosestReadable at this coherence) is chosen
     /// on the series' first step (step 0, also for a job's part) and replaces the method's.
     double minCoherence = 0.0;

@@ -160,8 +160,8 @@ void optimiserWidgets(OptimiserSettings& settings, bool hasScalar)
                 settings.optimization.energy = name;
         ImGui::EndCombo();
     }
-    tooltip(scalar ? "scalar: sum of the normalised scalar over the pixels that show the surface (METHOD.md)"
-                   : "visibility: fraction of the surface voxels some ray lands in (METHOD.md, the paper's Table 1)");
+    tooltip(scalar ? "scalar: sum of the normalised scalar over the pixels that show the surface (docs/method.md)"
+                   : "visibility: fraction of the surface voxels some ray lands in (docs/measures.md, the paper's Table 1)");
     ImGui::SliderInt("opt. rays", &settings.resolution, 16, 400);
     tooltip("rays per image side while optimising (paper: 100 or 1000)");
     ImGui::SliderInt("anneal steps", &settings.optimization.steps, 1, 100);

@@ -132,7 +132,7 @@ TEST(AdaptiveInverseVis, ProfileGradientMatchesCentralDifferencesOnSphere)
 
 TEST(AdaptiveInverseVis, ShowsMoreOfTheSphereThanAnyGlobalAlpha)
 {
-    // The faithful method lands every curved ray on one band of the back side (METHOD.md, "Known
+    // The faithful method lands every curved ray on one band of the back side (docs/method.md, "Known
     // limit"); a profile that sends the rays near the silhouette furthest round covers the back cap.
     const auto& fixture = test::sphereScene();
     EnergyOptions options;

@@ -1,4 +1,4 @@
-// inversevis-wrap against the faithful model on the measures of METHOD.md (the unit sphere seen
+// inversevis-wrap against the faithful model on the measures of docs/measures.md (the unit sphere seen
 // from a known view), its rings staying beside the part they surround (the vessel tree), and the
 // ray it draws being exactly the one its stability rule traced, and that rule depending on the view
 // ray only, not on the picture's size.
@@ -19,7 +19,7 @@
 namespace ivis::optimize {
 namespace {
 
-constexpr int kResolution = 1000;  // METHOD.md measures coherence at 1000 x 1000
+constexpr int kResolution = 1000;  // docs/measures.md measures coherence at 1000 x 1000
 
 double surfaceVisibility(const render::RenderScene& scene, const core::Camera& camera, const render::MethodPtr& method)
 {
@@ -35,7 +35,7 @@ TEST(WrapInverseVis, ShowsMoreOfTheSphereThanTheFaithfulModelAndStaysCoherent)
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
     const double faithful = surfaceVisibility(*fixture.scene, camera, render::makeMethod("inversevis"));
     const double wrapped = surfaceVisibility(*fixture.scene, camera, wrap);
-    // Analytic: the faithful model lands on a band (METHOD.md: about 70% with the front cap).
+    // Analytic: the faithful model lands on a band (docs/method.md: about 70% with the front cap).
     EXPECT_LT(faithful, 0.75);
     EXPECT_GT(wrapped, 0.9);
     EXPECT_GE(measureCoherence(*fixture.scene, camera, wrap, kResolution).value(), 0.99);

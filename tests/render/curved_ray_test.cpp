@@ -1,4 +1,4 @@
-// Curved rays on the unit sphere against the analytic picture of METHOD.md, one integrator step
+// Curved rays on the unit sphere against the analytic picture of docs/method.md, one integrator step
 // against the formula, and the view ray's closest approach against the sphere and brute force.
 #include "render/scene_fixture.h"
 
@@ -210,7 +210,7 @@ TEST(CurvedRay, SmallAlphaFallsRadiallyFromTheSeed)
         zMin = std::min(zMin, ends[i].position.z);
         zMax = std::max(zMax, ends[i].position.z);
     }
-    // METHOD.md: alpha ~ 0 lands on the band -0.35 .. 0.52.
+    // docs/method.md: alpha ~ 0 lands on the band -0.35 .. 0.52.
     EXPECT_NEAR(zMin, -0.35f, 0.05f);
     EXPECT_NEAR(zMax, 0.52f, 0.05f);
 }

@@ -1,5 +1,5 @@
 /// @file hot_spots.h
-/// @brief A generated scalar for the reveal measure (METHOD.md, "The measures", 3): Gaussian hot
+/// @brief A generated scalar for the reveal measure (docs/measures.md, 3): Gaussian hot
 ///        spots at the ends of the mesh's thinnest principal axis, so that no straight view shows
 ///        both (the paper's Fig. 7 set-up).
 #pragma once

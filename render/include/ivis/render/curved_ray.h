@@ -1,6 +1,6 @@
 /// @file curved_ray.h
 /// @brief InverseVis curved rays: seeds on the hull behind the object and particles falling onto
-///        the hidden surface (METHOD.md, "InverseVis, I-").
+///        the hidden surface (docs/method.md, "InverseVis, I-").
 #pragma once
 
 #include <ivis/core/triangle_mesh.h>
@@ -18,7 +18,7 @@ inline constexpr float kMaxAlpha = 4.0f;
 struct CurvedRayParams {
     float stepSize = 0.1f;      ///< symplectic Euler step h
     float hullOffset = 0.4f;    ///< phi0: the hull is {phi = phi0}
-    float landingVoxels = 0.5f;  ///< land when phi < this many fine voxels (METHOD.md: about half a voxel)
+    float landingVoxels = 0.5f;  ///< land when phi < this many fine voxels (docs/method.md: about half a voxel)
     int maxSteps = 1000;        ///< rays still in flight after this many steps are misses
 };
 

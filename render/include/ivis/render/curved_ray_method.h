@@ -1,5 +1,5 @@
 /// @file curved_ray_method.h
-/// @brief What the curved-ray methods share (METHOD.md, "InverseVis, I-"): a seed on the hull
+/// @brief What the curved-ray methods share (docs/method.md, "InverseVis, I-"): a seed on the hull
 ///        {phi = phi0} where the view ray leaves it, a launch velocity that each method chooses,
 ///        and the symplectic integration onto the surface.
 #pragma once

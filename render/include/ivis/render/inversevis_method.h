@@ -1,6 +1,6 @@
 /// @file inversevis_method.h
 /// @brief The `inversevis` method exactly as the paper: every curved ray starts with
-///        v0 = alpha g x (r x g), one global alpha (METHOD.md, "InverseVis, I-").
+///        v0 = alpha g x (r x g), one global alpha (docs/method.md, "InverseVis, I-").
 #pragma once
 
 #include <ivis/render/curved_ray_method.h>

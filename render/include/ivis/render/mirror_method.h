@@ -1,6 +1,6 @@
 /// @file mirror_method.h
 /// @brief The `mirror` method: a quadratic height-field mirror behind the object whose normal is
-///        the new ray direction, sphere-traced onto the surface (METHOD.md, "Baseline 2").
+///        the new ray direction, sphere-traced onto the surface (docs/method.md, "Baseline 2").
 #pragma once
 
 #include <ivis/render/method.h>

@@ -2,7 +2,7 @@
 /// @brief Geometry of the ring map after Neugebauer et al. (2009): a ring around the projected
 ///        centre, just outside the silhouette, and a back-side disc on the left of the screen.
 /// @note Ring pixel at radius r, in-plane direction u: straight ray from c along
-///       u + (2r/(r1+r2) - 1) n, n the view direction (METHOD.md). Back disc pixel at radius r:
+///       u + (2r/(r1+r2) - 1) n, n the view direction (docs/method.md). Back disc pixel at radius r:
 ///       ray along cos(t) n + sin(t) u', t = 90 deg * r / R, u' mirrored left-right (seen from behind).
 #pragma once
 

@@ -1,6 +1,6 @@
 /// @file pixel_mapping.h
 /// @brief What one pixel sample shows: its region of the image domain (I0, I+, I-) and the
-///        surface point P(i) of METHOD.md, with how the point was reached.
+///        surface point P(i) of docs/method.md, with how the point was reached.
 #pragma once
 
 #include <ivis/core/camera.h>

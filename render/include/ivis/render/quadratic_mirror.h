@@ -1,6 +1,6 @@
 /// @file quadratic_mirror.h
 /// @brief The curved-mirror baseline: a quadratic height field behind the object whose normal is
-///        used directly as the new ray direction (METHOD.md, "Baseline 2").
+///        used directly as the new ray direction (docs/method.md, "Baseline 2").
 /// @note Eye space: camera at the origin looking down -z, x right, y up. The mirror is
 ///       z = zm + w1 x^2 + w2 y^2 + w3 xy + w4 x + w5 y with zm = -(eye-target distance) - distanceBehind.
 #pragma once

@@ -1,6 +1,6 @@
 /// @file ring_map_method.h
 /// @brief The `neugebauer` method: the ring map of Neugebauer et al. (2009) around the projected
-///        centre plus a back-side disc on the left (METHOD.md, "Baseline 1").
+///        centre plus a back-side disc on the left (docs/method.md, "Baseline 1").
 #pragma once
 
 #include <ivis/render/method.h>

@@ -1,5 +1,5 @@
 /// @file screen_map.h
-/// @brief The map P: I -> S of METHOD.md: for a pixel position, the surface point it shows, by
+/// @brief The map P: I -> S of docs/method.md: for a pixel position, the surface point it shows, by
 ///        a straight view ray (I+) or by the method's indirect ray (I-).
 /// @warning map() is const and thread-safe given one DistanceField::Sampler per thread.
 #pragma once

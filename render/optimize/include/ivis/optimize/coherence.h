@@ -1,5 +1,5 @@
 /// @file coherence.h
-/// @brief Mapping coherence (METHOD.md, "The measures", 2): among the 4-adjacent pairs of indirect
+/// @brief Mapping coherence (docs/measures.md, 2): among the 4-adjacent pairs of indirect
 ///        pixels that both landed, the share whose surface points lie within 0.1 normalised units
 ///        of each other. It counts tears: seams between overlapping hull regions, speckle, swirls.
 #pragma once
@@ -26,7 +26,7 @@ struct Coherence {
 
 /// @brief Neighbours closer than this count as coherent (normalised units).
 inline constexpr double kCoherenceDistance = 0.1;
-/// @brief Pixels per side of the picture the measure is defined on (METHOD.md).
+/// @brief Pixels per side of the picture the measure is defined on (docs/measures.md, 2).
 inline constexpr int kCoherenceResolution = 1000;
 
 /// @brief The measure over a P layer: @a indirect marks the landed indirect pixels and @a points

@@ -1,6 +1,6 @@
 /// @file curved_ray_gradient.h
 /// @brief The analytic gradient of the scalar energy with respect to a curved-ray method's
-///        optimised parameters (METHOD.md, "Optimising alpha"): per pixel, the tangent-linear
+///        optimised parameters (docs/method.md, "Optimising alpha"): per pixel, the tangent-linear
 ///        dP/d(launch) of its curved ray and the surface gradient of s at the landing point.
 #pragma once
 

@@ -1,7 +1,7 @@
 /// @file curved_ray_tangent.h
 /// @brief A curved ray integrated together with its tangent: the exact forward-mode derivative
 ///        of the discrete symplectic steps with respect to a parameter of the launch
-///        (METHOD.md, "Optimising alpha").
+///        (docs/method.md, "Optimising alpha").
 #pragma once
 
 #include <ivis/render/curved_ray.h>

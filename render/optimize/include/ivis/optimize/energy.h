@@ -1,7 +1,7 @@
 /// @file energy.h
-/// @brief The energy of what a view shows (METHOD.md, "Energy"):
+/// @brief The energy of what a view shows (docs/method.md, "Energy"):
 ///        E = gamma * sum over I+ of s(P(i)) + sum over I- of s(P(i)), times the pixel area,
-///        with s the normalised scalar ("scalar"), or the surface visibility of METHOD.md's
+///        with s the normalised scalar ("scalar"), or the surface visibility of docs/measures.md's
 ///        measures ("visibility", surface_voxels.h).
 /// @warning EnergyEvaluator is immutable after construction; evaluate() is thread-safe.
 #pragma once

@@ -1,5 +1,5 @@
 /// @file parameter_optimizer.h
-/// @brief Gradient ascent of a method's optimised parameters for one view (METHOD.md,
+/// @brief Gradient ascent of a method's optimised parameters for one view (docs/method.md,
 ///        "Optimising alpha"); which parameters move, the gradient and the line search come from
 ///        the method's description (render::MethodInfo).
 /// @note Each ascent step is x <- x + t g, t from a golden-section search on [0, 0.25] that

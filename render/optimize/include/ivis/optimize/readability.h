@@ -43,7 +43,7 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
                                            const std::vector<float>& values);
 
 /// @brief The size the readability step judges a @a width x @a height picture at, whatever its
-///        own: the coherence measure's kCoherenceResolution rows (METHOD.md, "The measures", 2)
+///        own: the coherence measure's kCoherenceResolution rows (docs/measures.md, 2)
 ///        and as many columns as the picture's aspect gives (at most 4 times as many). The rule
 ///        then draws the same rays at every size (the wrap's rule judges each view ray alone), and
 ///        a small picture, whose neighbouring pixels land further apart, does not get a tighter

@@ -1,5 +1,5 @@
 /// @file reveal.h
-/// @brief Hot-spot reveal (METHOD.md, "The measures", 3): for a scalar field, the important surface
+/// @brief Hot-spot reveal (docs/measures.md, 3): for a scalar field, the important surface
 ///        is where the importance exceeds 0.5; reveal is the share of its surface voxels seen,
 ///        directly and in total, and per important region (26-connected groups of its voxels,
 ///        e.g. each hot spot of core::placeHotSpots).

@@ -1,5 +1,5 @@
 /// @file surface_voxels.h
-/// @brief Surface visibility, the primary measure (METHOD.md, "The measures", 1): on a grid of
+/// @brief Surface visibility, the primary measure (docs/measures.md, 1): on a grid of
 ///        resolution^3 voxels over [-2.5, 2.5]^3 (200 by default), a voxel is a surface voxel when
 ///        the surface passes through it, and it is seen when the surface point P of some pixel,
 ///        direct or indirect, lies in it; visibility = seen surface voxels / surface voxels.

@@ -1,7 +1,7 @@
 /// @file unseen_map.h
 /// @brief Where a picture leaves the surface unseen: the surface drawn from the picture's side and
 ///        from the opposite side, grey where some pixel of the picture shows its voxel and red where
-///        none does (surface visibility, METHOD.md's measure 1, drawn instead of counted).
+///        none does (surface visibility, measure 1 of docs/measures.md, drawn instead of counted).
 #pragma once
 
 #include <ivis/core/camera.h>

@@ -1,5 +1,5 @@
 /// @file viewpoint_annealing.h
-/// @brief Simulated annealing of the camera on the sphere of radius 2.5 (METHOD.md, "Viewpoint
+/// @brief Simulated annealing of the camera on the sphere of radius 2.5 (docs/method.md, "Viewpoint
 ///        optimisation"): neighbours within +-60 degrees in polar and azimuth angle, acceptance
 ///        exp(10 (E_new - E_old) / T), T_k = T0 * cooling^k; the method's parameters are optimised
 ///        at every proposal before its energy is measured. Beyond the paper (AnnealingOptions): a

@@ -1,6 +1,5 @@
 /// @file visibility_grid.h
-/// @brief The paper's visibility measure read literally ("paper_literal", METHOD.md, "The
-///        measures"): voxels of a grid over the box whose centre lies closer to the surface than
+/// @brief The paper's visibility measure read literally ("paper_literal", docs/measures.md, 1): voxels of a grid over the box whose centre lies closer to the surface than
 ///        one voxel are "marked"; a marked voxel is "visited" when a ray lands in it; visibility =
 ///        visited / marked. About a third of the marked voxels contain no surface, so its ceiling
 ///        is 65-73%: reported beside surface visibility (surface_voxels.h), never optimised.
