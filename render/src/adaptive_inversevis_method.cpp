@@ -49,8 +49,9 @@ const MethodInfo& adaptiveInverseVisMethodInfo()
         i.name = "inversevis-adaptive";
         i.help = "InverseVis with alpha varying across the ring (beyond the paper)";
         const AlphaProfile defaults;
-        i.parameters = {{"alpha_profile", "alpha(c) = a0 + a1 c + a2 c^2 across the ring",
-                         {defaults.coefficients.begin(), defaults.coefficients.end()}, -16.0f, 16.0f, true}};
+        i.parameters = {ParameterSpec{"alpha_profile", "alpha(c) = a0 + a1 c + a2 c^2 across the ring",
+                                      {defaults.coefficients.begin(), defaults.coefficients.end()}, -16.0f, 16.0f}
+                            .movedByTheAscent()};
         for (const ParameterSpec& spec : curvedRaySpecs()) i.parameters.push_back(spec);
         i.tangentLinearGradient = true;
         // Its visibility gradient is far smaller than the profile's useful steps.

@@ -24,11 +24,14 @@ const char* describe(Refusal refusal)
 
 std::vector<ParameterSpec> curvedRaySpecs(const CurvedRayParams& defaults)
 {
-    return {{"hull_offset", "hull distance phi0 (normalised units; below the volume's --reach)", {defaults.hullOffset},
-             0.01f, 1.9f, false, false, true},
-            {"step", "symplectic Euler step h", {defaults.stepSize}, 0.001f, 1.0f, false, false, false, true},
-            {"max_steps", "steps before a curved ray counts as a miss", {float(defaults.maxSteps)}, 1.0f, 100000.0f,
-             false, true, false, true}};
+    return {ParameterSpec{"hull_offset", "hull distance phi0 (normalised units; below the volume's --reach)",
+                          {defaults.hullOffset}, 0.01f, 1.9f}
+                .belowTheReach(),
+            ParameterSpec{"step", "symplectic Euler step h", {defaults.stepSize}, 0.001f, 1.0f}.ofTheTracer(),
+            ParameterSpec{"max_steps", "steps before a curved ray counts as a miss", {float(defaults.maxSteps)}, 1.0f,
+                          100000.0f}
+                .wholeNumbers()
+                .ofTheTracer()};
 }
 
 CurvedRayParams curvedRayParamsFrom(const ParameterValues& values)

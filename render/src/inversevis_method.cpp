@@ -28,7 +28,8 @@ const MethodInfo& inverseVisMethodInfo()
         MethodInfo i;
         i.name = "inversevis";
         i.help = "curved rays from the hull onto the hidden surface (the paper's model)";
-        i.parameters = {{"alpha", "initial velocity scale (above ~4 the rays escape)", {0.5f}, 0.0f, kMaxAlpha, true}};
+        i.parameters = {ParameterSpec{"alpha", "initial velocity scale (above ~4 the rays escape)", {0.5f}, 0.0f, kMaxAlpha}
+                            .movedByTheAscent()};
         for (const ParameterSpec& spec : curvedRaySpecs()) i.parameters.push_back(spec);
         i.tangentLinearGradient = true;
         i.scannedParameter = "alpha";

@@ -61,8 +61,9 @@ const MethodInfo& mirrorMethodInfo()
         MethodInfo i;
         i.name = "mirror";
         i.help = "quadratic height-field mirror behind the object";
-        i.parameters = {{"mirror_w", "mirror coefficients w1 w2 w3 w4 w5 (eye space)", {0.3f, 0.3f, 0.0f, 0.0f, 0.0f},
-                         -10.0f, 10.0f, true},
+        i.parameters = {ParameterSpec{"mirror_w", "mirror coefficients w1 w2 w3 w4 w5 (eye space)",
+                                      {0.3f, 0.3f, 0.0f, 0.0f, 0.0f}, -10.0f, 10.0f}
+                            .movedByTheAscent(),
                         {"mirror_distance_behind", "mirror apex behind the object's centre (normalised units)", {1.0f},
                          0.0f, 2.5f}};
         i.create = [](const ParameterValues& v) {

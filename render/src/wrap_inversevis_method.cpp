@@ -161,8 +161,9 @@ const MethodInfo& wrapInverseVisMethodInfo()
                                  " further in and out across its ring (its neighbouring pixels'); rays that bend more fly "
                                  "chaotically or straddle a tear and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f},
-            {"landing", "a ray lands where phi falls below this many fine voxels (the paper's model: half a voxel)",
-             {wrapRayDefaults().landingVoxels}, 0.01f, 1.0f, false, false, false, true}};
+            ParameterSpec{"landing", "a ray lands where phi falls below this many fine voxels (the paper's model: half a voxel)",
+                          {wrapRayDefaults().landingVoxels}, 0.01f, 1.0f}
+                .ofTheTracer()};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";
         i.create = [](const ParameterValues& v) {

@@ -40,6 +40,15 @@ struct ParameterSpec {
 
     /// @brief The command-line option: "--" and the key with '_' written '-'.
     std::string option() const;
+
+    /// @brief This spec, its parameter moved by the parameter ascent (optimised).
+    ParameterSpec& movedByTheAscent() { optimised = true; return *this; }
+    /// @brief This spec, its parameter taking whole numbers only (integer).
+    ParameterSpec& wholeNumbers() { integer = true; return *this; }
+    /// @brief This spec, its parameter a distance below the volume's reach (belowReach).
+    ParameterSpec& belowTheReach() { belowReach = true; return *this; }
+    /// @brief This spec, its parameter the tracer's accuracy (tracing).
+    ParameterSpec& ofTheTracer() { tracing = true; return *this; }
 };
 
 /// @brief Values of a method's parameters by key, one float per component.
