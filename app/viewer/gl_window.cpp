@@ -57,6 +57,13 @@ std::string glRendererName()
     return std::string(renderer ? renderer : "?") + ", OpenGL " + (version ? version : "?");
 }
 
+bool isSoftwareGl(const std::string& rendererName)
+{
+    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+        if (rendererName.find(software) != std::string::npos) return true;
+    return false;
+}
+
 void startImGui(GLFWwindow* window)
 {
     IMGUI_CHECKVERSION();

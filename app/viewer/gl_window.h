@@ -24,6 +24,10 @@ GLFWwindow* createGlWindow(const std::string& title, int width, int height, bool
 /// @brief "<GL_RENDERER>, OpenGL <GL_VERSION>" of the current context.
 std::string glRendererName();
 
+/// @brief True when @a rendererName (glRendererName) is a software rasteriser (Mesa's llvmpipe,
+///        softpipe or swrast), which runs the shaders on the CPU.
+bool isSoftwareGl(const std::string& rendererName);
+
 /// @brief Creates the ImGui context with its GLFW and OpenGL 3 backends on @a window.
 void startImGui(GLFWwindow* window);
 

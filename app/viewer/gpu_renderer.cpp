@@ -4,6 +4,7 @@
 
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/image_io.h>
 #include <ivis/render/curved_ray.h>
 
 #include <algorithm>
@@ -126,6 +127,17 @@ void GpuRenderer::drawOutline(int height)
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glEnable(GL_DEPTH_TEST);
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+}
+
+void GpuRenderer::show(const render::RenderResult& picture)
+{
+    const core::Channel& regions = picture.layers.channel("region");
+    std::vector<std::uint8_t> region(regions.size());
+    std::transform(regions.begin(), regions.end(), region.begin(), [](float r) { return std::uint8_t(r); });
+    const std::vector<std::uint8_t> rgb = core::srgbPixels(picture.image, false);  // the PNG's pixels
+    std::vector<std::uint8_t> rgba(region.size() * 4, 255);
+    for (std::size_t i = 0; i < region.size(); ++i) std::copy_n(rgb.data() + 3 * i, 3, rgba.data() + 4 * i);
+    mTarget.upload(rgba, region, picture.image.width(), picture.image.height());
 }
 
 void GpuRenderer::render(const GpuFrame& frame)

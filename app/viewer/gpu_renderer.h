@@ -16,6 +16,7 @@
 
 #include <ivis/core/image.h>
 #include <ivis/core/surface_field.h>
+#include <ivis/render/renderer.h>
 
 #include <cstdint>
 #include <string>
@@ -49,6 +50,9 @@ public:
     /// @brief Renders @a frame into the offscreen target (resized to the frame's size).
     /// @throw GlError when the method's indirect program does not compile
     void render(const GpuFrame& frame);
+    /// @brief Shows @a picture (a CPU render of the same size or any other) in the offscreen target
+    ///        instead of a frame of render(): its colour and its regions.
+    void show(const render::RenderResult& picture);
     /// @brief Copies the offscreen colour into the bound draw framebuffer's rectangle (x, y, w, h).
     void blitTo(int x, int y, int width, int height) const { mTarget.blitTo(x, y, width, height); }
     /// @brief The last frame as a linear image (decoded from the 8-bit sRGB target), row 0 at the top.

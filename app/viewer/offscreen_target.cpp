@@ -1,5 +1,7 @@
 #include "offscreen_target.h"
 
+#include <ivis/core/errors.h>
+
 #include <algorithm>
 
 namespace ivis::app {
@@ -66,6 +68,26 @@ void OffscreenTarget::beginFrame(const glm::vec3& background) const
     glClearBufferfv(GL_COLOR, 0, clearColour);
     glClearBufferuiv(GL_COLOR, 1, clearRegion);
     glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+}
+
+void OffscreenTarget::upload(const std::vector<std::uint8_t>& srgba, const std::vector<std::uint8_t>& region,
+                             int width, int height)
+{
+    IVIS_CHECK(srgba.size() == std::size_t(width) * height * 4 && region.size() == std::size_t(width) * height);
+    resize(width, height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const auto uploadRows = [&](const GlTexture& texture, GLenum format, const std::vector<std::uint8_t>& bytes,
+                                int channels) {
+        glBindTexture(GL_TEXTURE_2D, texture.id());
+        const std::size_t rowBytes = std::size_t(width) * channels;
+        for (int row = 0; row < height; ++row)  // GL rows start at the bottom
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, height - 1 - row, width, 1, format, GL_UNSIGNED_BYTE,
+                            bytes.data() + std::size_t(row) * rowBytes);
+    };
+    uploadRows(mColour, GL_RGBA, srgba, 4);
+    uploadRows(mRegion, GL_RED_INTEGER, region, 1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    checkGl("uploading a picture");
 }
 
 void OffscreenTarget::blitTo(int x, int y, int width, int height) const

@@ -29,6 +29,9 @@ public:
     /// @brief Binds the region (read-only, r8ui) and the colour (read-write, rgba8) to image units
     ///        @a regionUnit and @a colourUnit, for a pass that edits the colour in place.
     void bindImages(int regionUnit, int colourUnit) const;
+    /// @brief Resizes the target to @a width x @a height and fills it with a picture made elsewhere:
+    ///        @a srgba 8-bit sRGB-encoded RGBA and @a region one byte per pixel, both row 0 at the top.
+    void upload(const std::vector<std::uint8_t>& srgba, const std::vector<std::uint8_t>& region, int width, int height);
     /// @brief Copies the colour into the bound draw framebuffer's rectangle (x, y, w, h).
     void blitTo(int x, int y, int width, int height) const;
     /// @brief The colour as a linear image (decoded from the 8-bit sRGB values), row 0 at the top.

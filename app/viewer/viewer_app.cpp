@@ -57,6 +57,12 @@ double timedMs(Work&& work)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// Seconds since @a start.
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
@@ -112,6 +118,7 @@ ViewerApp::~ViewerApp()
         mJob.wait();
     }
     if (mColouring.valid()) mColouring.wait();  // stops before its next step
+    mCpuTracer.cancel();
     mLoader.reset();  // cancels and joins
     closeWindow();
 }
@@ -129,9 +136,12 @@ void ViewerApp::openWindow()
     mNormals = render::vertexNormals(mField->mesh);
     mRenderer->setMesh(*mField, mNormals);
     mRenderer->setColormap(mShading.colormap);
-    // Software rasterisers trace every pixel on the CPU: start at half resolution there, and at
-    // half of that while the camera moves.
-    if (mGlRenderer.find("llvmpipe") != std::string::npos || mGlRenderer.find("softpipe") != std::string::npos) {
+    // Software rasterisers run the shaders on the CPU, slower than the CPU renderer: there the CPU
+    // renderer traces the picture (--tracer auto); shaders on software GL start at half
+    // resolution, and at half of that while the camera moves.
+    const bool softwareGl = isSoftwareGl(mGlRenderer);
+    mCpuTracing = mOptions.tracer == "cpu" || (mOptions.tracer == "auto" && softwareGl);
+    if (softwareGl && !mCpuTracing) {
         mRenderScale = 0.5f;
         mInteraction.reduction = 0.5f;
     }
@@ -170,6 +180,7 @@ void ViewerApp::showStep(std::size_t step)
 {
     IVIS_CHECK(mSeries && step < mSeries->steps().size() && !jobRunning());
     core::SurfaceField field = mSeries->load(step);
+    mCpuTracer.cancel();  // it reads the field and the scene
     const bool sameGeometry = mSurvey.meshHashes[step] == mSurvey.meshHashes[mStep];
     mStep = step;
     const core::SeriesStep& shown = mSeries->steps()[step];
@@ -235,6 +246,7 @@ bool ViewerApp::pollLoader()
 {
     if (!mLoader || !mLoader->finished()) return false;
     std::unique_ptr<SceneLoader> loader = std::move(mLoader);
+    mCpuTracer.cancel();  // it reads the scene replaced
     mLoaded = loader->take();  // rethrows the loader's error
     const vdb::SurfaceVolume& volume = mLoaded->volume;
     const float interiorStep = float(volume.options.bandVoxels * volume.voxelSize());
@@ -302,12 +314,59 @@ void ViewerApp::frameOrbit(int width, int height)
 void ViewerApp::renderFrame(int width, int height)
 {
     if (mOrbit.framed) frameOrbit(width, height);
+    if (tracesOnCpu()) {
+        mLastFrameMs = timedMs([&] {
+            mRenderer->show(render::renderImage(*mLoaded->scene, mOrbit.camera(), cpuOptions(width, height)));
+        });
+        return;
+    }
     const GpuFrame f = frame(width, height);
     mLastFrameMs = timedMs([&] { mRenderer->render(f); });
 }
 
+render::RenderOptions ViewerApp::cpuOptions(int width, int height) const
+{
+    render::RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.method = mMethod;
+    options.shading = mShading;
+    options.outline = mOutline;
+    options.legend = false;  // the window draws its own colour bar
+    return options;
+}
+
+bool ViewerApp::traceOnCpu(int width, int height, bool moving)
+{
+    if (mDirty || width != mCpuSize.x || height != mCpuSize.y) {
+        if (mOrbit.framed) frameOrbit(width, height);
+        mLastFrameMs = timedMs([&] {
+            mRenderer->show(mCpuTracer.renderMoving(*mLoaded->scene, mOrbit.camera(), cpuOptions(width, height)));
+        });
+        mCpuSize = {width, height};
+        mDirty = false;
+        mRestWanted = true;
+    }
+    if (mRestWanted && !moving) {
+        mCpuTracer.startResting(*mLoaded->scene, mOrbit.camera(), cpuOptions(width, height));
+        mRestStart = now();
+        mRestWanted = false;
+    }
+    if (std::optional<render::RenderResult> picture = mCpuTracer.takeResting()) {
+        mRenderer->show(*picture);
+        mLastFrameMs = 1000.0 * (now() - mRestStart);
+        return true;
+    }
+    return false;
+}
+
 void ViewerApp::takeNumberedScreenshot()
 {
+    if (tracesOnCpu() && (mRestWanted || mCpuTracer.resting())) {  // the full picture, not a moving frame
+        mCpuTracer.cancel();
+        renderFrame(mCpuSize.x, mCpuSize.y);
+        mRestWanted = false;
+    }
     const std::string path =
         "inversevis-view-" + core::sourceStem(mOptions.mesh.source) + "-" + std::to_string(++mScreenshots) + ".png";
     try {
@@ -416,31 +475,52 @@ int ViewerApp::runBenchmark()
 {
     waitForScene();
     const double startPhi = mOrbit.phiDeg;
-    renderFrame(mOptions.width, mOptions.height);  // warm-up: shader compilation, first upload
-    const int frames = mOptions.benchmarkFrames;
-    double slowest = 0.0;  // wall time of a whole frame, as the mean (it was the render's alone)
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < frames; ++i) {
-        const auto frameStart = std::chrono::steady_clock::now();
-        mOrbit.fixed.reset();
-        mOrbit.phiDeg = startPhi + 360.0 * i / frames;
-        renderFrame(mOptions.width, mOptions.height);
+    const int width = mOptions.width, height = mOptions.height;
+    renderFrame(width, height);  // warm-up: shader compilation, first upload, the volume's pages
+    const auto show = [&] {
         int fbWidth = 0, fbHeight = 0;
         glfwGetFramebufferSize(mWindow, &fbWidth, &fbHeight);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         mRenderer->blitTo(0, 0, fbWidth, fbHeight);
         glfwSwapBuffers(mWindow);
         glfwPollEvents();
-        slowest = std::max(slowest, 1000.0 * std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                                           frameStart).count());
-        if (glfwWindowShouldClose(mWindow)) break;
+        if (glfwWindowShouldClose(mWindow)) throw Cancelled("window closed");
         if (core::interruptRequested()) throw Cancelled("interrupted");
+    };
+    // While the camera moves: each frame as the window draws it then (the CPU: at the size its frame
+    // time allows; shaders: the render scale times the interaction scale).
+    const int frames = mOptions.benchmarkFrames;
+    const float movingScale = mRenderScale * mInteraction.reduction;
+    double slowest = 0.0;  // wall time of a whole frame
+    glm::dvec2 traced(0.0);  // the traced sizes, summed
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < frames; ++i) {
+        const auto frameStart = std::chrono::steady_clock::now();
+        mOrbit.fixed.reset();
+        mOrbit.phiDeg = startPhi + 360.0 * i / frames;
+        mDirty = true;
+        if (tracesOnCpu()) traceOnCpu(width, height, true);
+        else renderFrame(std::max(16, int(std::lround(width * movingScale))), std::max(16, int(std::lround(height * movingScale))));
+        traced += glm::dvec2(mRenderer->width(), mRenderer->height());
+        show();
+        slowest = std::max(slowest, secondsSince(frameStart));
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("inversevis-view: benchmark: %d frames orbiting 360 degrees at theta %.0f, %dx%d, %s, %s: %.2f fps "
-                "(mean %.1f ms, slowest %.1f ms per frame)\n",
-                frames, mOrbit.thetaDeg, mOptions.width, mOptions.height, mMethod->name().c_str(),
-                mGlRenderer.c_str(), frames / seconds, 1000.0 * seconds / frames, slowest);
+    const double seconds = secondsSince(start);
+    // At rest: until the full-size picture is shown.
+    const auto restStart = std::chrono::steady_clock::now();
+    if (tracesOnCpu()) {
+        while (!traceOnCpu(width, height, false)) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    } else {
+        renderFrame(width, height);
+    }
+    show();
+    const double rest = secondsSince(restStart);
+    std::printf("inversevis-view: benchmark: %d frames orbiting 360 degrees at theta %.0f, %dx%d, %s, %s, traced by "
+                "%s: moving %.2f fps (mean %.1f ms, slowest %.1f ms per frame, mean traced size %.0fx%.0f); at rest "
+                "the full %dx%d picture in %.2f s\n",
+                frames, mOrbit.thetaDeg, width, height, mMethod->name().c_str(), mGlRenderer.c_str(),
+                tracesOnCpu() ? "the CPU" : "the shaders", frames / seconds, 1000.0 * seconds / frames, 1000.0 * slowest,
+                traced.x / frames, traced.y / frames, width, height, rest);
     return 0;
 }
 
@@ -717,6 +797,7 @@ void ViewerApp::colourBy(int choice)
         startSeriesColouring(choice);
         return;
     }
+    mCpuTracer.cancel();  // it reads the field's values
     std::vector<float> shownValues = mField->values;  // shown again when the choice fails
     const core::Association shownOn = mField->valuesOn;
     std::string shownName = mField->name;
@@ -799,6 +880,7 @@ void ViewerApp::pollSeriesColouring()
         mStatus = std::string("colour by: ") + e.what();
         return;
     }
+    mCpuTracer.cancel();  // it reads the field's values
     mSeries = std::move(colouring.series);
     mSurvey = std::move(colouring.survey);
     core::showStepData(*mField, std::move(colouring.shown));  // the same geometry (its hash)
@@ -831,7 +913,15 @@ bool ViewerApp::drawPictureSection()
             "or pan ends it");
     ImGui::Text("camera theta %.1f phi %.1f distance %.2f, field of view %.1f", mOrbit.thetaDeg, mOrbit.phiDeg,
                 mOrbit.distance, mOrbit.fovYDeg);
-    changed |= traceScaleWidgets(mRenderScale, mInteraction.reduction);
+    if (tracesOnCpu()) {
+        changed |= ImGui::SliderFloat("render scale", &mRenderScale, 0.25f, 1.0f, "%.2f");
+        tooltip("fraction of the window's pixels the CPU traces once the camera rests");
+        ImGui::Text("traced by the CPU (--tracer); moving: %.0f%% of each side", 100.0 * mCpuTracer.movingScale());
+        tooltip("the CPU renderer draws the picture render writes: while the camera moves, as many pixels as keep 12 "
+                "frames per second; once it rests, the full picture, shown when done (--tracer gpu: the shaders)");
+    } else {
+        changed |= traceScaleWidgets(mRenderScale, mInteraction.reduction);
+    }
     ImGui::Text("frame %.1f ms (%.1f fps) at %dx%d", mLastFrameMs, mLastFrameMs > 0.0 ? 1000.0 / mLastFrameMs : 0.0,
                 mRenderer->width(), mRenderer->height());
     if (mLoaded) ImGui::TextUnformatted(mVolumeText.c_str());
@@ -853,8 +943,9 @@ int ViewerApp::runInteractive()
     setPlaying(mOptions.play);
     int lastWidth = 0, lastHeight = 0, settledFrames = 0;
     while (!glfwWindowShouldClose(mWindow)) {
-        const bool busy = mDirty || mLoader || jobRunning() || mAnimation.started();
+        const bool busy = mDirty || mLoader || jobRunning() || mAnimation.started() || mRestWanted;
         if (busy) glfwPollEvents();
+        else if (mCpuTracer.resting()) glfwWaitEventsTimeout(0.05);  // the CPU's picture takes both cores
         else glfwWaitEventsTimeout(mPlaying ? std::clamp(mNextStepTime - now(), 0.001, 0.25) : 0.25);
         pollLoader();
         const double time = now();
@@ -898,10 +989,12 @@ int ViewerApp::runInteractive()
 
         if (fbWidth > 0 && fbHeight > 0) {
             mPicture = picture;
-            const float scale = mInteraction.scale(mRenderScale, now());
+            const float scale = tracesOnCpu() ? mRenderScale : mInteraction.scale(mRenderScale, now());
             const int width = std::max(16, int(std::lround(picture.width * scale)));
             const int height = std::max(16, int(std::lround(picture.height * scale)));
-            if (mDirty || width != lastWidth || height != lastHeight) {
+            if (tracesOnCpu()) {
+                traceOnCpu(width, height, mInteraction.moving(now()) || mAnimation.started() || mPlaying);
+            } else if (mDirty || width != lastWidth || height != lastHeight) {
                 renderFrame(width, height);
                 lastWidth = width;
                 lastHeight = height;
@@ -922,6 +1015,7 @@ int ViewerApp::runInteractive()
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         }
         if (!mOptions.uiScreenshot.empty() && !mLoader && !jobRunning() && !mAnimation.started() && !mPlaying &&
+            !mRestWanted && !mCpuTracer.resting() &&
             ++settledFrames >= mOptions.frames + 1) {
             writeWindow(mOptions.uiScreenshot);
             break;

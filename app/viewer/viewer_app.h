@@ -5,6 +5,7 @@
 #pragma once
 
 #include "color_bar_overlay.h"
+#include "cpu_tracer.h"
 #include "gpu_renderer.h"
 #include "interaction_scale.h"
 #include "orbit_camera.h"
@@ -71,6 +72,14 @@ private:
     /// What the colour bar shows now: the look, the scalar's name (a series: with its step), --units.
     core::ColorBarContent legendContent() const;
     GpuFrame frame(int width, int height) const;
+    /// True when the CPU renderer traces the picture (--tracer; it needs the loaded scene).
+    bool tracesOnCpu() const { return mCpuTracing && mLoaded; }
+    /// What the CPU renderer draws for a width x height picture of the window's look (no colour bar).
+    render::RenderOptions cpuOptions(int width, int height) const;
+    /// The CPU's picture of a width x height window: a frame at the moving scale when the picture
+    /// is stale, the full picture in the background once the camera rests (@a moving false), shown
+    /// when it is done; true when the full picture was shown this call.
+    bool traceOnCpu(int width, int height, bool moving);
     /// Fits the orbit's field of view to the picture of a width x height frame (the object alone
     /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
     void frameOrbit(int width, int height);
@@ -176,6 +185,11 @@ private:
     bool mImGuiReady = false;
     std::string mGlRenderer;
     std::unique_ptr<GpuRenderer> mRenderer;
+    bool mCpuTracing = false;    ///< the CPU renderer traces the picture (--tracer, software GL)
+    CpuTracer mCpuTracer;        ///< its moving frames and resting pictures
+    glm::ivec2 mCpuSize{0};      ///< the full size of the CPU's last picture
+    bool mRestWanted = false;    ///< the CPU's full picture is still to be started once the camera rests
+    double mRestStart = 0.0;     ///< when the resting picture started (seconds, now())
     std::unique_ptr<SceneLoader> mLoader;
     std::unique_ptr<LoadedScene> mLoaded;
     std::string mVolumeText;

@@ -47,7 +47,15 @@ void ViewerOptions::addTo(CLI::App& app)
                  "A time series: play its steps once the window opens, as the panel's play button does (from the "
                  "first step to the last, each step's volume loaded before the next; --ui-screenshot waits for the last)");
     app.add_option("--play-rate", playRate, "Steps per second while playing (0.1 to 60)")->capture_default_str();
-    app.add_flag("--benchmark", benchmark, "Orbit 360 degrees in --benchmark-frames frames and print frames per second");
+    app.add_option("--tracer", tracer,
+                   "What traces the picture: the shaders (gpu), the CPU renderer as `render` does (cpu, progressively: "
+                   "a smaller picture while the camera moves, the full one once it rests), or auto: cpu where OpenGL "
+                   "is software (llvmpipe), gpu elsewhere")
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}))
+        ->capture_default_str();
+    app.add_flag("--benchmark", benchmark,
+                 "Orbit 360 degrees in --benchmark-frames frames, drawn as while the camera moves, then rest; print the "
+                 "frames per second and the time to the full picture");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
     app.add_option("--cache-dir", cacheDir, kCacheDirHelp);
     app.add_option("--texture-budget", textureBudgetMiB, "GPU memory for the volume textures, MiB")

@@ -34,6 +34,7 @@ struct ViewerOptions {
     std::string probe;          ///< "X,Y": probe that pixel of the picture once loaded, as a click would
     bool play = false;          ///< a time series: press "play" once the window opens
     double playRate = 4.0;      ///< steps per second while playing (the panel's "steps/s")
+    std::string tracer = "auto";  ///< what traces the picture: "gpu", "cpu" or "auto" (cpu on software GL)
     bool benchmark = false;     ///< headless: time a fixed orbit and print frames per second
     int benchmarkFrames = 120;  ///< frames of the benchmark orbit (360 degrees of azimuth)
     std::string cacheDir;       ///< --cache-dir ("" = vdb::cacheFolder's default)

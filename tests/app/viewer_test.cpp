@@ -61,9 +61,12 @@ std::string writeMixedSeries(const TempDir& dir)
     return dir.file("mixed.pvd");
 }
 
-/// Runs `inversevis-view` with @a arguments, under xvfb-run when @a display.
-RunResult runViewer(const std::string& arguments, bool display, const TempDir& dir)
+/// Runs `inversevis-view` with @a arguments, under xvfb-run when @a display. Unless @a arguments
+/// choose a --tracer, the shaders trace (on Xvfb's software GL the viewer would choose the CPU):
+/// these tests compare the shaders with the CPU renderer.
+RunResult runViewer(std::string arguments, bool display, const TempDir& dir)
 {
+    if (arguments.find("--tracer ") == std::string::npos) arguments += " --tracer gpu";
     const std::string log = dir.file("viewer.log");
     // An authority file of the test's own: xvfb-run then makes no folder of its own, whose removal at
     // times failed (status 5, not the viewer's).
@@ -709,6 +712,59 @@ TEST(Viewer, ProbeTellsWhatRenderTellsOfThePixel)
                                        true, dir);
     ASSERT_EQ(window.status, 0) << window.output;
     EXPECT_NE(window.output.find("inversevis-view: " + told.out), std::string::npos) << window.output;
+#endif
+}
+
+
+// --tracer cpu: the window shows the picture `render` writes, pixel for pixel and region for
+// region; its benchmark draws smaller pictures while the camera moves, then the full one.
+TEST(Viewer, CpuTracerShowsRendersPicture)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string view = " --theta 60 --phi 40 --min-coherence 0 --no-legend --volume-res 64 --cache-dir '" +
+                             dir.path() + "'";
+    const CliResult cpu = runCli("render scene:vessel-tree --res 200x150" + view + " -o '" + dir.file("cpu.png") +
+                                 "' --exr '" + dir.file("cpu.exr") + "'");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const RunResult run = runViewer("scene:vessel-tree --width 200 --height 150 --frames 1 --tracer cpu" + view +
+                                        " --screenshot '" + dir.file("view.png") + "' --region-png '" +
+                                        dir.file("view-region.png") + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const core::Image rendered = core::readPng(dir.file("cpu.png")), shown = core::readPng(dir.file("view.png"));
+    const std::vector<float> region = core::readExrChannel(dir.file("cpu.exr"), "region");
+    const core::Image shownRegion = core::readPng(dir.file("view-region.png"));
+    ASSERT_EQ(shown.width(), 200);
+    ASSERT_EQ(shown.height(), 150);
+    std::size_t differing = 0, indirect = 0;
+    for (int y = 0; y < 150; ++y)
+        for (int x = 0; x < 200; ++x) {
+            for (int c = 0; c < 3; ++c) differing += level(rendered.at(x, y)[c]) != level(shown.at(x, y)[c]);
+            const int r = int(region[std::size_t(y) * 200 + std::size_t(x)]);
+            differing += r != regionOfGrey(shownRegion.at(x, y).r);
+            indirect += r == 2;
+        }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(indirect, 1000u);
+
+    const RunResult bench = runViewer("scene:vessel-tree --width 400 --height 300 --benchmark --benchmark-frames 8 "
+                                      "--tracer cpu --volume-res 64 --cache-dir '" + dir.path() + "'",
+                                      true, dir);
+    ASSERT_EQ(bench.status, 0) << bench.output;
+    const std::string tag = "traced by the CPU: moving ";
+    const std::size_t at = bench.output.find(tag);
+    ASSERT_NE(at, std::string::npos) << bench.output;
+    int tracedWidth = 0, tracedHeight = 0;
+    const std::size_t size = bench.output.find("mean traced size ", at);
+    ASSERT_NE(size, std::string::npos) << bench.output;
+    ASSERT_EQ(std::sscanf(bench.output.c_str() + size, "mean traced size %dx%d", &tracedWidth, &tracedHeight), 2);
+    EXPECT_LT(tracedWidth, 400) << bench.output;
+    EXPECT_NEAR(double(tracedWidth) / tracedHeight, 4.0 / 3.0, 0.1) << bench.output;
+    EXPECT_NE(bench.output.find("at rest the full 400x300 picture in "), std::string::npos) << bench.output;
 #endif
 }
 

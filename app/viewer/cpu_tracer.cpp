@@ -1,0 +1,64 @@
+#include "cpu_tracer.h"
+
+#include <ivis/core/errors.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace ivis::app {
+
+render::RenderResult CpuTracer::renderMoving(const render::RenderScene& scene, const core::Camera& camera,
+                                             render::RenderOptions options)
+{
+    cancel();
+    options.width = std::max(16, int(std::lround(options.width * mMovingScale)));
+    options.height = std::max(16, int(std::lround(options.height * mMovingScale)));
+    const auto start = std::chrono::steady_clock::now();
+    const double period = std::chrono::duration<double>(start - mLastMoving).count();
+    mLastMoving = start;
+    render::RenderResult result = render::renderImage(scene, camera, options);
+    const double seconds = std::max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1e-4);
+    // The render may take what the period leaves of the frame (all but the window's own work when
+    // the frames follow each other; three quarters of the period after a pause). The time goes with
+    // the pixels traced: the side scales with the root of the time ratio, damped (halfway in the
+    // logarithm) so that one slow frame does not halve the next.
+    const double budget = period < 4.0 * kMovingPeriod ? std::max(seconds + kMovingPeriod - period, 0.2 * kMovingPeriod)
+                                                       : 0.75 * kMovingPeriod;
+    const double ratio = std::clamp(budget / seconds, 0.25, 4.0);
+    mMovingScale = std::clamp(float(mMovingScale * std::pow(ratio, 0.25)), kMinMovingScale, kMaxMovingScale);
+    return result;
+}
+
+void CpuTracer::startResting(const render::RenderScene& scene, const core::Camera& camera,
+                             const render::RenderOptions& options)
+{
+    cancel();
+    mResting = std::async(std::launch::async,
+                          [&scene, camera, options, this] { return render::renderImage(scene, camera, options, &mCancel); });
+}
+
+std::optional<render::RenderResult> CpuTracer::takeResting()
+{
+    if (!mResting.valid() || mResting.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    try {
+        return mResting.get();
+    } catch (const Cancelled&) {
+        return std::nullopt;
+    }
+}
+
+void CpuTracer::cancel()
+{
+    if (!mResting.valid()) return;
+    mCancel.raised = true;
+    mResting.wait();
+    try {
+        mResting.get();
+    } catch (const Cancelled&) {
+    } catch (...) {  // a picture no longer wanted: its error does not matter now
+    }
+    mCancel.raised = false;
+}
+
+}  // namespace ivis::app
