@@ -37,6 +37,8 @@ class Picture:
     def method(self) -> Dict[str, Any]: ...
     @property
     def measures(self) -> Dict[str, Any]: ...
+    @property
+    def optimization(self) -> Optional[Dict[str, Any]]: ...
     def save(self, path: str) -> None: ...
     def _repr_png_(self) -> bytes: ...
 
@@ -59,6 +61,31 @@ def render(
     shadows: bool = True,
     transparent: bool = False,
     spp: int = 1,
+    progress: Optional[Callable[[str, int], None]] = None,
+    **parameters: Union[float, Sequence[float]],
+) -> Picture: ...
+
+def optimize(
+    mesh: Mesh,
+    method: str = "inversevis-wrap",
+    *,
+    scalar: Optional[str] = None,
+    energy: str = "visibility",
+    gamma: Optional[float] = None,
+    opt_res: int = 100,
+    ascent_res: int = 0,
+    steps: int = 20,
+    seed: int = 1,
+    finalists: int = 5,
+    start: Optional[Tuple[float, float]] = None,
+    size: Tuple[int, int] = (1000, 1000),
+    colormap: str = "viridis",
+    range: Optional[Tuple[float, float]] = None,
+    volume_resolution: int = 200,
+    min_coherence: float = 0.99,
+    legend: bool = True,
+    shadows: bool = True,
+    transparent: bool = False,
     progress: Optional[Callable[[str, int], None]] = None,
     **parameters: Union[float, Sequence[float]],
 ) -> Picture: ...

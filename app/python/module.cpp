@@ -1,15 +1,19 @@
 // The Python module `inversevis`: PYBIND11_MODULE and the docstrings users read with help().
 #include "python_errors.h"
 #include "python_mesh.h"
+#include "python_optimize.h"
 #include "python_picture.h"
 #include "python_render.h"
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/data_array.h>
+#include <ivis/core/errors.h>
 #include <ivis/optimize/readability.h>
 #include <ivis/render/method_registry.h>
 
 #include <pybind11/stl.h>
+
+#include <cstdint>
 
 namespace py = pybind11;
 using namespace ivis;
@@ -95,6 +99,12 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
                                "The method and its parameters as drawn (the readable rule chosen where it ran).")
         .def_property_readonly("measures", [](const python::Picture& p) { return fromJson(p.measures); },
                                "The mapping coherence, what the readability step chose, timing and pixel counts.")
+        .def_property_readonly(
+            "optimization",
+            [](const python::Picture& p) { return p.optimization.is_null() ? py::object(py::none()) : fromJson(p.optimization); },
+            "Of optimize(): the best view's theta and phi, its energy and front energy at opt_res, the search's "
+            "seconds and evaluations, the readable rule chosen and every visited view (as `optimize --json`); None "
+            "for render().")
         .def("save", &python::Picture::save, py::arg("path"),
              "Writes the picture as PNG (.png, with its colour bar) or the multi-layer EXR (.exr), as `render -o` "
              "and `--exr` write them.")
@@ -149,6 +159,59 @@ or camera (a Picture.camera) fixes it. size: (width, height). range: (lo, hi) of
 min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
 full_trace: trace every pixel's ray (no adaptive image sampling). progress: None or a callable
 (stage, percent). The GIL is released while it renders; Ctrl-C raises KeyboardInterrupt.)");
+
+    m.def(
+        "optimize",
+        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::string& energy,
+           const std::optional<float>& gamma, int optRes, int ascentRes, int steps, long long seed, int finalists,
+           const std::optional<std::pair<double, double>>& start, const std::pair<int, int>& size,
+           const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
+           double minCoherence, bool legend, bool shadows, bool transparent, const py::object& progress,
+           const py::kwargs& parameters) {
+            python::OptimizeRequest request;
+            request.look.method = method;
+            if (!scalar.is_none()) request.look.scalar = scalar.cast<std::string>();
+            request.look.size = size;
+            request.look.colormap = colormap;
+            request.look.range = range;
+            request.look.volumeResolution = volumeResolution;
+            request.look.minCoherence = minCoherence;
+            request.look.legend = legend;
+            request.look.shadows = shadows;
+            request.look.transparent = transparent;
+            request.look.parameters = parameters;
+            request.energy = energy;
+            request.gamma = gamma;
+            request.optResolution = optRes;
+            request.ascentResolution = ascentRes;
+            request.steps = steps;
+            if (seed < 0) throw ValueError("seed " + std::to_string(seed) + " must be a whole number from 0");
+            request.seed = std::uint64_t(seed);
+            request.finalists = finalists;
+            request.start = start;
+            return python::optimizeMesh(mesh, request, progress);
+        },
+        py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
+        py::arg("scalar") = py::none(), py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
+        py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,
+        py::arg("finalists") = 5, py::arg("start") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
+        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
+        py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("legend") = true, py::arg("shadows") = true,
+        py::arg("transparent") = false, py::arg("progress") = py::none(),
+        R"(The best view of mesh for a method and its picture, as `inversevis optimize MESH` finds and draws it
+with the same arguments (the same picture, byte for byte).
+
+energy: 'visibility' (the share of the surface some pixel shows) or 'scalar' (the scalar shown,
+gamma weighting the direct part, 1 by default). opt_res: rays per side while searching (the paper: 100 or
+1000); ascent_res: rays per side of each view's parameter ascent (0: opt_res); steps: annealing
+proposals after the start; seed: the search's seed (the same seed, the same result); finalists:
+best views measured again at 200 rays per side (0: none); start: (theta, phi) to start from (None:
+the best of the six axis views). The method's parameters as keywords start its ascent (a readable
+rule given, e.g. stable_shift=0.1, is kept; otherwise the rule keeping min_coherence is chosen).
+size, colormap, range, volume_resolution, legend, shadows, transparent: the picture's, as render().
+Returns a Picture whose camera and method are the best view's, whose measures are its surface
+visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
+optimization holds the search's result. The GIL is released; Ctrl-C raises KeyboardInterrupt.)");
 
     m.def(
         "methods", [] {

@@ -24,6 +24,7 @@ struct Picture {
     core::Similarity meshUnits;   ///< the mesh's normalising transform (the EXR and camera files carry it)
     nlohmann::json method;        ///< the method and its parameters, as --stats-json lists them
     nlohmann::json measures;      ///< coherence, and what the readability step chose
+    nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
 
     /// @brief The PNG's pixels: height x width x 4 uint8, sRGB-encoded (alpha 255 unless transparent).
     pybind11::array rgba() const;

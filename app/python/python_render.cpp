@@ -16,9 +16,7 @@
 namespace py = pybind11;
 
 namespace ivis::python {
-namespace {
 
-/// The method's parameters from Python values: a number, or a sequence of numbers per component.
 render::ParameterValues parameterValues(const py::dict& parameters)
 {
     render::ParameterValues values;
@@ -39,8 +37,6 @@ render::ParameterValues parameterValues(const py::dict& parameters)
     return values;
 }
 
-/// The method @a name with @a values (render::makeMethod), its errors naming the parameters as
-/// keywords (stable_shift) instead of options (--stable-shift).
 render::MethodPtr methodWith(const std::string& name, const render::ParameterValues& values)
 {
     const render::MethodInfo& info = render::methodInfo(name);  // an unknown name fails here
@@ -59,8 +55,6 @@ render::MethodPtr methodWith(const std::string& name, const render::ParameterVal
     }
 }
 
-/// The volume a picture of @a method needs at @a resolution: the far field reaching as far as its
-/// rays fly (as `render` raises --reach for them).
 vdb::VolumeOptions volumeFor(const render::MethodPtr& method, int resolution)
 {
     vdb::VolumeOptions options;
@@ -73,14 +67,13 @@ vdb::VolumeOptions volumeFor(const render::MethodPtr& method, int resolution)
     return options;
 }
 
-}  // namespace
-
-std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, const py::object& progress)
+PictureLook pictureLook(const RenderRequest& request)
 {
     // Every argument is checked before anything is read or built.
-    const render::ParameterValues values = parameterValues(request.parameters);
-    const render::MethodPtr method = methodWith(request.method, values);
-    render::RenderOptions options;
+    PictureLook look;
+    look.values = parameterValues(request.parameters);
+    const render::MethodPtr method = methodWith(request.method, look.values);
+    render::RenderOptions& options = look.options;
     std::tie(options.width, options.height) = request.size;
     if (options.width < 1 || options.height < 1 || options.width > 32768 || options.height > 32768)
         throw ValueError("size (" + std::to_string(options.width) + ", " + std::to_string(options.height) +
@@ -95,11 +88,27 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
     options.shading.shadows = request.shadows;
     options.shading.transparentBackground = request.transparent;
     options.legend = request.legend;
-    core::ColorScaleRequest scale;
-    if (request.range) scale.range = core::scalarRangeFromUser(request.range->first, request.range->second);
-    scale.validate();
+    if (request.range) look.scale.range = core::scalarRangeFromUser(request.range->first, request.range->second);
+    look.scale.validate();
     if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
+    look.volume = volumeFor(method, request.volumeResolution);
+    return look;
+}
+
+void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field, bool rangeGiven)
+{
+    if (rangeGiven && !field.hasScalar()) throw InputError(mesh.source() + ": no scalar to colour by (see scalar=)");
+    options.shading.scale = scale.resolve(field.values);
+    options.scalarName = field.name;
+}
+
+std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, const py::object& progress)
+{
+    PictureLook look = pictureLook(request);
+    const render::RenderOptions& options = look.options;
+    const render::MethodPtr method = options.method;
+    const render::ParameterValues& values = look.values;
     optimize::PictureRequest picture;
     picture.framed = !request.fov && !request.camera;
     if (request.camera) {
@@ -119,17 +128,13 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
                          " needs a wider picture");
     const std::string& rule = method->info().readabilityParameter;
     picture.minCoherence = rule.empty() || values.count(rule) ? 0.0 : request.minCoherence;
-    const vdb::VolumeOptions volume = volumeFor(method, request.volumeResolution);
 
     auto made = std::make_shared<Picture>();
     runReleased(
         [&](core::Interrupter& interrupter) {
-            const std::shared_ptr<const Scene> scene = mesh.scene(request.scalar, volume, &interrupter);
-            if (request.range && !scene->field.hasScalar())
-                throw InputError(mesh.source() + ": no scalar to colour by (see scalar=)");
-            options.shading.scale = scale.resolve(scene->field.values);
-            options.scalarName = scene->field.name;
-            picture.options = options;
+            const std::shared_ptr<const Scene> scene = mesh.scene(request.scalar, look.volume, &interrupter);
+            look.colourBy(mesh, scene->field, request.range.has_value());
+            picture.options = look.options;
             optimize::Picture result = optimize::makePicture(*scene->render, picture, &interrupter);
             made->result = std::move(result.result);
             made->camera = result.camera;

@@ -5,6 +5,11 @@
 #include "python_mesh.h"
 #include "python_picture.h"
 
+#include <ivis/core/color_scale.h>
+#include <ivis/render/method.h>
+#include <ivis/render/renderer.h>
+#include <ivis/vdb/surface_volume.h>
+
 #include <pybind11/pybind11.h>
 
 #include <memory>
@@ -34,6 +39,35 @@ struct RenderRequest {
     int samplesPerPixel = 1;
     pybind11::dict parameters;               ///< the method's parameters by key
 };
+
+/// @brief The method's parameters from Python values: a number, or a sequence of numbers per component.
+/// @throw TypeError (py::type_error) for anything else
+render::ParameterValues parameterValues(const pybind11::dict& parameters);
+
+/// @brief The method @a name with @a values (render::makeMethod), its errors naming the parameters
+///        as keywords (stable_shift) instead of options (--stable-shift).
+render::MethodPtr methodWith(const std::string& name, const render::ParameterValues& values);
+
+/// @brief The volume a picture of @a method needs at @a resolution: the far field reaching as far
+///        as its rays fly (as `render` raises --reach for them).
+vdb::VolumeOptions volumeFor(const render::MethodPtr& method, int resolution);
+
+/// @brief A request's look, checked: the render options (method, size, colours), the colour scale
+///        asked for, the method's parameters as given and the volume it needs.
+struct PictureLook {
+    render::RenderOptions options;
+    core::ColorScaleRequest scale;
+    render::ParameterValues values;
+    vdb::VolumeOptions volume;
+
+    /// @brief Colours by @a field's scalar (of @a mesh): the scale over its data unless given.
+    /// @throw InputError when a range is given and the field has no scalar
+    void colourBy(const Mesh& mesh, const core::SurfaceField& field, bool rangeGiven);
+};
+
+/// @brief Checks every argument of @a request but the camera's and the mesh's.
+/// @throw ValueError / InputError / TypeError naming the argument
+PictureLook pictureLook(const RenderRequest& request);
 
 /// @brief The picture of @a mesh that @a request asks for, the GIL released while it is made.
 std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, const pybind11::object& progress);

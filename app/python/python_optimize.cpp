@@ -1,0 +1,140 @@
+#include "python_optimize.h"
+
+#include "python_call.h"
+
+#include "../json_output.h"
+#include "../optimization_options.h"
+
+#include <ivis/core/errors.h>
+#include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture.h>
+#include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_json.h>
+#include <ivis/render/picture_extent.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace py = pybind11;
+
+namespace ivis::python {
+namespace {
+
+/// @a value as Python prints a float's short form ("2", "0.5", "inf").
+std::string number(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+/// `optimize`'s settings from @a request, each checked as the command line checks its flag.
+app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, const render::MethodPtr& method)
+{
+    app::OptimizationOptions o;
+    if (request.energy != "visibility" && request.energy != "scalar")
+        throw ValueError("energy '" + request.energy + "': visibility or scalar");
+    o.energy = request.energy;
+    if (request.gamma) {
+        if (request.energy != "scalar")
+            throw ValueError("gamma weights the directly visible part of the scalar energy; energy is " + request.energy);
+        if (!(*request.gamma >= 0.0f && *request.gamma <= 1000.0f))
+            throw ValueError("gamma " + number(*request.gamma) + " must lie in [0, 1000]");
+        o.gamma = *request.gamma;
+    }
+    if (request.optResolution < 4 || request.optResolution > 8192)
+        throw ValueError("opt_res " + std::to_string(request.optResolution) + " is out of range (4 to 8192)");
+    if (request.ascentResolution < 0 || (request.ascentResolution > 0 && request.ascentResolution >= request.optResolution))
+        throw ValueError("ascent_res " + std::to_string(request.ascentResolution) + " must lie below opt_res (" +
+                         std::to_string(request.optResolution) + "; 0: the ascent at opt_res)");
+    o.ascentResolution = request.ascentResolution;
+    if (request.steps < 0 || request.steps > 1000000)
+        throw ValueError("steps " + std::to_string(request.steps) + " is out of range (0 to 1000000)");
+    o.steps = request.steps;
+    o.seed = request.seed;
+    if (request.finalists < 0 || request.finalists > 1000)
+        throw ValueError("finalists " + std::to_string(request.finalists) + " is out of range (0 to 1000)");
+    o.finalists = request.finalists;
+    if (request.look.minCoherence < 0.0 || request.look.minCoherence > 1.0)
+        throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
+    // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
+    const std::string& rule = method->info().readabilityParameter;
+    o.minCoherence = rule.empty() || request.look.parameters.contains(rule) ? 0.0 : request.look.minCoherence;
+    o.checkUsedBy({method}, {request.optResolution});
+    return o;
+}
+
+}  // namespace
+
+std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request, const py::object& progress)
+{
+    PictureLook look = pictureLook(request.look);
+    const render::MethodPtr method = look.options.method;
+    const app::OptimizationOptions settings = optimizationOptions(request, method);
+    if (double(look.options.width) <= render::kFramingMargin * look.options.height)
+        throw ValueError("a framed picture of " + std::to_string(look.options.width) + "x" +
+                         std::to_string(look.options.height) + " needs a wider picture");
+    std::optional<glm::dvec2> startAngles;
+    if (request.start) {
+        if (!std::isfinite(request.start->first) || !std::isfinite(request.start->second))
+            throw ValueError("start (" + number(request.start->first) + ", " +
+                             number(request.start->second) + "): theta and phi must be finite degrees");
+        startAngles = glm::dvec2(request.start->first, request.start->second);
+    }
+
+    auto made = std::make_shared<Picture>();
+    runReleased(
+        [&](core::Interrupter& interrupter) {
+            const std::shared_ptr<const Scene> scene = mesh.scene(request.look.scalar, look.volume, &interrupter);
+            look.colourBy(mesh, scene->field, request.look.range.has_value());
+            if (settings.energy == "scalar" && !scene->field.hasScalar())
+                throw InputError(mesh.source() + ": the scalar energy needs a scalar (see scalar=)");
+            const render::RenderScene& renderScene = *scene->render;
+            const core::ScalarRange range = look.options.shading.scale.range;
+            // The search, as `inversevis optimize` runs it (its views framed for their method).
+            const optimize::EnergyEvaluator evaluator(renderScene, settings.energyOptions(request.optResolution, range));
+            const auto ascent = settings.ascentEvaluator(renderScene, request.optResolution, range);
+            const auto finalist = settings.finalistEvaluator(renderScene, request.optResolution, range);
+            const optimize::AnnealingResult result =
+                optimize::annealViewpoint(evaluator, method, settings.annealingOptions(startAngles, std::nullopt),
+                                          settings.ascentOptions(), ascent.get(), &interrupter, finalist.get());
+            const optimize::VisitedView& best = result.bestView();
+            // Its picture at the asked size, framed, and the measures of that view.
+            const core::Camera camera = optimize::framedCamera(renderScene, best.camera, *best.method,
+                                                               look.options.width, look.options.height);
+            look.options.method = best.method;
+            made->result = render::renderImage(renderScene, camera, look.options, &interrupter);
+            optimize::EnergyOptions measure = settings.measureOptions(look.options.height, range);
+            measure.kind = optimize::EnergyKind::Visibility;
+            measure.paperLiteral = true;
+            measure.reveal = scene->field.hasScalar();
+            const optimize::EnergyValue measured = optimize::EnergyEvaluator(renderScene, measure).evaluate(camera, best.method);
+            const double coherence = optimize::mappingCoherence(made->result.layers).value();
+            made->camera = camera;
+            made->meshUnits = scene->field.normalization;
+            made->method = render::methodToJson(*best.method);
+            made->measures = app::measuresJson(measured, coherence, measure.reveal);
+            made->measures["seconds"] = made->result.stats.seconds;
+            made->measures["pixels_direct"] = made->result.stats.pixelsDirect;
+            made->measures["pixels_indirect"] = made->result.stats.pixelsIndirect;
+            made->measures["volume_cache"] = scene->volumePath;
+            nlohmann::json visited = nlohmann::json::array();
+            for (const optimize::VisitedView& view : result.visited) visited.push_back(app::visitedViewJson(view));
+            made->optimization = {{"energy", settings.energy},
+                                  {"opt_res", request.optResolution},
+                                  {"seed", request.seed},
+                                  {"seconds", result.seconds},
+                                  {"evaluations", result.evaluations},
+                                  {"theta", best.thetaDeg},
+                                  {"phi", best.phiDeg},
+                                  {"energy_value", best.value.energy},
+                                  {"front_energy_value", best.value.front},
+                                  {"visited", visited}};
+            if (result.readable) made->optimization["readability"] = optimize::readableSettingJson(*result.readable);
+        },
+        progress);
+    made->transparent = request.look.transparent;
+    return made;
+}
+
+}  // namespace ivis::python
