@@ -163,7 +163,7 @@ full_trace: trace every pixel's ray (no adaptive image sampling). progress: None
     m.def(
         "optimize",
         [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::string& energy,
-           const std::optional<float>& gamma, int optRes, int ascentRes, int steps, long long seed, int finalists,
+           const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed, int finalists,
            const std::optional<std::pair<double, double>>& start, const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
            double minCoherence, bool legend, bool shadows, bool transparent, const py::object& progress,
@@ -185,8 +185,11 @@ full_trace: trace every pixel's ray (no adaptive image sampling). progress: None
             request.optResolution = optRes;
             request.ascentResolution = ascentRes;
             request.steps = steps;
-            if (seed < 0) throw ValueError("seed " + std::to_string(seed) + " must be a whole number from 0");
-            request.seed = std::uint64_t(seed);
+            try {
+                request.seed = seed.cast<std::uint64_t>();
+            } catch (const py::cast_error&) {
+                throw ValueError("seed " + std::string(py::repr(seed)) + " must be a whole number from 0 to 2**64 - 1");
+            }
             request.finalists = finalists;
             request.start = start;
             return python::optimizeMesh(mesh, request, progress);

@@ -44,8 +44,9 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
     }
     if (request.optResolution < 4 || request.optResolution > 8192)
         throw ValueError("opt_res " + std::to_string(request.optResolution) + " is out of range (4 to 8192)");
-    if (request.ascentResolution < 0 || (request.ascentResolution > 0 && request.ascentResolution >= request.optResolution))
-        throw ValueError("ascent_res " + std::to_string(request.ascentResolution) + " must lie below opt_res (" +
+    if (request.ascentResolution < 0 || (request.ascentResolution > 0 && request.ascentResolution < 4) ||
+        (request.ascentResolution > 0 && request.ascentResolution >= request.optResolution))
+        throw ValueError("ascent_res " + std::to_string(request.ascentResolution) + " must lie from 4 to below opt_res (" +
                          std::to_string(request.optResolution) + "; 0: the ascent at opt_res)");
     o.ascentResolution = request.ascentResolution;
     if (request.steps < 0 || request.steps > 1000000)
@@ -82,13 +83,19 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
         startAngles = glm::dvec2(request.start->first, request.start->second);
     }
 
+    // What the scalar shown allows, before anything is built.
+    if (settings.energy == "scalar" || request.look.range) {
+        if (!mesh.shown(request.look.scalar).hasScalar())
+            throw InputError(mesh.source() + (settings.energy == "scalar" ? ": the scalar energy needs a scalar"
+                                                                          : ": no scalar to colour by") +
+                             " (see scalar=)");
+    }
+
     auto made = std::make_shared<Picture>();
     runReleased(
         [&](core::Interrupter& interrupter) {
             const std::shared_ptr<const Scene> scene = mesh.scene(request.look.scalar, look.volume, &interrupter);
             look.colourBy(mesh, scene->field, request.look.range.has_value());
-            if (settings.energy == "scalar" && !scene->field.hasScalar())
-                throw InputError(mesh.source() + ": the scalar energy needs a scalar (see scalar=)");
             const render::RenderScene& renderScene = *scene->render;
             const core::ScalarRange range = look.options.shading.scale.range;
             // The search, as `inversevis optimize` runs it (its views framed for their method).

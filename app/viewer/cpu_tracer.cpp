@@ -19,12 +19,15 @@ render::RenderResult CpuTracer::renderMoving(const render::RenderScene& scene, c
     mLastMoving = start;
     render::RenderResult result = render::renderImage(scene, camera, options);
     const double seconds = std::max(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1e-4);
-    // The render may take what the period leaves of the frame (all but the window's own work when
-    // the frames follow each other; three quarters of the period after a pause). The time goes with
-    // the pixels traced: the side scales with the root of the time ratio, damped (halfway in the
-    // logarithm) so that one slow frame does not halve the next.
-    const double budget = period < 4.0 * kMovingPeriod ? std::max(seconds + kMovingPeriod - period, 0.2 * kMovingPeriod)
-                                                       : 0.75 * kMovingPeriod;
+    // The render may take what the period leaves of the frame: the period less the window's own
+    // work (the last period less the last render), when the frames follow each other; three
+    // quarters of the period after a pause. The time goes with the pixels traced: the side scales
+    // with the root of the time ratio, damped (halfway in the logarithm) so that one slow frame
+    // does not halve the next.
+    const double budget = period < 4.0 * kMovingPeriod
+                              ? std::max(kMovingPeriod - (period - mLastSeconds), 0.2 * kMovingPeriod)
+                              : 0.75 * kMovingPeriod;
+    mLastSeconds = seconds;
     const double ratio = std::clamp(budget / seconds, 0.25, 4.0);
     mMovingScale = std::clamp(float(mMovingScale * std::pow(ratio, 0.25)), kMinMovingScale, kMaxMovingScale);
     return result;
@@ -48,9 +51,9 @@ std::optional<render::RenderResult> CpuTracer::takeResting()
     }
 }
 
-void CpuTracer::cancel()
+bool CpuTracer::cancel()
 {
-    if (!mResting.valid()) return;
+    if (!mResting.valid()) return false;
     mCancel.raised = true;
     mResting.wait();
     try {
@@ -59,6 +62,7 @@ void CpuTracer::cancel()
     } catch (...) {  // a picture no longer wanted: its error does not matter now
     }
     mCancel.raised = false;
+    return true;
 }
 
 }  // namespace ivis::app

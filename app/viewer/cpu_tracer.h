@@ -46,7 +46,8 @@ public:
     /// @brief True while a resting picture is being rendered.
     bool resting() const { return mResting.valid(); }
     /// @brief Stops the resting picture and waits for it (before the scene it reads changes).
-    void cancel();
+    /// @return true when one was running (its picture is not shown)
+    bool cancel();
     /// @brief The fraction of each side the next moving frame traces.
     float movingScale() const { return mMovingScale; }
 
@@ -60,6 +61,7 @@ private:
 
     float mMovingScale = 0.15f;
     std::chrono::steady_clock::time_point mLastMoving;  ///< when the last moving frame started
+    double mLastSeconds = 0.0;                          ///< the last moving frame's render time
     CancelFlag mCancel;
     std::future<render::RenderResult> mResting;
 };

@@ -2,6 +2,11 @@
 /// @brief The `inversevis-view` program: a GLFW window with an OpenGL 4.3 core context, the GPU
 ///        renderer, a Dear ImGui panel, background loading and optimisation, and the headless
 ///        screenshot and benchmark modes.
+/// @note Its definitions, by concept: viewer_app.cpp (the window's life and main loop),
+///       viewer_frames.cpp (a frame: framing, shaders or CPU), viewer_series.cpp (time series),
+///       viewer_colour_by.cpp ("colour by"), viewer_sections.cpp (the panel), viewer_input.cpp
+///       (mouse and keys), viewer_jobs.cpp (the optimisers), viewer_files.cpp (screenshots, view
+///       files), viewer_headless.cpp (--screenshot, --benchmark).
 #pragma once
 
 #include "color_bar_overlay.h"
@@ -80,6 +85,8 @@ private:
     /// is stale, the full picture in the background once the camera rests (@a moving false), shown
     /// when it is done; true when the full picture was shown this call.
     bool traceOnCpu(int width, int height, bool moving);
+    /// Stops the CPU's resting picture before what it reads changes; the next rest draws it again.
+    void stopCpuPicture();
     /// Fits the orbit's field of view to the picture of a width x height frame (the object alone
     /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
     void frameOrbit(int width, int height);

@@ -50,8 +50,9 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
 @pytest.mark.parametrize("arguments, message", [
     (dict(energy="area"), "energy 'area': visibility or scalar"),
     (dict(opt_res=2), "opt_res 2 is out of range"),
-    (dict(opt_res=24, ascent_res=24), "ascent_res 24 must lie below opt_res"),
-    (dict(seed=-1), "seed"),
+    (dict(opt_res=24, ascent_res=24), "ascent_res 24 must lie from 4 to below opt_res"),
+    (dict(seed=-1), "seed -1 must be a whole number from 0"),
+    (dict(opt_res=24, ascent_res=2), "ascent_res 2 must lie from 4"),
     (dict(steps=-1), "steps -1 is out of range"),
     (dict(gamma=2.0), "gamma weights the directly visible part of the scalar energy; energy is visibility"),
     (dict(energy="scalar", gamma=-1.0), "gamma -1"),
