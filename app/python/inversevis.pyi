@@ -40,6 +40,7 @@ class Picture:
     @property
     def optimization(self) -> Optional[Dict[str, Any]]: ...
     def save(self, path: str) -> None: ...
+    def save_view(self, path: str) -> None: ...
     def _repr_png_(self) -> bytes: ...
 
 def render(
@@ -54,13 +55,20 @@ def render(
     size: Tuple[int, int] = (1000, 1000),
     colormap: str = "viridis",
     range: Optional[Tuple[float, float]] = None,
+    log: bool = False,
+    invert: bool = False,
+    units: str = "",
     volume_resolution: int = 200,
     min_coherence: float = 0.99,
     full_trace: bool = False,
     legend: bool = True,
+    legend_side: str = "right",
+    outline: bool = True,
     shadows: bool = True,
+    shade_indirect: bool = True,
     transparent: bool = False,
     spp: int = 1,
+    measure: bool = False,
     progress: Optional[Callable[[str, int], None]] = None,
     **parameters: Union[float, Sequence[float]],
 ) -> Picture: ...
@@ -89,5 +97,7 @@ def optimize(
     progress: Optional[Callable[[str, int], None]] = None,
     **parameters: Union[float, Sequence[float]],
 ) -> Picture: ...
+
+def read_view(path: str) -> Dict[str, Any]: ...
 
 def methods() -> List[str]: ...

@@ -4,6 +4,7 @@
 #include "python_optimize.h"
 #include "python_picture.h"
 #include "python_render.h"
+#include "python_view.h"
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/data_array.h>
@@ -98,7 +99,8 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         .def_property_readonly("method", [](const python::Picture& p) { return fromJson(p.method); },
                                "The method and its parameters as drawn (the readable rule chosen where it ran).")
         .def_property_readonly("measures", [](const python::Picture& p) { return fromJson(p.measures); },
-                               "The mapping coherence, what the readability step chose, timing and pixel counts.")
+                               "The mapping coherence, what the readability step chose, timing and pixel counts; with measure=True "
+                               "(and of optimize()) the surface visibility and the other measures of docs/measures.md.")
         .def_property_readonly(
             "optimization",
             [](const python::Picture& p) { return p.optimization.is_null() ? py::object(py::none()) : fromJson(p.optimization); },
@@ -108,6 +110,10 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         .def("save", &python::Picture::save, py::arg("path"),
              "Writes the picture as PNG (.png, with its colour bar) or the multi-layer EXR (.exr), as `render -o` "
              "and `--exr` write them.")
+        .def("save_view", &python::Picture::saveView, py::arg("path"),
+             "Writes the picture's view file (camera, method and parameters, scalar, colours, look), as `render "
+             "--view-out` writes one: `inversevis render MESH --view FILE` and the viewer's --view show the picture, "
+             "read_view(FILE) gives it back to render().")
         .def("_repr_png_", &python::Picture::png)
         .def("__repr__", [](const python::Picture& p) {
             return "<inversevis.Picture " + std::to_string(p.result.image.width()) + "x" +
@@ -118,9 +124,10 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         "render",
         [](python::Mesh& mesh, const std::string& method, const py::object& scalar, double theta, double phi,
            const std::optional<double>& fov, const std::optional<py::dict>& camera, const std::pair<int, int>& size,
-           const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
-           double minCoherence, bool fullTrace, bool legend, bool shadows, bool transparent, int spp,
-           const py::object& progress, const py::kwargs& parameters) {
+           const std::string& colormap, const std::optional<std::pair<double, double>>& range, bool log, bool invert,
+           const std::string& units, int volumeResolution, double minCoherence, bool fullTrace, bool legend,
+           const std::string& legendSide, bool outline, bool shadows, bool shadeIndirect, bool transparent, int spp,
+           bool measure, const py::object& progress, const py::kwargs& parameters) {
             python::RenderRequest request;
             request.method = method;
             if (!scalar.is_none()) request.scalar = scalar.cast<std::string>();
@@ -131,23 +138,32 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             request.size = size;
             request.colormap = colormap;
             request.range = range;
+            request.log = log;
+            request.invert = invert;
+            request.units = units;
             request.volumeResolution = volumeResolution;
             request.minCoherence = minCoherence;
             request.fullTrace = fullTrace;
             request.legend = legend;
+            request.legendSide = legendSide;
+            request.outline = outline;
             request.shadows = shadows;
+            request.shadeIndirect = shadeIndirect;
             request.transparent = transparent;
             request.samplesPerPixel = spp;
+            request.measure = measure;
             request.parameters = parameters;
             return python::renderMesh(mesh, request, progress);
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("theta") = 90.0, py::arg("phi") = 0.0, py::arg("fov") = py::none(),
         py::arg("camera") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
-        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
+        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("log") = false,
+        py::arg("invert") = false, py::arg("units") = "", py::arg("volume_resolution") = 200,
         py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("full_trace") = false,
-        py::arg("legend") = true, py::arg("shadows") = true, py::arg("transparent") = false, py::arg("spp") = 1,
-        py::arg("progress") = py::none(),
+        py::arg("legend") = true, py::arg("legend_side") = "right", py::arg("outline") = true,
+        py::arg("shadows") = true, py::arg("shade_indirect") = true, py::arg("transparent") = false,
+        py::arg("spp") = 1, py::arg("measure") = false, py::arg("progress") = py::none(),
         R"(A picture of mesh, as `inversevis render MESH` makes it with the same arguments.
 
 method: a method's name (methods() lists them); its parameters as keywords by their keys
@@ -155,9 +171,14 @@ method: a method's name (methods() lists them); its parameters as keywords by th
 ('NAME', 'NAME:0' for a component, 'cell:NAME'; None: the file's default). theta, phi: the
 camera on the sphere of radius 2.5, the field of view framed to the picture unless fov (degrees)
 or camera (a Picture.camera) fixes it. size: (width, height). range: (lo, hi) of the colour scale
-(None: the data's). volume_resolution: the volume's N (cached as the command line caches it).
+(None: the data's); log, invert, units, legend, legend_side ('right', 'left', 'bottom'),
+outline, shadows, shade_indirect, transparent, spp: render's --log, --invert, --units,
+--no-legend, --legend, --no-outline, --no-shadows, --unshaded-indirect, --transparent, --spp.
+read_view(path) gives the arguments of a view file's picture: render(mesh, **read_view(path)). volume_resolution: the volume's N (cached as the command line caches it).
 min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
-full_trace: trace every pixel's ray (no adaptive image sampling). progress: None or a callable
+full_trace: trace every pixel's ray (no adaptive image sampling). measure: also measure what the
+picture shows, as `render --measure` (measures: visibility, paper_literal, front_visibility,
+surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: None or a callable
 (stage, percent). The GIL is released while it renders; Ctrl-C raises KeyboardInterrupt.)");
 
     m.def(
@@ -215,6 +236,11 @@ size, colormap, range, volume_resolution, legend, shadows, transparent: the pict
 Returns a Picture whose camera and method are the best view's, whose measures are its surface
 visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
 optimization holds the search's result. The GIL is released; Ctrl-C raises KeyboardInterrupt.)");
+
+    m.def("read_view", &python::readView, py::arg("path"),
+          "The keyword arguments of render() that draw a view file's picture (`render --view-out`, the viewer's "
+          "'save view', Picture.save_view): render(mesh, **read_view(path)) is `inversevis render MESH --view path`; "
+          "update the dict to change one. Raises InputError naming the file for a bad view.");
 
     m.def(
         "methods", [] {

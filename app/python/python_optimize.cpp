@@ -118,6 +118,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             const optimize::EnergyValue measured = optimize::EnergyEvaluator(renderScene, measure).evaluate(camera, best.method);
             const double coherence = optimize::mappingCoherence(made->result.layers).value();
             made->camera = camera;
+            made->look = look.options;
+            made->scalar = request.look.scalar;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*best.method);
             made->measures = app::measuresJson(measured, coherence, measure.reveal);

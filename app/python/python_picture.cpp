@@ -1,5 +1,7 @@
 #include "python_picture.h"
 
+#include "../view_file.h"
+
 #include <ivis/core/errors.h>
 #include <ivis/core/file_extension.h>
 #include <ivis/core/image_io.h>
@@ -48,6 +50,13 @@ void Picture::save(const std::string& path) const
         core::writeExr(result.image, result.layers, path, meshUnits);
     else
         throw ValueError(path + ": a picture is saved as .png or .exr");
+}
+
+void Picture::saveView(const std::string& path) const
+{
+    core::SurfaceLoadOptions load;
+    load.read.scalarName = scalar;
+    app::writeViewFile(app::viewOfPicture(camera, look, load, meshUnits), path);
 }
 
 py::bytes Picture::png() const

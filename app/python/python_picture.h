@@ -25,6 +25,8 @@ struct Picture {
     nlohmann::json method;        ///< the method and its parameters, as --stats-json lists them
     nlohmann::json measures;      ///< coherence, and what the readability step chose
     nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
+    render::RenderOptions look;   ///< what it was rendered with (size, method as drawn, colours, legend)
+    std::string scalar;           ///< the scalar asked for ("" : the file's default array)
 
     /// @brief The PNG's pixels: height x width x 4 uint8, sRGB-encoded (alpha 255 unless transparent).
     pybind11::array rgba() const;
@@ -35,6 +37,10 @@ struct Picture {
     ///        a temporary name.
     /// @throw ValueError for another extension; InputError when it cannot be written
     void save(const std::string& path) const;
+    /// @brief Writes its view file (camera, method, scalar, colours, look) as `render --view-out`
+    ///        writes one, through a temporary name: `render --view` and the viewer show the picture.
+    /// @throw InputError when it cannot be written
+    void saveView(const std::string& path) const;
     /// @brief The PNG file's bytes, for a notebook.
     pybind11::bytes png() const;
 };

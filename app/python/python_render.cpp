@@ -2,7 +2,10 @@
 
 #include "python_call.h"
 
+#include "../json_output.h"
+
 #include <ivis/core/camera_json.h>
+#include <ivis/core/color_bar.h>
 #include <ivis/core/colormap.h>
 #include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
@@ -88,7 +91,13 @@ PictureLook pictureLook(const RenderRequest& request)
     options.shading.shadows = request.shadows;
     options.shading.transparentBackground = request.transparent;
     options.legend = request.legend;
+    options.legendSide = core::legendSideFromName(request.legendSide);
+    options.units = request.units;
+    options.outline = request.outline;
+    options.shading.shadeIndirect = request.shadeIndirect;
     if (request.range) look.scale.range = core::scalarRangeFromUser(request.range->first, request.range->second);
+    look.scale.log = request.log;
+    look.scale.invert = request.invert;
     look.scale.validate();
     if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
@@ -138,6 +147,9 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
             optimize::Picture result = optimize::makePicture(*scene->render, picture, &interrupter);
             made->result = std::move(result.result);
             made->camera = result.camera;
+            made->look = picture.options;
+            made->look.method = result.method;
+            made->scalar = request.scalar;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*result.method);
             made->measures = {{"coherence", optimize::mappingCoherence(made->result.layers).value()},
@@ -146,6 +158,12 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
                               {"pixels_indirect", made->result.stats.pixelsIndirect},
                               {"volume_cache", scene->volumePath}};
             if (result.readable) made->measures["readability"] = optimize::readableSettingJson(*result.readable);
+            if (request.measure) {
+                const nlohmann::json measured = app::pictureMeasuresJson(
+                    *scene->render, result.camera, result.method, look.options.height,
+                    look.options.shading.scale.range, made->measures["coherence"].get<double>());
+                for (const auto& [key, value] : measured.items()) made->measures[key] = value;
+            }
         },
         progress);
     made->transparent = request.transparent;

@@ -30,6 +30,12 @@ struct RenderRequest {
     std::pair<int, int> size{1000, 1000};    ///< width, height
     std::string colormap = "viridis";
     std::optional<std::pair<double, double>> range;
+    bool log = false;                        ///< a log colour scale (--log)
+    bool invert = false;                     ///< the colour map reversed (--invert)
+    std::string units;                       ///< the colour bar's units (--units)
+    std::string legendSide = "right";        ///< the colour bar's side (--legend)
+    bool outline = true;                     ///< the direct part's outline (--no-outline)
+    bool shadeIndirect = true;               ///< indirect pixels lit (--unshaded-indirect)
     int volumeResolution = 200;
     double minCoherence;                     ///< the readable rule's minimum (0: the method's own rule)
     bool fullTrace = false;
@@ -37,6 +43,7 @@ struct RenderRequest {
     bool shadows = true;
     bool transparent = false;
     int samplesPerPixel = 1;
+    bool measure = false;                    ///< also what `render --measure` measures
     pybind11::dict parameters;               ///< the method's parameters by key
 };
 

@@ -1,0 +1,59 @@
+#include "python_view.h"
+
+#include "../view_file.h"
+
+#include <ivis/core/camera_json.h>
+#include <ivis/core/errors.h>
+#include <ivis/render/method_json.h>
+
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace ivis::python {
+namespace {
+
+/// A JSON value as the Python object json.loads would give.
+py::object fromJson(const nlohmann::json& json)
+{
+    return py::module_::import("json").attr("loads")(json.dump());
+}
+
+const char* sideName(core::LegendSide side)
+{
+    return side == core::LegendSide::Left ? "left" : side == core::LegendSide::Bottom ? "bottom" : "right";
+}
+
+}  // namespace
+
+py::dict readView(const std::string& path)
+{
+    const app::ViewFile view = app::readViewFile(path);
+    if (!view.scalarFile.empty() || view.cellToPoint || view.hotSpots > 0)
+        throw InputError(path + ": the view colours by " +
+                         std::string(!view.scalarFile.empty() ? "a scalar file"
+                                     : view.cellToPoint      ? "cell values averaged onto the vertices"
+                                                             : "generated hot spots") +
+                         ", which render() does not take; render it with `inversevis render --view`");
+    py::dict arguments;
+    arguments["camera"] = fromJson(core::cameraFileJson(view.camera, view.meshUnits));
+    arguments["size"] = py::make_tuple(view.width, view.height);
+    const nlohmann::json method = render::methodToJson(*view.method);
+    for (const auto& [key, value] : method.items()) arguments[py::str(key)] = fromJson(value);
+    arguments["scalar"] = view.scalar.empty() ? py::object(py::none()) : py::object(py::str(view.scalar));
+    arguments["colormap"] = view.colormap;
+    arguments["range"] = py::make_tuple(view.scale.range.lo, view.scale.range.hi);
+    arguments["log"] = view.scale.log;
+    arguments["invert"] = view.scale.invert;
+    arguments["units"] = view.units;
+    arguments["legend"] = view.legend;
+    arguments["legend_side"] = sideName(view.legendSide);
+    arguments["outline"] = view.outline;
+    arguments["shadows"] = view.shadows;
+    arguments["shade_indirect"] = view.shadeIndirect;
+    arguments["spp"] = view.samplesPerPixel;
+    arguments["transparent"] = view.transparent;
+    return arguments;
+}
+
+}  // namespace ivis::python

@@ -1,0 +1,71 @@
+"""View files pass between the command line and Python: a view `render --view-out` wrote draws
+the same picture from Python, a Python picture's view draws it on the command line; measure=True
+measures what `render --measure` measures."""
+import json
+
+import pytest
+
+import inversevis
+from conftest import run_cli
+
+
+def test_a_cli_view_draws_the_same_picture_from_python(tmp_path):
+    view, cli_png = tmp_path / "v.view.json", tmp_path / "cli.png"
+    done = run_cli("render", "scene:vessel-tree", "--res", "240x180", "--theta", "60", "--phi", "40", "--colormap",
+                   "plasma", "--log", "--invert", "--units", "Pa", "--legend", "left", "--no-outline",
+                   "--unshaded-indirect", "--volume-res", "64", "-o", str(cli_png), "--view-out", str(view))
+    assert done.returncode == 0, done.stderr
+    arguments = inversevis.read_view(str(view))
+    assert arguments["size"] == (240, 180) and arguments["log"] and arguments["invert"]
+    assert arguments["legend_side"] == "left" and arguments["units"] == "Pa" and not arguments["outline"]
+    picture = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), volume_resolution=64, **arguments)
+    picture.save(str(tmp_path / "py.png"))
+    again = run_cli("render", "scene:vessel-tree", "--view", str(view), "--volume-res", "64", "-o",
+                    str(tmp_path / "again.png"))
+    assert again.returncode == 0, again.stderr
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "again.png").read_bytes()
+    assert (tmp_path / "py.png").read_bytes() == cli_png.read_bytes()
+
+
+def test_a_python_pictures_view_draws_it_on_the_command_line(tmp_path):
+    mesh = inversevis.Mesh.read("scene:vessel-tree")
+    picture = inversevis.render(mesh, "mirror", size=(200, 150), theta=120, phi=-30, colormap="coolwarm",
+                                range=(0.2, 0.8), volume_resolution=64, mirror_w=[0.4, 0.3, 0.0, 0.1, 0.0])
+    picture.save(str(tmp_path / "py.png"))
+    picture.save_view(str(tmp_path / "p.view.json"))
+    done = run_cli("render", "scene:vessel-tree", "--view", str(tmp_path / "p.view.json"), "--volume-res", "64",
+                   "-o", str(tmp_path / "cli.png"))
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "cli.png").read_bytes() == (tmp_path / "py.png").read_bytes()
+    # An optimised picture's view too: its method carries the rule the search chose.
+    best = inversevis.optimize(mesh, volume_resolution=64, opt_res=24, steps=1, finalists=0, size=(200, 150))
+    best.save_view(str(tmp_path / "best.view.json"))
+    assert inversevis.read_view(str(tmp_path / "best.view.json"))["stable_shift"] == best.method["stable_shift"]
+
+
+def test_bad_views_are_refused_naming_the_file(tmp_path):
+    broken = tmp_path / "broken.view.json"
+    broken.write_text("{\"inversevis_view\": 1, \"camera\": ")
+    with pytest.raises(inversevis.InputError, match="broken.view.json"):
+        inversevis.read_view(str(broken))
+    hot = tmp_path / "hot.view.json"
+    done = run_cli("render", "scene:vessel-tree", "--hotspots", "2", "--res", "80x60", "--volume-res", "64",
+                   "-o", str(tmp_path / "hot.png"), "--view-out", str(hot))
+    assert done.returncode == 0, done.stderr
+    with pytest.raises(inversevis.InputError, match="hot.view.json: the view colours by generated hot spots"):
+        inversevis.read_view(str(hot))
+
+
+def test_measure_measures_what_render_measure_does(tmp_path):
+    stats = tmp_path / "s.json"
+    done = run_cli("render", "scene:vessel-tree", "--res", "200x150", "--measure", "--volume-res", "64",
+                   "--stats-json", str(stats), "-o", str(tmp_path / "cli.png"))
+    assert done.returncode == 0, done.stderr
+    measured = json.loads(stats.read_text())["measures"]
+    picture = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), size=(200, 150), volume_resolution=64,
+                                measure=True)
+    for key, value in measured.items():
+        assert picture.measures[key] == value, key
+    assert 0.0 < picture.measures["visibility"] <= 1.0
+    assert "visibility" not in inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), size=(200, 150),
+                                                 volume_resolution=64).measures
