@@ -16,12 +16,15 @@ void MethodOptions::addTo(CLI::App& command)
     for (const render::MethodInfo* info : render::methodRegistry())
         for (const render::ParameterSpec& spec : info->parameters) {
             CLI::Option*& option = mOptions[spec.key];
-            if (option) {
-                option->description(option->get_description() + "; " + info->name);
-                continue;
-            }
             std::string defaults;
             for (float v : spec.defaults) defaults += (defaults.empty() ? "" : " ") + CLI::detail::to_string(v);
+            if (option) {  // a parameter several methods share: each method's own default where it differs
+                const render::ParameterSpec& first = *render::methodInfo(mFirstMethod.at(spec.key)).parameter(spec.key);
+                option->description(option->get_description() + "; " + info->name +
+                                    (first.defaults == spec.defaults ? "" : " (default " + defaults + ")"));
+                continue;
+            }
+            mFirstMethod[spec.key] = info->name;
             option = command.add_option(spec.option(), values[spec.key],
                                         spec.help + " (default " + defaults + ", " + CLI::detail::to_string(spec.lo) +
                                             " to " + CLI::detail::to_string(spec.hi) + "); for " + info->name);

@@ -36,6 +36,7 @@ struct MethodOptions {
 
 private:
     std::map<std::string, CLI::Option*> mOptions;
+    std::map<std::string, std::string> mFirstMethod;  ///< by key: the first method with the parameter (its default leads the help)
     CLI::Option* mMethodOption = nullptr;
 };
 

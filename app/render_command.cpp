@@ -32,31 +32,216 @@
 
 namespace ivis::app {
 
+namespace {
+
+/// What `render` was given on its command line.
+struct RenderFlags {
+    MeshOptions mesh;
+    ViewOptions view;
+    std::string output = "inversevis.png";
+    std::string exr;
+    std::string statsJson;
+    std::string cameraOut;
+    std::string legendOnly;
+    std::string viewOut;
+    std::string tearMap;
+    std::string unseenMap;
+    std::vector<std::string> probes;
+    std::string cacheDir;
+    std::vector<std::string> sources;
+    bool rangePerFrame = false;
+    std::string frames;
+    double fps = 5;
+    bool noVideo = false;
+    bool measure = false;
+    double minCoherence = optimize::kDefaultMinCoherence;
+    std::vector<CLI::Option*> seriesFlags;
+};
+
+/// What every picture of one `render` run shares, checked before anything is read.
+struct RenderPlan {
+    std::vector<OutputFile> outputs;
+    std::vector<InputFile> inputs;
+    render::RenderOptions asked;        ///< the method and the picture's size (before the data's scale)
+    bool chooseRule = false;            ///< the readable rule is chosen (optimize/readability.h)
+    SeriesRenderRequest frameRange;     ///< --frames
+    std::vector<glm::ivec2> probePixels;
+    vdb::VolumeOptions volumeOptions;
+    core::Camera requested;             ///< the camera asked for (framed later when the view is)
+};
+
+/// `render SERIES`: a picture per step of @a flags' series (and a video, the stats, the view).
+void renderSeriesPictures(RenderFlags& flags, const RenderPlan& plan, core::ProgressBar& progress)
+{
+    if (!flags.tearMap.empty())
+        throw InputError("--tear-map: a series has one picture per step; render the step alone");
+    if (!flags.unseenMap.empty())
+        throw InputError("--unseen-map: a series has one picture per step; render the step alone");
+    if (!flags.probes.empty())
+        throw InputError("--probe: a series has one picture per step; render the step alone");
+    core::SurfaceSeries series(flags.sources, flags.mesh.load);
+    SeriesRenderRequest request;
+    request.png = flags.output;
+    request.exr = flags.exr;
+    request.video = !flags.noVideo && flags.frames.empty();  // a job's part: no video
+    request.firstStep = plan.frameRange.firstStep;
+    request.lastStep = plan.frameRange.lastStep;
+    if (flags.legendOnly.empty()) checkSeriesOutputFiles(request, series.steps().size(), plan.outputs, plan.inputs);
+    request.method = plan.asked.method;
+    request.camera = plan.requested;
+    // Loads every step: a bad one fails before anything is written.
+    const core::ColorScaleRequest eachFrame = flags.view.colorScaleRequest();
+    const SeriesSurvey survey = surveySeries(series, flags.rangePerFrame ? &eachFrame : nullptr);
+    flags.view.checkColourFlags(survey.scalar, series.source());
+    if (!flags.legendOnly.empty() && !survey.scalar)
+        throw InputError(series.source() + ": no scalar to draw a colour bar of (see --scalar)");
+    request.stepScales = survey.stepScales;
+    if (!flags.rangePerFrame || !flags.legendOnly.empty())
+        request.scale = flags.view.colorScaleRequest().resolve(survey.sample);
+    if (!flags.legendOnly.empty()) {
+        render::RenderOptions legend = plan.asked;
+        legend.shading.scale = *request.scale;
+        legend.scalarName = series.load(0).name;
+        writeLegendFile(flags.legendOnly, legend);
+        return;
+    }
+    request.volume = plan.volumeOptions;
+    request.cacheFolder = vdb::optionalCacheFolder(flags.cacheDir);  // after the checks: their one line
+    request.cameraOut = flags.cameraOut;
+    request.fps = flags.fps;
+    request.measure = flags.measure;
+    request.minCoherence = plan.chooseRule ? flags.minCoherence : 0.0;
+    const nlohmann::json stats = renderSeries(series, flags.view, request, &progress);
+    if (!flags.viewOut.empty()) {
+        render::RenderOptions look = plan.asked;
+        look.shading.scale = request.scale.value_or(look.shading.scale);
+        look.method = request.method;
+        writeViewFile(viewOfPicture(core::readCameraJson(stats.at("camera").get<std::string>()), look,
+                                    flags.mesh.load, series.load(0).normalization),
+                      flags.viewOut);
+    }
+    if (!flags.statsJson.empty()) writeJsonFile(stats, flags.statsJson);
+}
+
+/// `render MESH`: the picture, its layers, camera, view, stats, measures and probes.
+void renderOnePicture(RenderFlags& flags, const RenderPlan& plan, core::ProgressBar& progress)
+{
+    flags.mesh.source = flags.sources.front();
+    const core::SurfaceField field = core::loadSurface(flags.mesh.source, flags.mesh.load);
+    render::RenderOptions renderOptions = flags.view.renderOptions(field);
+    if (!flags.legendOnly.empty()) {
+        if (!field.hasScalar())
+            throw InputError(flags.mesh.source + ": no scalar to draw a colour bar of (see --scalar)");
+        writeLegendFile(flags.legendOnly, renderOptions);
+        return;
+    }
+
+    const std::string volumePath =
+        vdb::defaultVolumePath(vdb::optionalCacheFolder(flags.cacheDir), flags.mesh.source, field.mesh, plan.volumeOptions);
+    const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, plan.volumeOptions, volumePath, &progress);
+    const render::RenderScene scene(field, volume);
+    optimize::PictureRequest pictureRequest;
+    pictureRequest.options = renderOptions;
+    pictureRequest.camera = plan.requested;
+    pictureRequest.framed = flags.view.framed();
+    pictureRequest.minCoherence = plan.chooseRule ? flags.minCoherence : 0.0;
+    const optimize::Picture picture = optimize::makePicture(scene, pictureRequest, &progress);
+    if (picture.readable) core::logInfo(readableSettingLine(*picture.readable));
+    const std::optional<optimize::ReadableSetting>& readable = picture.readable;
+    const core::Camera& camera = picture.camera;
+    renderOptions.method = picture.method;
+    const render::RenderResult& result = picture.result;
+
+    // Every output under a temporary name, renamed into place together once all are written.
+    core::AtomicFileSet files;
+    files.write(flags.output, [&](const std::string& temporary) {
+        core::writePng(result.figure, temporary, renderOptions.shading.transparentBackground);
+    });
+    if (!flags.exr.empty())
+        files.write(flags.exr, [&](const std::string& temporary) {
+            core::writeExr(result.image, result.layers, temporary, field.normalization);
+        });
+    const std::string cameraPath = flags.cameraOut.empty() ? flags.output + ".camera.json" : flags.cameraOut;
+    files.write(cameraPath, [&](const std::string& temporary) {
+        core::writeCameraJson(camera, temporary, field.normalization);
+    });
+    if (!flags.viewOut.empty())
+        files.write(flags.viewOut, [&](const std::string& temporary) {
+            writeViewFile(viewOfPicture(camera, renderOptions, flags.mesh.load, field.normalization), temporary);
+        });
+
+    const render::RenderStats& s = result.stats;
+    if (s.nanPixels > 0)
+        core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
+    const glm::dvec2 angles = camera.angles();
+    std::vector<char> torn;  // marked only for a tear map
+    const double coherence =
+        optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, flags.tearMap.empty() ? nullptr : &torn)
+            .value();
+    if (!flags.tearMap.empty())
+        files.write(flags.tearMap, [&](const std::string& temporary) {
+            core::writePng(optimize::tearMap(result.image, torn), temporary, false);
+        });
+    nlohmann::json stats = {{"seconds", s.seconds},
+                                  {"width", renderOptions.width},
+                                  {"height", renderOptions.height},
+                                  {"samples_per_pixel", renderOptions.samplesPerPixel},
+                                  {"pixels_direct", s.pixelsDirect},
+                                  {"pixels_indirect", s.pixelsIndirect},
+                                  {"pixels_background", s.pixelsBackground},
+                                  {"seeds_interpolated", s.seedsInterpolated},
+                                  {"pixels_skipped", s.pixelsSkipped},
+                                  {"full_trace", !renderOptions.adaptive.enabled},
+                                  {"rays_launched", s.raysLaunched},
+                                  {"rays_landed", s.raysLanded},
+                                  {"mean_steps", s.meanSteps()},
+                                  {"nan_pixels", s.nanPixels},
+                                  {"coherence", coherence},
+                                  {"theta", angles.x},
+                                  {"phi", angles.y},
+                                  {"fov_y_deg", camera.fovYDeg},
+                                  {"framed", flags.view.framed()},
+                                  {"volume_resolution", volume.options.resolution},
+                                  {"volume_cache",  // null: no cache folder could be written
+                                   volumePath.empty() ? nlohmann::json() : nlohmann::json(volumePath)},
+                                  {"output", flags.output},
+                                  {"camera", cameraPath}};
+    const nlohmann::json method = render::methodToJson(*renderOptions.method);
+    for (const auto& [key, value] : method.items()) stats[key] = value;
+    if (readable) stats["readability"] = readableSettingJson(*readable);
+    if (flags.measure || !flags.unseenMap.empty()) {
+        core::Image unseen;
+        stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
+                                                renderOptions.shading.scale.range, coherence,
+                                                flags.unseenMap.empty() ? nullptr : &unseen);
+        core::logInfo(measuresLine(stats["measures"]));
+        if (!flags.unseenMap.empty())
+            files.write(flags.unseenMap,
+                        [&](const std::string& temporary) { core::writePng(unseen, temporary, false); });
+    }
+    std::string probeLines;  // said once the plan.outputs are in place
+    for (const glm::ivec2& pixel : plan.probePixels) {
+        const ProbeReport report =
+            probeReport(scene, renderOptions.method, camera, renderOptions.width, renderOptions.height, pixel,
+                        renderOptions.adaptive);
+        stats["probes"].push_back(probeJson(report, field));
+        probeLines += probeLine(report, field) + "\n";
+    }
+    if (!flags.statsJson.empty())
+        files.write(flags.statsJson, [&](const std::string& temporary) { writeJsonFile(stats, temporary); });
+    files.commit();
+    std::fputs(probeLines.c_str(), stdout);
+    core::logInfo("wrote " + flags.output + " (" + std::to_string(renderOptions.width) + "x" +
+                  std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
+                  ", " + flags.view.describeFraming(camera) + ", " + std::to_string(s.seconds) +
+                  " s render)");
+}
+
+}  // namespace
+
 Command addRenderCommand(CLI::App& app)
 {
-    struct Options {
-        MeshOptions mesh;
-        ViewOptions view;
-        std::string output = "inversevis.png";
-        std::string exr;
-        std::string statsJson;
-        std::string cameraOut;
-        std::string legendOnly;
-        std::string viewOut;
-        std::string tearMap;
-        std::string unseenMap;
-        std::vector<std::string> probes;
-        std::string cacheDir;
-        std::vector<std::string> sources;
-        bool rangePerFrame = false;
-        std::string frames;
-        double fps = 5;
-        bool noVideo = false;
-        bool measure = false;
-        double minCoherence = optimize::kDefaultMinCoherence;
-        std::vector<CLI::Option*> seriesFlags;
-    };
-    auto options = std::make_shared<Options>();
+    auto options = std::make_shared<RenderFlags>();
     CLI::App* command = app.add_subcommand(
         "render", "Render a method's picture to PNG (and EXR layers); of a time series, one picture per step");
     options->mesh.addTo(*command, &options->sources,
@@ -134,7 +319,8 @@ Command addRenderCommand(CLI::App& app)
         options->view.rangeOfEachPicture = options->rangePerFrame;
         // The camera is written beside the picture (a series': beside its frames) unless told where.
         const bool defaultCamera = options->cameraOut.empty();
-        const std::vector<OutputFile> outputs = {
+        RenderPlan plan;
+        plan.outputs = {
             {options->output, "-o", {".png"}},
             {options->exr, "--exr", {".exr"}},
             {options->statsJson, "--stats-json", {}},
@@ -144,197 +330,37 @@ Command addRenderCommand(CLI::App& app)
             {options->viewOut, "--view-out", {}},
             {options->tearMap, "--tear-map", {".png"}},
             {options->unseenMap, "--unseen-map", {".png"}}};
-        const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
-                                                        options->view.cameraFile, options->view.viewFile);
-        checkOutputFiles(outputs, inputs);
-        const render::RenderOptions asked = options->view.renderOptions();  // the method and the picture's size
+        plan.inputs = readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,
+                                options->view.viewFile);
+        checkOutputFiles(plan.outputs, plan.inputs);
+        plan.asked = options->view.renderOptions();
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
-        const std::string readabilityKey = asked.method->info().readabilityParameter;
+        const std::string readabilityKey = plan.asked.method->info().readabilityParameter;
         if (readabilityKey.empty() && command->get_option("--min-coherence")->count() > 0)
-            throw ValueError("--min-coherence: " + asked.method->name() +
+            throw ValueError("--min-coherence: " + plan.asked.method->name() +
                              " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
-        const bool chooseRule =
+        plan.chooseRule =
             options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
-        SeriesRenderRequest frameRange;  // --frames, checked before anything is read
         if (!options->frames.empty()) {
-            parseFrameRange(options->frames, frameRange);
+            parseFrameRange(options->frames, plan.frameRange);
             if (options->view.framed())
                 throw InputError("--frames: every job must use one camera; give --view, --camera or --fov (a framed "
                                  "view follows the job's first step)");
         }
-        std::vector<glm::ivec2> probePixels;
         for (const std::string& text : options->probes)
-            probePixels.push_back(parseProbePixel(text, asked.width, asked.height));
+            plan.probePixels.push_back(parseProbePixel(text, plan.asked.width, plan.asked.height));
         // Every flag is checked before the mesh is read (and logged about), so a bad one fails alone.
-        options->mesh.fitReachTo({asked.method});
-        const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
-        const core::Camera requested = options->view.camera();
+        options->mesh.fitReachTo({plan.asked.method});
+        plan.volumeOptions = options->mesh.volumeOptions();
+        plan.requested = options->view.camera();
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         progress.setContext(core::sourceStem(options->sources.front()));
-        if (isSeries) {
-            if (!options->tearMap.empty())
-                throw InputError("--tear-map: a series has one picture per step; render the step alone");
-            if (!options->unseenMap.empty())
-                throw InputError("--unseen-map: a series has one picture per step; render the step alone");
-            if (!options->probes.empty())
-                throw InputError("--probe: a series has one picture per step; render the step alone");
-            core::SurfaceSeries series(options->sources, options->mesh.load);
-            SeriesRenderRequest request;
-            request.png = options->output;
-            request.exr = options->exr;
-            request.video = !options->noVideo && options->frames.empty();  // a job's part: no video
-            request.firstStep = frameRange.firstStep;
-            request.lastStep = frameRange.lastStep;
-            if (options->legendOnly.empty()) checkSeriesOutputFiles(request, series.steps().size(), outputs, inputs);
-            request.method = options->view.renderOptions().method;
-            request.camera = requested;
-            // Loads every step: a bad one fails before anything is written.
-            const core::ColorScaleRequest eachFrame = options->view.colorScaleRequest();
-            const SeriesSurvey survey = surveySeries(series, options->rangePerFrame ? &eachFrame : nullptr);
-            options->view.checkColourFlags(survey.scalar, series.source());
-            if (!options->legendOnly.empty() && !survey.scalar)
-                throw InputError(series.source() + ": no scalar to draw a colour bar of (see --scalar)");
-            request.stepScales = survey.stepScales;
-            if (!options->rangePerFrame || !options->legendOnly.empty())
-                request.scale = options->view.colorScaleRequest().resolve(survey.sample);
-            if (!options->legendOnly.empty()) {
-                render::RenderOptions legend = options->view.renderOptions();
-                legend.shading.scale = *request.scale;
-                legend.scalarName = series.load(0).name;
-                writeLegendFile(options->legendOnly, legend);
-                return;
-            }
-            request.volume = volumeOptions;
-            request.cacheFolder = vdb::optionalCacheFolder(options->cacheDir);  // after the checks: their one line
-            request.cameraOut = options->cameraOut;
-            request.fps = options->fps;
-            request.measure = options->measure;
-            request.minCoherence = chooseRule ? options->minCoherence : 0.0;
-            const nlohmann::json stats = renderSeries(series, options->view, request, &progress);
-            if (!options->viewOut.empty()) {
-                render::RenderOptions look = options->view.renderOptions();
-                look.shading.scale = request.scale.value_or(look.shading.scale);
-                look.method = request.method;
-                writeViewFile(viewOfPicture(core::readCameraJson(stats.at("camera").get<std::string>()), look,
-                                            options->mesh.load, series.load(0).normalization),
-                              options->viewOut);
-            }
-            if (!options->statsJson.empty()) writeJsonFile(stats, options->statsJson);
-            return;
-        }
-        options->mesh.source = options->sources.front();
-        const core::SurfaceField field = core::loadSurface(options->mesh.source, options->mesh.load);
-        render::RenderOptions renderOptions = options->view.renderOptions(field);
-        if (!options->legendOnly.empty()) {
-            if (!field.hasScalar())
-                throw InputError(options->mesh.source + ": no scalar to draw a colour bar of (see --scalar)");
-            writeLegendFile(options->legendOnly, renderOptions);
-            return;
-        }
-
-        const std::string volumePath =
-            vdb::defaultVolumePath(vdb::optionalCacheFolder(options->cacheDir), options->mesh.source, field.mesh, volumeOptions);
-        const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, volumeOptions, volumePath, &progress);
-        const render::RenderScene scene(field, volume);
-        optimize::PictureRequest pictureRequest;
-        pictureRequest.options = renderOptions;
-        pictureRequest.camera = requested;
-        pictureRequest.framed = options->view.framed();
-        pictureRequest.minCoherence = chooseRule ? options->minCoherence : 0.0;
-        const optimize::Picture picture = optimize::makePicture(scene, pictureRequest, &progress);
-        if (picture.readable) core::logInfo(readableSettingLine(*picture.readable));
-        const std::optional<optimize::ReadableSetting>& readable = picture.readable;
-        const core::Camera& camera = picture.camera;
-        renderOptions.method = picture.method;
-        const render::RenderResult& result = picture.result;
-
-        // Every output under a temporary name, renamed into place together once all are written.
-        core::AtomicFileSet files;
-        files.write(options->output, [&](const std::string& temporary) {
-            core::writePng(result.figure, temporary, renderOptions.shading.transparentBackground);
-        });
-        if (!options->exr.empty())
-            files.write(options->exr, [&](const std::string& temporary) {
-                core::writeExr(result.image, result.layers, temporary, field.normalization);
-            });
-        const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
-        files.write(cameraPath, [&](const std::string& temporary) {
-            core::writeCameraJson(camera, temporary, field.normalization);
-        });
-        if (!options->viewOut.empty())
-            files.write(options->viewOut, [&](const std::string& temporary) {
-                writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), temporary);
-            });
-
-        const render::RenderStats& s = result.stats;
-        if (s.nanPixels > 0)
-            core::logWarning(std::to_string(s.nanPixels) + " pixels show NaN scalar values (drawn in magenta)");
-        const glm::dvec2 angles = camera.angles();
-        std::vector<char> torn;  // marked only for a tear map
-        const double coherence =
-            optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, options->tearMap.empty() ? nullptr : &torn)
-                .value();
-        if (!options->tearMap.empty())
-            files.write(options->tearMap, [&](const std::string& temporary) {
-                core::writePng(optimize::tearMap(result.image, torn), temporary, false);
-            });
-        nlohmann::json stats = {{"seconds", s.seconds},
-                                      {"width", renderOptions.width},
-                                      {"height", renderOptions.height},
-                                      {"samples_per_pixel", renderOptions.samplesPerPixel},
-                                      {"pixels_direct", s.pixelsDirect},
-                                      {"pixels_indirect", s.pixelsIndirect},
-                                      {"pixels_background", s.pixelsBackground},
-                                      {"seeds_interpolated", s.seedsInterpolated},
-                                      {"pixels_skipped", s.pixelsSkipped},
-                                      {"full_trace", !renderOptions.adaptive.enabled},
-                                      {"rays_launched", s.raysLaunched},
-                                      {"rays_landed", s.raysLanded},
-                                      {"mean_steps", s.meanSteps()},
-                                      {"nan_pixels", s.nanPixels},
-                                      {"coherence", coherence},
-                                      {"theta", angles.x},
-                                      {"phi", angles.y},
-                                      {"fov_y_deg", camera.fovYDeg},
-                                      {"framed", options->view.framed()},
-                                      {"volume_resolution", volume.options.resolution},
-                                      {"volume_cache",  // null: no cache folder could be written
-                                       volumePath.empty() ? nlohmann::json() : nlohmann::json(volumePath)},
-                                      {"output", options->output},
-                                      {"camera", cameraPath}};
-        const nlohmann::json method = render::methodToJson(*renderOptions.method);
-        for (const auto& [key, value] : method.items()) stats[key] = value;
-        if (readable) stats["readability"] = readableSettingJson(*readable);
-        if (options->measure || !options->unseenMap.empty()) {
-            core::Image unseen;
-            stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
-                                                    renderOptions.shading.scale.range, coherence,
-                                                    options->unseenMap.empty() ? nullptr : &unseen);
-            core::logInfo(measuresLine(stats["measures"]));
-            if (!options->unseenMap.empty())
-                files.write(options->unseenMap,
-                            [&](const std::string& temporary) { core::writePng(unseen, temporary, false); });
-        }
-        std::string probeLines;  // said once the outputs are in place
-        for (const glm::ivec2& pixel : probePixels) {
-            const ProbeReport report =
-                probeReport(scene, renderOptions.method, camera, renderOptions.width, renderOptions.height, pixel,
-                            renderOptions.adaptive);
-            stats["probes"].push_back(probeJson(report, field));
-            probeLines += probeLine(report, field) + "\n";
-        }
-        if (!options->statsJson.empty())
-            files.write(options->statsJson, [&](const std::string& temporary) { writeJsonFile(stats, temporary); });
-        files.commit();
-        std::fputs(probeLines.c_str(), stdout);
-        core::logInfo("wrote " + options->output + " (" + std::to_string(renderOptions.width) + "x" +
-                      std::to_string(renderOptions.height) + ", " + renderOptions.method->name() +
-                      ", " + options->view.describeFraming(camera) + ", " + std::to_string(s.seconds) +
-                      " s render)");
+        if (isSeries) renderSeriesPictures(*options, plan, progress);
+        else renderOnePicture(*options, plan, progress);
     }};
 }
 

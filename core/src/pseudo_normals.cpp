@@ -1,16 +1,13 @@
 #include <ivis/core/pseudo_normals.h>
 
+#include <ivis/core/edge_key.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace ivis::core {
-
-std::uint64_t PseudoNormals::edgeKey(std::uint32_t a, std::uint32_t b)
-{
-    return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-}
 
 PseudoNormals::PseudoNormals(const TriangleMesh& mesh)
     : mMesh(mesh), mFace(mesh.triangles.size()), mVertex(mesh.positions.size(), glm::dvec3(0.0))
@@ -32,7 +29,7 @@ PseudoNormals::PseudoNormals(const TriangleMesh& mesh)
             if (l1 > 0.0 && l2 > 0.0)
                 mVertex[tri[c]] += std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0, 1.0)) * mFace[t];
             const std::uint32_t a = tri[c], b = tri[(c + 1) % 3];
-            const std::uint64_t key = edgeKey(a, b);
+            const std::uint64_t key = undirectedEdgeKey(a, b);
             direction[key] += a < b ? 1 : -1;
             ++uses[key];
             mEdge[key] += mFace[t];
@@ -59,7 +56,7 @@ glm::dvec3 PseudoNormals::at(int triangle, const glm::dvec3& barycentric) const
     if (zeros == 0) return mFace[triangle];
     if (zeros == 2) return mVertex[tri[nonZero]];
     const int skip = barycentric[0] <= 0.0 ? 0 : barycentric[1] <= 0.0 ? 1 : 2;
-    return mEdge.at(edgeKey(tri[(skip + 1) % 3], tri[(skip + 2) % 3]));
+    return mEdge.at(undirectedEdgeKey(tri[(skip + 1) % 3], tri[(skip + 2) % 3]));
 }
 
 }  // namespace ivis::core

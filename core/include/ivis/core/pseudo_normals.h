@@ -29,8 +29,6 @@ public:
     glm::dvec3 at(int triangle, const glm::dvec3& barycentric) const;
 
 private:
-    static std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b);
-
     const TriangleMesh& mMesh;
     bool mUsable = false;
     std::vector<glm::dvec3> mFace;
