@@ -18,6 +18,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/optimize/annealing_plot.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture_measure.h>
 #include <ivis/optimize/series_importance.h>
 #include <ivis/render/method_json.h>
 #include <ivis/vdb/volume_cache.h>
@@ -162,6 +163,14 @@ Command addOptimizeCommand(CLI::App& app)
         const std::string viewPath = options->viewOut.empty() ? options->output + ".view.json" : options->viewOut;
         nlohmann::json seriesStats;
         double coherence = 0.0;
+        const optimize::EnergyOptions displayOptions =
+            options->optimization.measureOptions(renderOptions.height, importanceRange);
+        optimize::EnergyOptions measureOptions = displayOptions;
+        measureOptions.kind = optimize::EnergyKind::Visibility;
+        measureOptions.paperLiteral = true;
+        measureOptions.reveal = field.hasScalar();
+        const optimize::EnergyEvaluator measure(scene, measureOptions);
+        optimize::EnergyValue measured;
         // Renamed into place together once all are written (a series' frames: by renderSeries).
         core::AtomicFileSet files;
         if (isSeries) {
@@ -178,6 +187,7 @@ Command addOptimizeCommand(CLI::App& app)
             request.fps = options->fps;
             seriesStats = renderSeries(*series, options->view, request, &progress);
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
+            measured = measure.evaluate(camera, best.method);
             render::RenderOptions look = renderOptions;
             look.shading.scale = seriesScale;
             files.write(viewPath, [&](const std::string& temporary) {
@@ -200,14 +210,8 @@ Command addOptimizeCommand(CLI::App& app)
                 writeViewFile(viewOfPicture(camera, renderOptions, options->mesh.load, field.normalization), temporary);
             });
             coherence = optimize::mappingCoherence(picture.layers).value();
+            measured = optimize::measurePicture(measure, picture.layers);  // the picture's own pixels
         }
-        const optimize::EnergyOptions displayOptions =
-            options->optimization.measureOptions(renderOptions.height, importanceRange);
-        optimize::EnergyOptions measureOptions = displayOptions;
-        measureOptions.kind = optimize::EnergyKind::Visibility;
-        measureOptions.paperLiteral = true;
-        measureOptions.reveal = field.hasScalar();
-        const optimize::EnergyValue measured = optimize::EnergyEvaluator(scene, measureOptions).evaluate(camera, best.method);
         // The visibility energy is the measure itself: measure it once.
         const optimize::EnergyValue display =
             displayOptions.kind == optimize::EnergyKind::Visibility

@@ -8,6 +8,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/picture.h>
+#include <ivis/optimize/picture_measure.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/picture_extent.h>
@@ -115,7 +116,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             measure.kind = optimize::EnergyKind::Visibility;
             measure.paperLiteral = true;
             measure.reveal = scene->field.hasScalar();
-            const optimize::EnergyValue measured = optimize::EnergyEvaluator(renderScene, measure).evaluate(camera, best.method);
+            const optimize::EnergyValue measured =
+                optimize::measurePicture(optimize::EnergyEvaluator(renderScene, measure), made->result.layers);
             const double coherence = optimize::mappingCoherence(made->result.layers).value();
             made->camera = camera;
             made->look = look.options;
