@@ -2,7 +2,7 @@
 
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/curved_ray_method.h>
-#include <ivis/render/ring_map_method.h>
+#include <ivis/render/neugebauer_method.h>
 #include <ivis/render/shading.h>
 #include <ivis/vdb/surface_volume.h>
 
@@ -189,7 +189,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
         p.set("uHullLo", glm::vec3(hull.lo));
         p.set("uHullHi", glm::vec3(hull.hi));
     }
-    if (const auto* ring = dynamic_cast<const render::RingMapMethod*>(&method)) {
+    if (const auto* ring = dynamic_cast<const render::NeugebauerMethod*>(&method)) {
         const render::RingLayout rings = render::layoutRings(camera, field.mesh, ring->params());
         p.set("uRingPixelCentre", glm::vec2(rings.centre));
         p.set("uRingInner", float(rings.innerRadius));

@@ -9,7 +9,7 @@
 #include <ivis/render/quadratic_mirror.h>
 #include <ivis/render/shading.h>
 #include <ivis/render/shadow.h>
-#include <ivis/render/wrap_inversevis_method.h>
+#include <ivis/render/inversevis_wrap_method.h>
 
 #include <cstdio>
 #include <initializer_list>

@@ -4,7 +4,7 @@ uniform vec3 uAlphaProfile;     // a0, a1, a2
 uniform float uMaxAlpha;        // the profile's clamp
 uniform int uRetries;           // relaunches at half alpha of a ray that does not land
 
-// AlphaProfile::at of the seed's alignment c = r . g / |g| (AdaptiveInverseVisMethod::launchVelocity).
+// AlphaProfile::at of the seed's alignment c = r . g / |g| (InverseVisAdaptiveMethod::launchVelocity).
 float profileAlpha(vec3 gradient, vec3 viewDirection)
 {
     float len = length(gradient);

@@ -1,5 +1,5 @@
 // inversevis-wrap: curved rays from the view ray's closest approach, in rings as wide as each part
-// is thick, launched faster and steeper outward across the ring (render::WrapInverseVisMethod).
+// is thick, launched faster and steeper outward across the ring (render::InverseVisWrapMethod).
 uniform float uWrapSpeed;
 uniform float uWrapTilt;
 uniform float uRingScale;
@@ -84,14 +84,14 @@ float localRadiusNear(vec3 p)
     return barycentric.x * localRadius[v.x] + barycentric.y * localRadius[v.y] + barycentric.z * localRadius[v.z];
 }
 
-// The launch at ring coordinate @a t (WrapInverseVisMethod::aim's launchAt): alpha = speed t (2 - t)
+// The launch at ring coordinate @a t (InverseVisWrapMethod::aim's launchAt): alpha = speed t (2 - t)
 // along the view direction's tangential part, tilted outward by tilt t.
 vec3 wrapLaunch(float t, vec3 along, vec3 outward)
 {
     return uWrapSpeed * t * (2.0 - t) * normalize(along + uWrapTilt * t * outward);
 }
 
-// The indirect ray of @a pixel: CurvedRayMap::map with WrapInverseVisMethod::aim.
+// The indirect ray of @a pixel: CurvedRayMap::map with InverseVisWrapMethod::aim.
 bool indirectRay(vec2 pixel, out vec3 colour)
 {
     colour = vec3(0.0);
@@ -110,7 +110,7 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     vec3 outward = len > 0.0 ? gradient / len : vec3(0.0);
     vec3 along = normalize(initialVelocity(gradient, direction, 1.0));
     // The ray, and the rays of the neighbouring pixels across the ring: seeds a step further in and
-    // out (WrapInverseVisMethod's kNeighbourStep), the ring coordinate moving with them.
+    // out (InverseVisWrapMethod's kNeighbourStep), the ring coordinate moving with them.
     float step = min(kWrapProbeStep, distance);
     vec3 here = seed, inner = seed - step * outward, outer = seed + step * outward;
     vec3 v = wrapLaunch(ring, along, outward);

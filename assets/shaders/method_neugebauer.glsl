@@ -1,5 +1,5 @@
 // neugebauer: the ring map of Neugebauer et al. 2009 plus the back-side disc
-// (render/src/neugebauer_map.cpp, RingMapMethod's RingMap::map).
+// (render/src/neugebauer_map.cpp, NeugebauerMethod's RingMap::map).
 // ---- ring map (render::RingLayout, pixels)
 uniform vec2 uRingPixelCentre;
 uniform float uRingInner;

@@ -1,13 +1,13 @@
 #include <ivis/render/method_registry.h>
 
 #include <ivis/core/errors.h>
-#include <ivis/render/adaptive_inversevis_method.h>
+#include <ivis/render/inversevis_adaptive_method.h>
 #include <ivis/render/backfaces_method.h>
 #include <ivis/render/front_method.h>
 #include <ivis/render/inversevis_method.h>
 #include <ivis/render/mirror_method.h>
-#include <ivis/render/ring_map_method.h>
-#include <ivis/render/wrap_inversevis_method.h>
+#include <ivis/render/neugebauer_method.h>
+#include <ivis/render/inversevis_wrap_method.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,12 +44,12 @@ const std::vector<const MethodInfo*>& methodRegistry()
 {
     // One line per method: adding a method is its file pair and a line here.
     static const std::vector<const MethodInfo*> registry = {
-        &frontMethodInfo(),  &backfacesMethodInfo(),  &ringMapMethodInfo(),
-        &mirrorMethodInfo(), &inverseVisMethodInfo(), &adaptiveInverseVisMethodInfo(), &wrapInverseVisMethodInfo()};
+        &frontMethodInfo(),  &backfacesMethodInfo(),  &neugebauerMethodInfo(),
+        &mirrorMethodInfo(), &inverseVisMethodInfo(), &inverseVisAdaptiveMethodInfo(), &inverseVisWrapMethodInfo()};
     return registry;
 }
 
-MethodPtr defaultMethod() { return makeMethod(wrapInverseVisMethodInfo().name); }
+MethodPtr defaultMethod() { return makeMethod(inverseVisWrapMethodInfo().name); }
 
 std::vector<std::string> methodNames()
 {

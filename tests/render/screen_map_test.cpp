@@ -7,7 +7,7 @@
 #include <ivis/render/curved_ray_method.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/mirror_method.h>
-#include <ivis/render/ring_map_method.h>
+#include <ivis/render/neugebauer_method.h>
 #include <ivis/render/screen_map.h>
 
 #include <glm/geometric.hpp>
@@ -232,7 +232,7 @@ void expectIndirectPointsOnSurface(const test::SceneFixture& fixture, const Meth
     const core::CameraFrame frame(camera, 64, 64);
     const ScreenMap screen(scene, frame, method);
     const auto* mirror = dynamic_cast<const MirrorMethod*>(method.get());
-    const auto* ring = dynamic_cast<const RingMapMethod*>(method.get());
+    const auto* ring = dynamic_cast<const NeugebauerMethod*>(method.get());
     const RingLayout rings = ring ? layoutRings(frame, scene.mesh(), ring->params()) : RingLayout{};
     auto sampler = scene.distance().sampler();
     int indirect = 0;

@@ -1,4 +1,4 @@
-#include <ivis/render/ring_map_method.h>
+#include <ivis/render/neugebauer_method.h>
 
 namespace ivis::render {
 namespace {
@@ -26,22 +26,22 @@ private:
 
 }  // namespace
 
-ParameterValues RingMapMethod::values() const
+ParameterValues NeugebauerMethod::values() const
 {
     return {{"ring_centre", {mParams.centre.x, mParams.centre.y, mParams.centre.z}}, {"ring_width", {mParams.ringWidth}}};
 }
 
-std::unique_ptr<IndirectMap> RingMapMethod::indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const
+std::unique_ptr<IndirectMap> NeugebauerMethod::indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const
 {
     return std::make_unique<RingMap>(scene, frame, mParams);
 }
 
-PictureExtent RingMapMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+PictureExtent NeugebauerMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
     return ringExtent(camera, scene.mesh(), mParams);
 }
 
-const MethodInfo& ringMapMethodInfo()
+const MethodInfo& neugebauerMethodInfo()
 {
     static const MethodInfo info = [] {
         MethodInfo i;
@@ -55,7 +55,7 @@ const MethodInfo& ringMapMethodInfo()
             const std::vector<float>& c = v.at("ring_centre");
             params.centre = {c[0], c[1], c[2]};
             params.ringWidth = v.at("ring_width")[0];
-            return std::make_shared<const RingMapMethod>(params);
+            return std::make_shared<const NeugebauerMethod>(params);
         };
         return i;
     }();

@@ -1,4 +1,4 @@
-#include <ivis/render/wrap_inversevis_method.h>
+#include <ivis/render/inversevis_wrap_method.h>
 
 #include <ivis/render/landed_extent.h>
 #include <ivis/render/render_scene.h>
@@ -37,7 +37,7 @@ float localRadiusNear(const RenderScene& scene, const glm::vec3& p, double bound
 
 }  // namespace
 
-ParameterValues WrapInverseVisMethod::values() const
+ParameterValues InverseVisWrapMethod::values() const
 {
     ParameterValues values = curvedRayValues(rayParams());
     values["wrap_speed"] = {mLaunch.speed};
@@ -67,7 +67,7 @@ glm::vec3 outwardAt(const CurvedRayStart& start)
 
 }  // namespace
 
-bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& /*sampler*/) const
+bool InverseVisWrapMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, DistanceField::Sampler& /*sampler*/) const
 {
     const RenderScene& scene = rays.scene();
     const float distance = start.seedDistance;
@@ -95,7 +95,7 @@ bool WrapInverseVisMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     return true;
 }
 
-int WrapInverseVisMethod::stabilityProbes(const CurvedRayStart& start, CurvedRayStart* probes) const
+int InverseVisWrapMethod::stabilityProbes(const CurvedRayStart& start, CurvedRayStart* probes) const
 {
     // Where rays fly smoothly, the landings of neighbouring pixels across the ring lie on a smooth
     // curve; where they fly chaotically, or part on either side of a tear, the rays launched from
@@ -116,7 +116,7 @@ int WrapInverseVisMethod::stabilityProbes(const CurvedRayStart& start, CurvedRay
     return 2;
 }
 
-bool WrapInverseVisMethod::isStable(CurvedRayStart& start, const CurvedRayEnd& own, const CurvedRayEnd* probes) const
+bool InverseVisWrapMethod::isStable(CurvedRayStart& start, const CurvedRayEnd& own, const CurvedRayEnd* probes) const
 {
     if (!own.landed || !probes[0].landed || !probes[1].landed) {
         start.refusal = own.landed ? Refusal::NeighbourDoesNotLand : Refusal::DoesNotLand;
@@ -128,22 +128,22 @@ bool WrapInverseVisMethod::isStable(CurvedRayStart& start, const CurvedRayEnd& o
     return false;
 }
 
-std::optional<StabilityScale> WrapInverseVisMethod::stabilityScale() const
+std::optional<StabilityScale> InverseVisWrapMethod::stabilityScale() const
 {
     return StabilityScale{mLaunch.stableShift, kWrapProbeStep};
 }
 
-glm::vec3 WrapInverseVisMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
+glm::vec3 InverseVisWrapMethod::launchVelocity(const CurvedRayStart& start, int /*launch*/) const
 {
     return start.alpha * start.launchDirection;
 }
 
-PictureExtent WrapInverseVisMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
+PictureExtent InverseVisWrapMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
     return landedExtent(scene, camera, *this, CurvedRayMethod::pictureExtent(scene, camera));
 }
 
-const MethodInfo& wrapInverseVisMethodInfo()
+const MethodInfo& inverseVisWrapMethodInfo()
 {
     static const MethodInfo info = [] {
         MethodInfo i;
@@ -174,7 +174,7 @@ const MethodInfo& wrapInverseVisMethodInfo()
             launch.stableShift = v.at("stable_shift")[0];
             CurvedRayParams ray = curvedRayParamsFrom(v);
             ray.landingVoxels = v.at("landing")[0];
-            return std::make_shared<const WrapInverseVisMethod>(ray, launch);
+            return std::make_shared<const InverseVisWrapMethod>(ray, launch);
         };
         return i;
     }();

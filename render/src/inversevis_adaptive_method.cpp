@@ -1,4 +1,4 @@
-#include <ivis/render/adaptive_inversevis_method.h>
+#include <ivis/render/inversevis_adaptive_method.h>
 
 namespace ivis::render {
 namespace {
@@ -13,19 +13,19 @@ float launchAlpha(const AlphaProfile& profile, const CurvedRayStart& start, int 
 
 }  // namespace
 
-ParameterValues AdaptiveInverseVisMethod::values() const
+ParameterValues InverseVisAdaptiveMethod::values() const
 {
     ParameterValues values = curvedRayValues(rayParams());
     values["alpha_profile"] = {mProfile.coefficients.begin(), mProfile.coefficients.end()};
     return values;
 }
 
-glm::vec3 AdaptiveInverseVisMethod::launchVelocity(const CurvedRayStart& start, int launch) const
+glm::vec3 InverseVisAdaptiveMethod::launchVelocity(const CurvedRayStart& start, int launch) const
 {
     return launchAlpha(mProfile, start, launch) * start.tangent;
 }
 
-bool AdaptiveInverseVisMethod::launchSensitivity(const CurvedRayStart& start, int launch,
+bool InverseVisAdaptiveMethod::launchSensitivity(const CurvedRayStart& start, int launch,
                                                  LaunchSensitivity& sensitivity) const
 {
     // alpha = a0 + a1 c + a2 c^2 moves with a_k by c^k, unless the profile is clamped there.
@@ -42,7 +42,7 @@ bool AdaptiveInverseVisMethod::launchSensitivity(const CurvedRayStart& start, in
     return true;
 }
 
-const MethodInfo& adaptiveInverseVisMethodInfo()
+const MethodInfo& inverseVisAdaptiveMethodInfo()
 {
     static const MethodInfo info = [] {
         MethodInfo i;
@@ -59,7 +59,7 @@ const MethodInfo& adaptiveInverseVisMethodInfo()
         i.create = [](const ParameterValues& v) {
             AlphaProfile profile;
             for (std::size_t k = 0; k < profile.coefficients.size(); ++k) profile.coefficients[k] = v.at("alpha_profile")[k];
-            return std::make_shared<const AdaptiveInverseVisMethod>(curvedRayParamsFrom(v), profile);
+            return std::make_shared<const InverseVisAdaptiveMethod>(curvedRayParamsFrom(v), profile);
         };
         return i;
     }();

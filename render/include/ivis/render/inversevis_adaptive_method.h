@@ -1,4 +1,4 @@
-/// @file adaptive_inversevis_method.h
+/// @file inversevis_adaptive_method.h
 /// @brief The `inversevis-adaptive` method (beyond the paper): InverseVis whose alpha varies
 ///        across the ring with where the pixel's view ray meets the hull.
 #pragma once
@@ -27,17 +27,17 @@ struct AlphaProfile {
 
 /// @brief Description of `inversevis-adaptive`: alpha_profile (a0 a1 a2, optimised along the unit
 ///        gradient; tangent-linear gradient for the scalar energy), hull_offset, step, max_steps.
-const MethodInfo& adaptiveInverseVisMethodInfo();
+const MethodInfo& inverseVisAdaptiveMethodInfo();
 
 /// @brief InverseVis with the alpha profile.
-class AdaptiveInverseVisMethod final : public CurvedRayMethod {
+class InverseVisAdaptiveMethod final : public CurvedRayMethod {
 public:
     /// @brief The method with rays @a ray and the alpha profile @a profile.
-    AdaptiveInverseVisMethod(const CurvedRayParams& ray, const AlphaProfile& profile)
+    InverseVisAdaptiveMethod(const CurvedRayParams& ray, const AlphaProfile& profile)
         : CurvedRayMethod(ray), mProfile(profile)
     {
     }
-    const MethodInfo& info() const override { return adaptiveInverseVisMethodInfo(); }
+    const MethodInfo& info() const override { return inverseVisAdaptiveMethodInfo(); }
     ParameterValues values() const override;
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
     int relaunches() const override { return mProfile.retries; }

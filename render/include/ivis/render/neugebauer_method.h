@@ -1,4 +1,4 @@
-/// @file ring_map_method.h
+/// @file neugebauer_method.h
 /// @brief The `neugebauer` method: the ring map of Neugebauer et al. (2009) around the projected
 ///        centre plus a back-side disc on the left (docs/method.md, "Baseline 1").
 #pragma once
@@ -9,14 +9,14 @@
 namespace ivis::render {
 
 /// @brief Description of `neugebauer`: parameters ring_centre (x y z) and ring_width.
-const MethodInfo& ringMapMethodInfo();
+const MethodInfo& neugebauerMethodInfo();
 
 /// @brief The ring map with its parameters.
-class RingMapMethod final : public Method {
+class NeugebauerMethod final : public Method {
 public:
     /// @brief The rings of @a params.
-    explicit RingMapMethod(const RingParams& params) : mParams(params) {}
-    const MethodInfo& info() const override { return ringMapMethodInfo(); }
+    explicit NeugebauerMethod(const RingParams& params) : mParams(params) {}
+    const MethodInfo& info() const override { return neugebauerMethodInfo(); }
     ParameterValues values() const override;
     bool indirectRaysArriveFromOutside() const override { return false; }
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;

@@ -1,4 +1,4 @@
-/// @file wrap_inversevis_method.h
+/// @file inversevis_wrap_method.h
 /// @brief The `inversevis-wrap` method (beyond the paper): the back side unwraps outward from the
 ///        silhouette. A ring pixel's curved ray starts where its view ray passes closest to the
 ///        surface; the ring around each part is as wide as the part is thick; the further out
@@ -27,14 +27,14 @@ struct WrapLaunch {
 /// @brief Description of `inversevis-wrap`: wrap_speed, wrap_tilt, ring_scale, stable_shift (the
 ///        readability parameter), landing, hull_offset, step, max_steps; none is optimised by the ascent
 ///        (each ray's speed and stability are set when it is aimed, docs/optimisation.md).
-const MethodInfo& wrapInverseVisMethodInfo();
+const MethodInfo& inverseVisWrapMethodInfo();
 
 /// @brief Curved rays from the closest approach, launched by WrapLaunch.
-class WrapInverseVisMethod final : public CurvedRayMethod {
+class InverseVisWrapMethod final : public CurvedRayMethod {
 public:
     /// @brief The method with rays @a ray launched by @a launch.
-    WrapInverseVisMethod(const CurvedRayParams& ray, const WrapLaunch& launch) : CurvedRayMethod(ray), mLaunch(launch) {}
-    const MethodInfo& info() const override { return wrapInverseVisMethodInfo(); }
+    InverseVisWrapMethod(const CurvedRayParams& ray, const WrapLaunch& launch) : CurvedRayMethod(ray), mLaunch(launch) {}
+    const MethodInfo& info() const override { return inverseVisWrapMethodInfo(); }
     ParameterValues values() const override;
     SeedRule seedRule() const override { return SeedRule::ClosestApproach; }
     /// @brief Sets the ring position from the local radius, the launch direction and alpha; false
