@@ -1,5 +1,6 @@
 // The Python module `inversevis`: PYBIND11_MODULE and the docstrings users read with help().
 #include "python_errors.h"
+#include "python_json.h"
 #include "python_mesh.h"
 #include "python_optimize.h"
 #include "python_picture.h"
@@ -20,12 +21,6 @@ namespace py = pybind11;
 using namespace ivis;
 
 namespace {
-
-/// A JSON value as the Python object json.loads would give.
-py::object fromJson(const nlohmann::json& json)
-{
-    return py::module_::import("json").attr("loads")(json.dump());
-}
 
 /// One array as a dict, the keys `inversevis info --json` uses.
 py::dict arrayDict(const core::ArrayInfo& a)
@@ -94,16 +89,16 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             "layers", [](const py::object& self) { return self.cast<const python::Picture&>().layers(self); },
             "The EXR's layers by name ('depth', 'region' (0 background, 1 direct, 2 indirect), 'triangle', 'P.X', "
             "'P.Y', 'P.Z' (normalised units), 'scalar', 'steps'): (height, width) float32 views of the picture.")
-        .def_property_readonly("camera", [](const python::Picture& p) { return fromJson(core::cameraFileJson(p.camera, p.meshUnits)); },
+        .def_property_readonly("camera", [](const python::Picture& p) { return python::fromJson(core::cameraFileJson(p.camera, p.meshUnits)); },
                                "The camera, as the camera file `render` writes (render(camera=...) takes it back).")
-        .def_property_readonly("method", [](const python::Picture& p) { return fromJson(p.method); },
+        .def_property_readonly("method", [](const python::Picture& p) { return python::fromJson(p.method); },
                                "The method and its parameters as drawn (the readable rule chosen where it ran).")
-        .def_property_readonly("measures", [](const python::Picture& p) { return fromJson(p.measures); },
+        .def_property_readonly("measures", [](const python::Picture& p) { return python::fromJson(p.measures); },
                                "The mapping coherence, what the readability step chose, timing and pixel counts; with measure=True "
                                "(and of optimize()) the surface visibility and the other measures of docs/measures.md.")
         .def_property_readonly(
             "optimization",
-            [](const python::Picture& p) { return p.optimization.is_null() ? py::object(py::none()) : fromJson(p.optimization); },
+            [](const python::Picture& p) { return p.optimization.is_null() ? py::object(py::none()) : python::fromJson(p.optimization); },
             "Of optimize(): the best view's theta and phi, its energy and front energy at opt_res, the search's "
             "seconds and evaluations, the readable rule chosen and every visited view (as `optimize --json`); None "
             "for render().")

@@ -1,4 +1,5 @@
 #include "python_view.h"
+#include "python_json.h"
 
 #include "../view_file.h"
 
@@ -12,12 +13,6 @@ namespace py = pybind11;
 
 namespace ivis::python {
 namespace {
-
-/// A JSON value as the Python object json.loads would give.
-py::object fromJson(const nlohmann::json& json)
-{
-    return py::module_::import("json").attr("loads")(json.dump());
-}
 
 const char* sideName(core::LegendSide side)
 {
