@@ -94,7 +94,7 @@ bool finished(const nlohmann::json& results, const std::string& stem, const std:
     if (!results.contains(stem)) return false;
     for (const std::string& m : methods) {
         const nlohmann::json& entry = results.at(stem).contains(m) ? results.at(stem).at(m) : nlohmann::json();
-        for (const char* key : {"visibility", "paper_literal", "front_visibility", "coherence", "seconds"})
+        for (const char* key : {"visibility", "voxel_visibility", "paper_literal", "front_visibility", "coherence", "seconds"})
             if (!entry.is_object() || !entry.contains(key)) return false;
         for (int r : resolutions)
             if (!entry.at("seconds").contains(std::to_string(r))) return false;
@@ -292,6 +292,13 @@ Command addEvaluateCommand(CLI::App& app)
                 const optimize::Coherence coherent =
                     optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
                 entry.update(measuresJson(value, coherent.value(), displayOptions.reveal));
+                if (displayOptions.reveal && !entry.at("reveal").is_null()) {  // the hot spots in the picture
+                    render::RenderOptions picture;
+                    picture.width = picture.height = options->displayResolution;
+                    picture.method = best.method;
+                    const core::ImageLayers layers = render::renderImage(scene, camera, picture).layers;
+                    entry["reveal"]["shapes"] = hotSpotShapesJson(optimize::hotSpotShapes(*display.revealMeasure(), layers));
+                }
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;
                 entry["fov_y_deg"] = camera.fovYDeg;

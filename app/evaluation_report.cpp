@@ -35,6 +35,16 @@ std::string revealText(const nlohmann::json& entry)
     return text + "]";
 }
 
+/// "share/ratio, share/ratio" of each hot spot's shape in the picture, or "-" without them.
+std::string shapesText(const nlohmann::json& entry)
+{
+    if (!entry.contains("reveal") || entry.at("reveal").is_null() || !entry.at("reveal").contains("shapes")) return "-";
+    std::string text;
+    for (const nlohmann::json& shape : entry.at("reveal").at("shapes"))
+        text += (text.empty() ? "" : ", ") + fixed(shape.at("largest_share"), 2) + "/" + fixed(shape.at("outline_ratio"), 2);
+    return text;
+}
+
 /// A Markdown table with a row per mesh and a column per method, each cell @a cell(entry).
 std::string methodTable(const nlohmann::json& results, const ReportLayout& layout,
                         const std::function<std::string(const nlohmann::json&)>& cell)
@@ -94,17 +104,22 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
             for (const auto& m : layout.methods)
                 anyReveal |= results.at(stem).contains(m) && results.at(stem).at(m).contains("reveal");
     std::string markdown =
-        "## Surface visibility in percent at each method's best view (front-only in brackets)\n\n" +
+        "## Surface visibility in percent of the area at each method's best view (front-only in brackets)\n\n" +
         methodTable(results, layout, [](const nlohmann::json& e) {
             return percent(e.at("visibility")) + " (" + percent(e.at("front_visibility")) + ")";
         }) +
+        "\n## Surface visibility in percent of the surface voxels (voxel_visibility), same views\n\n" +
+        methodTable(results, layout, [](const nlohmann::json& e) { return percent(e.at("voxel_visibility")); }) +
         "\n## Paper-literal visibility in percent (visited / marked voxels), same views\n\n" +
         methodTable(results, layout, [](const nlohmann::json& e) { return percent(e.at("paper_literal")); }) +
         "\n## Mapping coherence at " + std::to_string(layout.displayResolution) + "^2 pixels, same views\n\n" +
         methodTable(results, layout, [](const nlohmann::json& e) { return fixed(e.at("coherence"), 3); });
     if (anyReveal)
-        markdown += "\n## Hot-spot reveal in percent of the important surface: total (direct) [each region]\n\n" +
-                    methodTable(results, layout, revealText);
+        markdown += "\n## Hot-spot reveal in percent of the important area: total (direct) [each region]\n\n" +
+                    methodTable(results, layout, revealText) +
+                    "\n## Hot spots as one place in the picture: share in the largest 4-connected region / outline over "
+                    "convex-hull perimeter, per region\n\n" +
+                    methodTable(results, layout, shapesText);
     return markdown + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + secondsTable(results, layout);
 }
 

@@ -39,6 +39,7 @@ std::string readableSettingLine(const optimize::ReadableSetting& setting)
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)
 {
     nlohmann::json json = {{"visibility", value.energy},
+                           {"voxel_visibility", value.voxelVisibility},
                            {"paper_literal", value.paperLiteral},
                            {"front_visibility", value.front},
                            {"coherence", coherence}};
@@ -51,10 +52,18 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
     return json;
 }
 
+nlohmann::json hotSpotShapesJson(const std::vector<optimize::HotSpotShape>& shapes)
+{
+    nlohmann::json json = nlohmann::json::array();
+    for (const optimize::HotSpotShape& shape : shapes)
+        json.push_back({{"pixels", shape.pixels}, {"largest_share", shape.largestShare}, {"outline_ratio", shape.outlineRatio}});
+    return json;
+}
+
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
                                    const render::MethodPtr& method, int resolution,
                                    const core::ScalarRange& importanceRange, double coherence,
-                                   core::Image* unseen)
+                                   const core::ImageLayers& layers, core::Image* unseen)
 {
     optimize::EnergyOptions options;
     options.kind = optimize::EnergyKind::Visibility;
@@ -65,6 +74,8 @@ nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core:
     const optimize::EnergyEvaluator evaluator(scene, options);
     const optimize::EnergyValue value = evaluator.evaluate(camera, method);
     nlohmann::json measures = measuresJson(value, coherence, options.reveal);
+    if (options.reveal && !measures.at("reveal").is_null())
+        measures["reveal"]["shapes"] = hotSpotShapesJson(optimize::hotSpotShapes(*evaluator.revealMeasure(), layers));
     const std::size_t surfacePixels = value.pixelsDirect + value.pixelsIndirect;
     measures["surface_pixels"] = surfacePixels;
     measures["even_bound"] =
@@ -81,13 +92,20 @@ std::string measuresLine(const nlohmann::json& measures)
         return std::string(text);
     };
     std::string line = "surface visibility " + figure(measures.at("visibility")) + " (front " +
-                       figure(measures.at("front_visibility")) + "), paper-literal " +
+                       figure(measures.at("front_visibility")) + "), by voxel count " +
+                       figure(measures.at("voxel_visibility")) + ", paper-literal " +
                        figure(measures.at("paper_literal")) + ", coherence " + figure(measures.at("coherence"));
     if (measures.contains("even_bound"))
         line += " (the same number of surface pixels spread evenly: " + figure(measures.at("even_bound")) + ")";
-    if (measures.contains("reveal"))
-        line += measures.at("reveal").is_null() ? ", reveal: no important surface"
-                                                : ", reveal " + figure(measures.at("reveal").at("total"));
+    if (measures.contains("reveal")) {
+        const nlohmann::json& reveal = measures.at("reveal");
+        line += reveal.is_null() ? ", reveal: no important surface" : ", reveal " + figure(reveal.at("total"));
+        if (!reveal.is_null() && reveal.contains("shapes")) {
+            line += ", hot spots (share in one place / outline ratio)";
+            for (const nlohmann::json& shape : reveal.at("shapes"))
+                line += " " + figure(shape.at("largest_share")) + "/" + figure(shape.at("outline_ratio"));
+        }
+    }
     return line;
 }
 

@@ -4,11 +4,13 @@
 
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/energy.h>
+#include <ivis/optimize/hot_spot_shape.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
@@ -20,21 +22,25 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 ///        1000x1000 picture".
 std::string readableSettingLine(const optimize::ReadableSetting& setting);
 
-/// @brief The measures (docs/measures.md) of one view: visibility, paper_literal, front_visibility,
+/// @brief The measures (docs/measures.md) of one view: visibility, voxel_visibility, paper_literal, front_visibility,
 ///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
 ///        direct, per_region).
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal);
 
+/// @brief The hot spots' shapes (optimize/hot_spot_shape.h): [{pixels, largest_share, outline_ratio}, ...].
+nlohmann::json hotSpotShapesJson(const std::vector<optimize::HotSpotShape>& shapes);
+
 /// @brief measuresJson of a rendered picture (`render --measure`): @a method traced again from
 ///        @a camera with @a resolution rays per side, its landings counted on the 200^3 grid of docs/measures.md;
-///        with a scalar, the reveal of the importance over @a importanceRange; and surface_pixels
-///        (direct and indirect) with even_bound, what as many points spread evenly would measure.
+///        with a scalar, the reveal of the importance over @a importanceRange and each hot spot's
+///        shape in the picture's @a layers (reveal.shapes); and surface_pixels (direct and
+///        indirect) with even_bound, what as many points spread evenly would measure.
 ///        With @a unseen, also the unseen map of the same tracing (optimize/unseen_map.h), its
 ///        panels @a resolution pixels square.
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
                                    const render::MethodPtr& method, int resolution,
                                    const core::ScalarRange& importanceRange, double coherence,
-                                   core::Image* unseen = nullptr);
+                                   const core::ImageLayers& layers, core::Image* unseen = nullptr);
 
 /// @brief One line of pictureMeasuresJson's figures for the log ("surface visibility 0.941 (front 0.285), ...").
 std::string measuresLine(const nlohmann::json& measures);

@@ -212,7 +212,7 @@ void renderOnePicture(RenderFlags& flags, const RenderPlan& plan, core::Progress
     if (flags.measure || !flags.unseenMap.empty()) {
         core::Image unseen;
         stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
-                                                renderOptions.shading.scale.range, coherence,
+                                                renderOptions.shading.scale.range, coherence, result.layers,
                                                 flags.unseenMap.empty() ? nullptr : &unseen);
         core::logInfo(measuresLine(stats["measures"]));
         if (!flags.unseenMap.empty())

@@ -157,7 +157,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                           {"coherence", coherence}});
         if (request.measure) {
             frames.back()["measures"] = pictureMeasuresJson(current.scene(), camera, options.method, options.height,
-                                                            options.shading.scale.range, coherence);
+                                                            options.shading.scale.range, coherence, result.layers);
             core::logInfo(step.label + ": " + measuresLine(frames.back()["measures"]));
         }
         core::logInfo("frame " + std::to_string(k + 1) + "/" + std::to_string(count) + " (" + step.label +

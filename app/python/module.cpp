@@ -172,7 +172,7 @@ outline, shadows, shade_indirect, transparent, spp: render's --log, --invert, --
 read_view(path) gives the arguments of a view file's picture: render(mesh, **read_view(path)). volume_resolution: the volume's N (cached as the command line caches it).
 min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
 full_trace: trace every pixel's ray (no adaptive image sampling). measure: also measure what the
-picture shows, as `render --measure` (measures: visibility, paper_literal, front_visibility,
+picture shows, as `render --measure` (measures: visibility, voxel_visibility, paper_literal, front_visibility,
 surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: None or a callable
 (stage, percent). The GIL is released while it renders; Ctrl-C raises KeyboardInterrupt.)");
 
@@ -229,7 +229,7 @@ the best of the six axis views). The method's parameters as keywords start its a
 rule given, e.g. stable_shift=0.1, is kept; otherwise the rule keeping min_coherence is chosen).
 size, colormap, range, volume_resolution, legend, shadows, transparent: the picture's, as render().
 Returns a Picture whose camera and method are the best view's, whose measures are its surface
-visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
+visibility, voxel_visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
 optimization holds the search's result. The GIL is released; Ctrl-C raises KeyboardInterrupt.)");
 
     m.def("read_view", &python::readView, py::arg("path"),

@@ -161,7 +161,7 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
             if (request.measure) {
                 const nlohmann::json measured = app::pictureMeasuresJson(
                     *scene->render, result.camera, result.method, look.options.height,
-                    look.options.shading.scale.range, made->measures["coherence"].get<double>());
+                    look.options.shading.scale.range, made->measures["coherence"].get<double>(), made->result.layers);
                 for (const auto& [key, value] : measured.items()) made->measures[key] = value;
             }
         },

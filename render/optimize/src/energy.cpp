@@ -109,8 +109,10 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
     }
     const int n = samples.frame().width();
     if (mSurface) {
-        value.energy = mSurface->fractionSeen(total.allKeys);
-        value.front = mSurface->fractionSeen(total.directKeys);
+        const SurfaceShare all = mSurface->shareSeen(total.allKeys);
+        value.energy = all.area;
+        value.voxelVisibility = all.voxels;
+        value.front = mSurface->shareSeen(total.directKeys).area;
         if (mLiteral) value.paperLiteral = mLiteral->fractionVisited(total.allKeys);
         if (mReveal) value.reveal = mReveal->measure(total.directKeys, total.allKeys);
         value.seenVoxels = std::move(total.allKeys);

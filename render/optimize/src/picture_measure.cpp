@@ -26,8 +26,10 @@ EnergyValue measurePicture(const EnergyEvaluator& evaluator, const core::ImageLa
         if (direct) directKeys.push_back(key);
         allKeys.push_back(key);
     }
-    value.energy = surface->fractionSeen(allKeys);
-    value.front = surface->fractionSeen(directKeys);
+    const SurfaceShare all = surface->shareSeen(allKeys);
+    value.energy = all.area;
+    value.voxelVisibility = all.voxels;
+    value.front = surface->shareSeen(directKeys).area;
     if (const VisibilityGrid* literal = evaluator.literalGrid()) value.paperLiteral = literal->fractionVisited(allKeys);
     if (const RevealMeasure* reveal = evaluator.revealMeasure()) value.reveal = reveal->measure(directKeys, allKeys);
     value.seenVoxels = std::move(allKeys);

@@ -51,7 +51,7 @@ double evenSamplingBound(const core::TriangleMesh& mesh, const SurfaceVoxels& vo
             keys.push_back(voxels.keyOf(a + float(u) * (b - a) + float(v) * (c - a)));
         }
     }
-    return voxels.fractionSeen(keys);
+    return voxels.shareSeen(keys).area;
 }
 
 }  // namespace ivis::optimize

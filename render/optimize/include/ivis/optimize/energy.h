@@ -25,7 +25,7 @@ namespace ivis::optimize {
 /// @brief Which importance the energy sums.
 enum class EnergyKind {
     Scalar,     ///< s = scalar normalised to [0,1] by the importance range
-    Visibility  ///< surface visibility: fraction of the surface voxels some ray lands in
+    Visibility  ///< surface visibility: share of the surface area inside the voxels some ray lands in
 };
 
 /// @brief Kind from its name ("scalar", "visibility"); throws InputError otherwise.
@@ -46,8 +46,9 @@ struct EnergyOptions {
 
 /// @brief One measurement of a view.
 struct EnergyValue {
-    double energy = 0.0;      ///< the energy (visibility: surface visibility)
+    double energy = 0.0;      ///< the energy (visibility: surface visibility, area-weighted)
     double front = 0.0;       ///< the same measure counting direct pixels only
+    double voxelVisibility = 0.0;  ///< visibility kind: seen surface voxels / surface voxels
     double paperLiteral = 0.0;  ///< visited / marked voxels (when EnergyOptions::paperLiteral)
     RevealValue reveal;         ///< hot-spot reveal (when EnergyOptions::reveal)
     double meanImportance = 0.0;  ///< mean s over pixels that show the surface (scalar kind)
