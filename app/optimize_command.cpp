@@ -8,6 +8,7 @@
 #include "optimization_options.h"
 #include "series_render.h"
 #include "series_survey.h"
+#include "several_views.h"
 #include "view_options.h"
 
 #include <ivis/vdb/cache_folder.h>
@@ -35,6 +36,7 @@ Command addOptimizeCommand(CLI::App& app)
         ViewOptions view;
         OptimizationOptions optimization;
         int optResolution = 100;
+        int views = 1;
         std::string output = "best.png";
         std::string json;
         std::string plot;
@@ -64,6 +66,13 @@ Command addOptimizeCommand(CLI::App& app)
                      "Picture of the best view at --res; of a series, a frame per step named as render names them "
                      "(out_0000.png, ...; out.mp4 when ffmpeg is on PATH)")
         ->capture_default_str();
+    command
+        ->add_option("--views", options->views,
+                     "Several views: the best one and those of the visited views that show the most surface with it "
+                     "(chosen greedily), their pictures side by side in -o with one colour bar and their union "
+                     "visibility measured; each further view's view file is <output>.view<K>.json (visibility energy, one mesh)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
     command->add_option("--json", options->json, "Result JSON: best view, parameters, energies, visited views");
     command->add_option("--plot", options->plot, "Picture of the visited camera positions (paper Fig. 6)");
     command->add_option("--exr", options->exr, "Multi-layer OpenEXR file of the best view (as render --exr)");
@@ -83,7 +92,7 @@ Command addOptimizeCommand(CLI::App& app)
 
     return {command, [options] {
         options->view.viewIsStart = true;  // --view's angles start the search, whose views are framed
-        const std::vector<OutputFile> outputs = {
+        std::vector<OutputFile> outputs = {
             {options->output, "-o", {".png"}},
             {options->json, "--json", {}},
             {options->plot, "--plot", {".png"}},
@@ -92,6 +101,8 @@ Command addOptimizeCommand(CLI::App& app)
              options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
             {options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
              options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out", {}}};
+        for (int k = 2; k <= options->views; ++k)
+            outputs.push_back({options->output + ".view" + std::to_string(k) + ".json", "a further view's view file (--views)", {}});
         const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
@@ -108,6 +119,10 @@ Command addOptimizeCommand(CLI::App& app)
         if (options->view.givesCamera()) startAngles = start.angles();
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
+        if (isSeries && options->views > 1)
+            throw InputError(options->sources.front() + ": --views: a time series is shown from one view");
+        if (options->views > 1 && optimize::parseEnergyKind(options->optimization.energy) != optimize::EnergyKind::Visibility)
+            throw ValueError("--views chooses views by the surface they show together: it needs --energy visibility");
         // A series is optimised on the mean importance of its steps (optimize/series_importance.h),
         // measured with the importance range [0, 1]; the frames show its steps on their shared range.
         std::optional<core::SurfaceSeries> series;
@@ -161,7 +176,7 @@ Command addOptimizeCommand(CLI::App& app)
         renderOptions.method = best.method;
         const std::string cameraPath = options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut;
         const std::string viewPath = options->viewOut.empty() ? options->output + ".view.json" : options->viewOut;
-        nlohmann::json seriesStats;
+        nlohmann::json seriesStats, severalViews;
         double coherence = 0.0;
         const optimize::EnergyOptions displayOptions =
             options->optimization.measureOptions(renderOptions.height, importanceRange);
@@ -196,9 +211,27 @@ Command addOptimizeCommand(CLI::App& app)
             });
         } else {
             const render::RenderResult picture = render::renderImage(scene, camera, renderOptions, &progress);
-            files.write(options->output, [&](const std::string& temporary) {
-                core::writePng(picture.figure, temporary, renderOptions.shading.transparentBackground);
-            });
+            if (options->views > 1) {
+                const SeveralViews set = renderSeveralViews(
+                    scene, result, evaluator, measure, options->optimization.annealingOptions(startAngles, std::nullopt),
+                    options->view, renderOptions, camera, picture, options->views);
+                files.write(options->output, [&](const std::string& temporary) {
+                    core::writePng(set.figure, temporary, renderOptions.shading.transparentBackground);
+                });
+                for (std::size_t k = 1; k < set.views.size(); ++k) {
+                    render::RenderOptions look = renderOptions;
+                    look.method = set.views[k].method;
+                    files.write(options->output + ".view" + std::to_string(k + 1) + ".json", [&](const std::string& temporary) {
+                        writeViewFile(viewOfPicture(set.views[k].camera, look, options->mesh.load, field.normalization), temporary);
+                    });
+                }
+                severalViews = set.json;
+                core::logInfo(set.line);
+            } else {
+                files.write(options->output, [&](const std::string& temporary) {
+                    core::writePng(picture.figure, temporary, renderOptions.shading.transparentBackground);
+                });
+            }
             if (!options->exr.empty())
                 files.write(options->exr, [&](const std::string& temporary) {
                     core::writeExr(picture.image, picture.layers, temporary, field.normalization);
@@ -250,6 +283,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"output", options->output},
             {"visited", visited}};
         if (isSeries) json["series"] = seriesStats;
+        if (!severalViews.is_null()) json["several_views"] = severalViews;
         if (result.readable) {
             json["readability"] = readableSettingJson(*result.readable);
             core::logInfo(readableSettingLine(*result.readable));

@@ -28,7 +28,39 @@ start=$(date +%s)
 "${evaluate[@]}" "${pictures[@]}" --json "$work/shared-tree.json" scene:vessel-tree
 # The wider set: two generated hot spots on every mesh.
 "${evaluate[@]}" --hotspots 2 --json "$work/wider.json" "$WIDER"/*.ply
+
+# Two views of the default method on every mesh (optimize --views 2), each kept once made.
+mkdir -p "$work/views"
+two_views() {  # STEM MESH [FLAGS...]
+  local stem=$1 mesh=$2
+  shift 2
+  [ -f "$work/views/$stem.json" ] && return 0
+  "$cli" -q optimize "$mesh" "$@" --views 2 -o "$work/views/$stem.png" --json "$work/views/$stem.json.tmp"
+  mv "$work/views/$stem.json.tmp" "$work/views/$stem.json"
+}
+for stem in armadillo_50k cow rocker_arm neptune_30k sphere_ico5 stanford_bunny vmtk_aorta_segment lasc2013_b003_left_atrium; do
+  two_views "$stem" "$SHARED/$stem.ply" --hotspots 2
+done
+two_views vampy_artery_cfd_pressure "$SHARED/vampy_artery_cfd_pressure.ply" --scalar pressure_t200
+two_views vessel-tree scene:vessel-tree
+for mesh in "$WIDER"/*.ply; do two_views "$(basename "$mesh" .ply)" "$mesh" --hotspots 2; done
 minutes=$(( ($(date +%s) - start + 59) / 60 ))
+
+# A row per mesh of the two views' figures.
+views_table() {
+  echo "| Surface | best view: visibility / coherence | second view: visibility / coherence | together: visibility (by voxel count) | seconds |"
+  echo "|---|---|---|---|---|"
+  /usr/bin/python3 - "$work/views" <<'PY'
+import json, pathlib, sys
+for path in sorted(pathlib.Path(sys.argv[1]).glob("*.json")):
+    report = json.loads(path.read_text())
+    several = report["several_views"]
+    views = [f'{100 * v["visibility"]:.1f} / {v["coherence"]:.3f}' for v in several["views"]] + ["-"]
+    together = several["union"]
+    print(f'| {path.stem} | {views[0]} | {views[1]} | {100 * together["visibility"]:.1f} '
+          f'({100 * together["voxel_visibility"]:.1f}) | {report["seconds"]:.1f} |')
+PY
+}
 
 "$cli" -q merge "$work"/shared-{hotspots,artery,tree}.json --markdown "$work/shared.md" >/dev/null
 "$cli" -q merge "$work/wider.json" --markdown "$work/wider.md" >/dev/null
@@ -88,6 +120,10 @@ HEADER
   cat "$work/shared.md"
   printf '\n# The wider test set (docs/test-meshes.md)\n\n'
   cat "$work/wider.md"
+  printf '\n# Two views of the default method (optimize --views 2)\n\n'
+  printf 'The best view and the visited view that adds the most surface to it (docs/optimisation.md,\n'
+  printf '"Several views"), each at its readable rule; "together" is the area their pictures show.\n\n'
+  views_table
   printf '\n# Pictures of the shared meshes at each method'"'"'s optimum (240 x 240)\n\n'
   picture_table
 } >"$out.tmp"

@@ -555,6 +555,47 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     EXPECT_EQ(core::readExrChannel(output("best.exr"), "R"), core::readExrChannel(output("again.exr"), "R"));
 }
 
+TEST_F(Cli, OptimizeViewsShowsSeveralPicturesSideBySideAndTheirUnion)
+{
+    const std::string common = "optimize scene:sphere --volume-res 64 --opt-res 24 --steps 3 --finalists 0 "
+                               "--min-coherence 0 --res 64x64 --no-legend --cache-dir " + quoted(output("")) + " -o " +
+                               quoted(output("best.png")) + " --json " + quoted(output("best.json"));
+    const CliResult result = runCli(common + " --views 3");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(output("best.json")));
+    const nlohmann::json& views = report.at("several_views").at("views");
+    ASSERT_GE(views.size(), 2u);
+    ASSERT_LE(views.size(), 3u);
+    EXPECT_EQ(views.at(0).at("theta"), report.at("theta")) << "the best view first";
+    EXPECT_EQ(views.at(0).at("visibility"), report.at("measures").at("visibility"));
+    double largest = 0.0;
+    for (const nlohmann::json& view : views) largest = std::max(largest, view.at("visibility").get<double>());
+    const double together = report.at("several_views").at("union").at("visibility").get<double>();
+    EXPECT_GT(together, largest) << "each further view adds surface";
+    EXPECT_LE(together, 1.0);
+    // The pictures side by side (a gap of 4 pixels between them), and a view file for each further view.
+    const core::Image figure = core::readPng(output("best.png"));
+    EXPECT_EQ(figure.width(), int(views.size()) * 64 + 4 * int(views.size() - 1));
+    EXPECT_EQ(figure.height(), 64);
+    for (std::size_t k = 2; k <= views.size(); ++k) {
+        const std::string file = output("best.png.view" + std::to_string(k) + ".json");
+        ASSERT_TRUE(fs::exists(file)) << file;
+        const CliResult again = runCli("render scene:sphere --volume-res 64 --res 64x64 --no-legend --cache-dir " +
+                                       quoted(output("")) + " --view " + quoted(file) + " -o " + quoted(output("again.png")));
+        ASSERT_EQ(again.status, 0) << again.err;
+        // render draws the view as the figure's panel shows it.
+        const core::Image panel = core::readPng(output("again.png"));
+        int differing = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x)
+                differing += glm::length(panel.at(x, y) - figure.at(int(k - 1) * 68 + x, y)) > 1e-3f ? 1 : 0;
+        EXPECT_EQ(differing, 0) << file;
+    }
+    fs::remove_all(output(""));
+    fs::create_directories(output(""));
+    expectRejected(common + " --views 2 --energy scalar", {"--views", "--energy visibility"});
+}
+
 TEST_F(Cli, OptimizeLoosensTheWrapsRuleAsFarAsThePictureStaysReadable)
 {
     // Asking for 0.55 lets the rule loosen beyond the default (0.1), 0 leaves it as given. The rule

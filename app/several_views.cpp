@@ -1,0 +1,112 @@
+#include "several_views.h"
+
+#include <ivis/core/color_bar.h>
+#include <ivis/core/errors.h>
+#include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture_measure.h>
+#include <ivis/optimize/readability.h>
+#include <ivis/optimize/view_set.h>
+#include <ivis/render/method_json.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ivis::app {
+namespace {
+
+/// The pictures side by side, @a gap pixels of @a background between them, top-aligned.
+core::Image sideBySide(const std::vector<const core::Image*>& pictures, int gap, const glm::vec4& background)
+{
+    int width = gap * int(pictures.size() - 1), height = 0;
+    for (const core::Image* picture : pictures) {
+        width += picture->width();
+        height = std::max(height, picture->height());
+    }
+    core::Image figure(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) figure.at(x, y) = background;
+    int left = 0;
+    for (const core::Image* picture : pictures) {
+        for (int y = 0; y < picture->height(); ++y)
+            for (int x = 0; x < picture->width(); ++x) figure.at(left + x, y) = picture->at(x, y);
+        left += picture->width() + gap;
+    }
+    return figure;
+}
+
+/// "0.959" for a share.
+std::string figure3(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", value);
+    return text;
+}
+
+}  // namespace
+
+SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize::AnnealingResult& result,
+                                const optimize::EnergyEvaluator& evaluator, const optimize::EnergyEvaluator& measure,
+                                const optimize::AnnealingOptions& annealing, const ViewOptions& view,
+                                render::RenderOptions options, const core::Camera& bestCamera,
+                                const render::RenderResult& bestPicture, int count)
+{
+    if (!evaluator.surfaceVoxels())
+        throw ValueError("--views chooses views by the surface they show together: it needs --energy visibility");
+    SeveralViews set;
+    const std::vector<std::size_t> chosen =
+        optimize::chooseViewSet(result.visited, result.best, *evaluator.surfaceVoxels(), count);
+    for (std::size_t index : chosen) {
+        const optimize::VisitedView& visited = result.visited[index];
+        ChosenView& current = set.views.emplace_back();
+        current.visited = &visited;
+        if (index == result.best) {  // as the annealing made it readable and the command drew it
+            current.camera = bestCamera;
+            current.method = options.method;
+            current.picture = bestPicture;
+            continue;
+        }
+        current.method = visited.method;
+        if (annealing.readableResolution > 0 && !current.method->info().readabilityParameter.empty())
+            current.method = optimize::loosestReadable(scene, visited.camera, current.method,
+                                                       {annealing.readableResolution, annealing.readableResolution},
+                                                       annealing.minCoherence)
+                                 .method;
+        current.camera = view.pictureCamera(scene, visited.camera, *current.method, options.width, options.height);
+        render::RenderOptions look = options;
+        look.method = current.method;
+        current.picture = render::renderImage(scene, current.camera, look);
+    }
+
+    std::vector<std::uint64_t> together;
+    std::vector<const core::Image*> pictures;
+    set.json["views"] = nlohmann::json::array();
+    std::string each;
+    for (const ChosenView& current : set.views) {
+        optimize::EnergyValue value = optimize::measurePicture(measure, current.picture.layers);
+        const double coherence = optimize::mappingCoherence(current.picture.layers).value();
+        const glm::dvec2 angles = current.camera.angles();
+        set.json["views"].push_back({{"theta", angles.x},
+                                     {"phi", angles.y},
+                                     {"fov_y_deg", current.camera.fovYDeg},
+                                     {"params", render::methodToJson(*current.method)},
+                                     {"visibility", value.energy},
+                                     {"coherence", coherence}});
+        each += (each.empty() ? "" : ", ") + figure3(value.energy) + " at coherence " + figure3(coherence);
+        together.insert(together.end(), value.seenVoxels.begin(), value.seenVoxels.end());
+        pictures.push_back(&current.picture.image);
+    }
+    const optimize::SurfaceShare share = measure.surfaceVoxels()->shareSeen(together);
+    set.json["union"] = {{"visibility", share.area}, {"voxel_visibility", share.voxels}};
+    set.line = std::to_string(set.views.size()) + " views: together surface visibility " + figure3(share.area) +
+               " (by voxel count " + figure3(share.voxels) + "); each " + each;
+
+    const render::ShadingOptions& shading = options.shading;
+    const glm::vec4 background = shading.transparentBackground ? glm::vec4(0.0f) : glm::vec4(shading.background, 1.0f);
+    set.figure = sideBySide(pictures, std::max(4, options.width / 50), background);
+    if (options.legend && scene.field().hasScalar())
+        set.figure = core::withColorBar(set.figure, {shading.colormap, shading.scale, options.scalarName, options.units},
+                                        options.legendSide, background, options.legendMinimumMargin);
+    return set;
+}
+
+}  // namespace ivis::app
