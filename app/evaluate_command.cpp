@@ -8,6 +8,7 @@
 #include "method_options.h"
 #include "evaluation_report.h"
 #include "optimization_options.h"
+#include "several_views.h"
 
 #include <ivis/vdb/cache_folder.h>
 #include <ivis/core/content_hash.h>
@@ -113,6 +114,7 @@ Command addEvaluateCommand(CLI::App& app)
         std::vector<int> optResolutions{100};
         int displayResolution = 1000;
         int pictureResolution = 0;
+        int views = 1;
         std::optional<double> fovYDeg;  ///< none: each view framed for its method
         OptimizationOptions optimization;
         std::string json, markdown, pictures, cacheDir;
@@ -134,6 +136,12 @@ Command addEvaluateCommand(CLI::App& app)
         ->capture_default_str();
     command->add_option("--display-res", options->displayResolution, "Resolution of pictures and of the reported visibility")
         ->check(CLI::Range(16, 8192))
+        ->capture_default_str();
+    command
+        ->add_option("--views", options->views,
+                     "Also the surface the best view and the visited views adding the most to it show together "
+                     "(as optimize --views; visibility energy)")
+        ->check(CLI::Range(1, 16))
         ->capture_default_str();
     command->add_option("--fov", options->fovYDeg,
                         "Vertical field of view (degrees); default: each view fitted to its method's picture");
@@ -186,11 +194,14 @@ Command addEvaluateCommand(CLI::App& app)
             if (!results.is_object()) throw InputError(options->json + ": not the JSON of an evaluation (--resume)");
         }
         // What the figures depend on, kept in every entry: merge and --resume join only entries of one evaluation.
+        if (options->views > 1 && optimize::parseEnergyKind(options->optimization.energy) != optimize::EnergyKind::Visibility)
+            throw ValueError("--views chooses views by the surface they show together: it needs --energy visibility");
         nlohmann::json settings = options->mesh.settingsJson();
         settings.update(options->optimization.settingsJson());
         settings.update({{"--opt-res", options->optResolutions},
                          {"--display-res", options->displayResolution},
                          {"--fov", options->fovYDeg ? nlohmann::json(*options->fovYDeg) : nlohmann::json()}});
+        if (options->views > 1) settings["--views"] = options->views;
         ReportLayout layout{{}, options->methods, options->optResolutions, options->displayResolution};
         for (const std::string& mesh : options->meshes) {
             const std::string stem = core::sourceStem(mesh);
@@ -257,6 +268,9 @@ Command addEvaluateCommand(CLI::App& app)
                 nlohmann::json entry = {{"seconds", nlohmann::json::object()},
                                         {"settings", settingsUsedBy(settingsOf.at(stem), start->info())}};
                 optimize::VisitedView best;
+                render::RenderOptions picture;  // the display picture of a view (hot spots, several views)
+                picture.width = picture.height = options->displayResolution;
+                std::optional<render::RenderResult> bestPicture;
                 for (std::size_t k = 0; k < options->optResolutions.size(); ++k) {
                     const int resolution = options->optResolutions[k];
                     const optimize::EnergyEvaluator evaluator(scene, options->optimization.energyOptions(resolution, range));
@@ -281,6 +295,14 @@ Command addEvaluateCommand(CLI::App& app)
                         entry["by_resolution"][std::to_string(resolution)]["readability"] = readableSettingJson(*run.readable);
                     if (k == 0) {
                         best = optimum;
+                        if (options->views > 1) {  // chosen among this run's views, on its evaluator's voxels
+                            picture.method = best.method;
+                            bestPicture = render::renderImage(scene, best.camera, picture);
+                            entry["several_views"] =
+                                renderSeveralViews(scene, run, evaluator, display, annealing, !options->fovYDeg, picture,
+                                                   best.camera, *bestPicture, options->views)
+                                    .json;
+                        }
                     } else {
                         entry["optimum_shift_deg"][std::to_string(resolution)] =
                             angleBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
@@ -293,11 +315,10 @@ Command addEvaluateCommand(CLI::App& app)
                     optimize::measureCoherence(scene, camera, best.method, options->displayResolution);
                 entry.update(measuresJson(value, coherent.value(), displayOptions.reveal));
                 if (displayOptions.reveal && !entry.at("reveal").is_null()) {  // the hot spots in the picture
-                    render::RenderOptions picture;
-                    picture.width = picture.height = options->displayResolution;
                     picture.method = best.method;
-                    const core::ImageLayers layers = render::renderImage(scene, camera, picture).layers;
-                    entry["reveal"]["shapes"] = hotSpotShapesJson(optimize::hotSpotShapes(*display.revealMeasure(), layers));
+                    if (!bestPicture) bestPicture = render::renderImage(scene, camera, picture);
+                    entry["reveal"]["shapes"] =
+                        hotSpotShapesJson(optimize::hotSpotShapes(*display.revealMeasure(), bestPicture->layers));
                 }
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;

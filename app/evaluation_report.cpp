@@ -45,6 +45,17 @@ std::string shapesText(const nlohmann::json& entry)
     return text;
 }
 
+/// "99.9 (98.8, 98.0)": the surface several views show together and each alone, in percent, or "-".
+std::string severalViewsText(const nlohmann::json& entry)
+{
+    if (!entry.contains("several_views")) return "-";
+    const nlohmann::json& several = entry.at("several_views");
+    std::string each;
+    for (const nlohmann::json& view : several.at("views"))
+        each += (each.empty() ? "" : ", ") + percent(view.at("visibility")) + " / " + fixed(view.at("coherence"), 3);
+    return percent(several.at("union").at("visibility")) + " (" + each + ")";
+}
+
 /// A Markdown table with a row per mesh and a column per method, each cell @a cell(entry).
 std::string methodTable(const nlohmann::json& results, const ReportLayout& layout,
                         const std::function<std::string(const nlohmann::json&)>& cell)
@@ -120,6 +131,15 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
                     "\n## Hot spots as one place in the picture: share in the largest 4-connected region / outline over "
                     "convex-hull perimeter, per region\n\n" +
                     methodTable(results, layout, shapesText);
+    bool anySeveral = false;
+    for (const std::string& stem : layout.stems)
+        if (results.contains(stem))
+            for (const auto& m : layout.methods)
+                anySeveral |= results.at(stem).contains(m) && results.at(stem).at(m).contains("several_views");
+    if (anySeveral)
+        markdown += "\n## Several views: surface visibility in percent of what they show together (each view: "
+                    "visibility / coherence)\n\n" +
+                    methodTable(results, layout, severalViewsText);
     return markdown + "\n## Viewpoint optimisation, seconds per optimisation resolution\n\n" + secondsTable(results, layout);
 }
 

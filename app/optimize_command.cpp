@@ -214,7 +214,7 @@ Command addOptimizeCommand(CLI::App& app)
             if (options->views > 1) {
                 const SeveralViews set = renderSeveralViews(
                     scene, result, evaluator, measure, options->optimization.annealingOptions(startAngles, std::nullopt),
-                    options->view, renderOptions, camera, picture, options->views);
+                    options->view.framed(), renderOptions, camera, picture, options->views);
                 files.write(options->output, [&](const std::string& temporary) {
                     core::writePng(set.figure, temporary, renderOptions.shading.transparentBackground);
                 });

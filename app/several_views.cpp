@@ -3,6 +3,7 @@
 #include <ivis/core/color_bar.h>
 #include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
+#include <ivis/optimize/picture.h>
 #include <ivis/optimize/picture_measure.h>
 #include <ivis/optimize/readability.h>
 #include <ivis/optimize/view_set.h>
@@ -46,8 +47,8 @@ std::string figure3(double value)
 
 SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize::AnnealingResult& result,
                                 const optimize::EnergyEvaluator& evaluator, const optimize::EnergyEvaluator& measure,
-                                const optimize::AnnealingOptions& annealing, const ViewOptions& view,
-                                render::RenderOptions options, const core::Camera& bestCamera,
+                                const optimize::AnnealingOptions& annealing, bool framed,
+                                const render::RenderOptions& options, const core::Camera& bestCamera,
                                 const render::RenderResult& bestPicture, int count)
 {
     if (!evaluator.surfaceVoxels())
@@ -71,7 +72,8 @@ SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize
                                                        {annealing.readableResolution, annealing.readableResolution},
                                                        annealing.minCoherence)
                                  .method;
-        current.camera = view.pictureCamera(scene, visited.camera, *current.method, options.width, options.height);
+        current.camera = framed ? optimize::framedCamera(scene, visited.camera, *current.method, options.width, options.height)
+                                : visited.camera;
         render::RenderOptions look = options;
         look.method = current.method;
         current.picture = render::renderImage(scene, current.camera, look);

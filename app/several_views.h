@@ -4,8 +4,6 @@
 ///        side by side with one colour bar, and measured together (docs/optimisation.md, "Several views").
 #pragma once
 
-#include "view_options.h"
-
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/renderer.h>
@@ -36,12 +34,13 @@ struct SeveralViews {
 /// @brief Chooses up to @a count views of @a result on @a evaluator's surface voxels (the
 ///        visibility energy), the best one first with its @a bestPicture; gives each further view
 ///        its loosest readable setting (@a annealing's readableResolution, minCoherence), frames it
-///        for @a options' size and renders it; measures each picture and their union on @a measure.
+///        for @a options' size when @a framed (else keeps its field of view) and renders it;
+///        measures each picture and their union on @a measure.
 /// @throw ValueError unless @a evaluator measures the visibility energy
 SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize::AnnealingResult& result,
                                 const optimize::EnergyEvaluator& evaluator, const optimize::EnergyEvaluator& measure,
-                                const optimize::AnnealingOptions& annealing, const ViewOptions& view,
-                                render::RenderOptions options, const core::Camera& bestCamera,
+                                const optimize::AnnealingOptions& annealing, bool framed,
+                                const render::RenderOptions& options, const core::Camera& bestCamera,
                                 const render::RenderResult& bestPicture, int count);
 
 }  // namespace ivis::app

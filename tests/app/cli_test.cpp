@@ -932,6 +932,36 @@ TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)
     EXPECT_NE(result.out.find("| sphere |"), std::string::npos) << result.out;
     EXPECT_NE(result.out.find("Hot-spot reveal"), std::string::npos) << result.out;
     EXPECT_TRUE(fs::exists(output("e.md")));
+    // Each hot spot's shape in the method's picture.
+    for (const char* method : {"front", "inversevis"}) {
+        const nlohmann::json& shapes = report.at(method).at("reveal").at("shapes");
+        ASSERT_EQ(shapes.size(), 2u) << method;
+        for (const nlohmann::json& shape : shapes) {
+            EXPECT_GE(shape.at("largest_share").get<double>(), 0.0);
+            EXPECT_LE(shape.at("largest_share").get<double>(), 1.0);
+        }
+    }
+    EXPECT_GT(report.at("front").at("reveal").at("shapes").at(0).at("pixels").get<int>() +
+                  report.at("front").at("reveal").at("shapes").at(1).at("pixels").get<int>(),
+              0) << "the front view shows one of the two spots";
+}
+
+TEST_F(Cli, EvaluateViewsReportsWhatSeveralViewsShowTogether)
+{
+    const std::string common = "evaluate scene:sphere --volume-res 64 --methods inversevis-wrap --opt-res 16 --steps 2 "
+                               "--finalists 0 --min-coherence 0 --display-res 64 --cache-dir " + quoted(output("")) +
+                               " --json " + quoted(output("e.json"));
+    const CliResult result = runCli(common + " --views 2");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json entry = nlohmann::json::parse(std::ifstream(output("e.json"))).at("sphere").at("inversevis-wrap");
+    const nlohmann::json& several = entry.at("several_views");
+    ASSERT_EQ(several.at("views").size(), 2u);
+    EXPECT_EQ(several.at("views").at(0).at("theta"), entry.at("theta"));
+    EXPECT_GT(several.at("union").at("visibility").get<double>(), several.at("views").at(0).at("visibility").get<double>());
+    EXPECT_NE(result.out.find("Several views"), std::string::npos) << result.out;
+    fs::remove_all(output(""));
+    fs::create_directories(output(""));
+    expectRejected(common + " --views 2 --energy scalar", {"--views", "--energy visibility"});
 }
 
 TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
