@@ -109,6 +109,13 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
              "Writes the picture's view file (camera, method and parameters, scalar, colours, look), as `render "
              "--view-out` writes one: `inversevis render MESH --view FILE` and the viewer's --view show the picture, "
              "read_view(FILE) gives it back to render().")
+        .def_property_readonly("views", [](const python::Picture& p) { return p.views; },
+                               "Of optimize(views=N > 1): each view's Picture, the best first (its measures: "
+                               "visibility, coherence; its camera and method, save_view() as for any picture); "
+                               "an empty list otherwise.")
+        .def("save_views", &python::Picture::saveViews, py::arg("path"),
+             "Of optimize(views=N > 1): writes the views side by side with one colour bar as PNG, as `inversevis "
+             "optimize --views N -o` writes it.")
         .def("_repr_png_", &python::Picture::png)
         .def("__repr__", [](const python::Picture& p) {
             return "<inversevis.Picture " + std::to_string(p.result.image.width()) + "x" +
@@ -180,7 +187,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
         "optimize",
         [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::string& energy,
            const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed, int finalists,
-           const std::optional<std::pair<double, double>>& start, const std::pair<int, int>& size,
+           const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
            double minCoherence, bool legend, bool shadows, bool transparent, const py::object& progress,
            const py::kwargs& parameters) {
@@ -208,12 +215,14 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
             }
             request.finalists = finalists;
             request.start = start;
+            request.views = views;
             return python::optimizeMesh(mesh, request, progress);
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
         py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,
-        py::arg("finalists") = 5, py::arg("start") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
+        py::arg("finalists") = 5, py::arg("start") = py::none(), py::arg("views") = 1,
+        py::arg("size") = std::pair<int, int>(1000, 1000),
         py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
         py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("legend") = true, py::arg("shadows") = true,
         py::arg("transparent") = false, py::arg("progress") = py::none(),
@@ -225,7 +234,9 @@ gamma weighting the direct part, 1 by default). opt_res: rays per side while sea
 1000); ascent_res: rays per side of each view's parameter ascent (0: opt_res); steps: annealing
 proposals after the start; seed: the search's seed (the same seed, the same result); finalists:
 best views measured again at 200 rays per side (0: none); start: (theta, phi) to start from (None:
-the best of the six axis views). The method's parameters as keywords start its ascent (a readable
+the best of the six axis views); views: with N > 1, also the visited views that show the most surface
+with the best one (as `optimize --views N`: Picture.views, save_views(), optimization['several_views']
+with their union's visibility; the visibility energy). The method's parameters as keywords start its ascent (a readable
 rule given, e.g. stable_shift=0.1, is kept; otherwise the rule keeping min_coherence is chosen).
 size, colormap, range, volume_resolution, legend, shadows, transparent: the picture's, as render().
 Returns a Picture whose camera and method are the best view's, whose measures are its surface

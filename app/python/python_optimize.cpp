@@ -4,6 +4,7 @@
 
 #include "../json_output.h"
 #include "../optimization_options.h"
+#include "../several_views.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
@@ -92,6 +93,10 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                              " (see scalar=)");
     }
 
+    if (request.views < 1 || request.views > 16)
+        throw ValueError("views " + std::to_string(request.views) + " is out of range (1 to 16)");
+    if (request.views > 1 && settings.energy != "visibility")
+        throw ValueError("views: several views are chosen by the surface they show together: they need energy='visibility'");
     auto made = std::make_shared<Picture>();
     runReleased(
         [&](core::Interrupter& interrupter) {
@@ -116,8 +121,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             measure.kind = optimize::EnergyKind::Visibility;
             measure.paperLiteral = true;
             measure.reveal = scene->field.hasScalar();
-            const optimize::EnergyValue measured =
-                optimize::measurePicture(optimize::EnergyEvaluator(renderScene, measure), made->result.layers);
+            const optimize::EnergyEvaluator measureEvaluator(renderScene, measure);
+            const optimize::EnergyValue measured = optimize::measurePicture(measureEvaluator, made->result.layers);
             const double coherence = optimize::mappingCoherence(made->result.layers).value();
             made->camera = camera;
             made->look = look.options;
@@ -142,6 +147,27 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                                   {"front_energy_value", best.value.front},
                                   {"visited", visited}};
             if (result.readable) made->optimization["readability"] = optimize::readableSettingJson(*result.readable);
+            if (request.views > 1) {  // as `optimize --views`: the further views, their pictures and union
+                const app::SeveralViews set =
+                    app::renderSeveralViews(renderScene, result, evaluator, measureEvaluator,
+                                            settings.annealingOptions(startAngles, std::nullopt), true, look.options,
+                                            camera, made->result, request.views);
+                for (std::size_t k = 0; k < set.views.size(); ++k) {
+                    auto view = std::make_shared<Picture>();
+                    view->result = set.views[k].picture;
+                    view->camera = set.views[k].camera;
+                    view->look = look.options;
+                    view->look.method = set.views[k].method;
+                    view->scalar = made->scalar;
+                    view->meshUnits = made->meshUnits;
+                    view->method = render::methodToJson(*set.views[k].method);
+                    view->measures = set.json.at("views").at(k);
+                    view->transparent = request.look.transparent;
+                    made->views.push_back(view);
+                }
+                made->viewsFigure = set.figure;
+                made->optimization["several_views"] = set.json;
+            }
         },
         progress);
     made->transparent = request.look.transparent;

@@ -28,6 +28,7 @@ struct OptimizeRequest {
     std::uint64_t seed = 1;
     int finalists = 5;                         ///< best views measured again at 200 rays per side; 0, 1: none
     std::optional<std::pair<double, double>> start;  ///< (theta, phi) of the start; none: the best axis view
+    int views = 1;                             ///< several views (Picture::views) when above 1
 };
 
 /// @brief The best view of @a mesh that @a request asks for, rendered; its measures and the

@@ -59,6 +59,13 @@ void Picture::saveView(const std::string& path) const
     app::writeViewFile(app::viewOfPicture(camera, look, load, meshUnits), path);
 }
 
+void Picture::saveViews(const std::string& path) const
+{
+    if (views.empty()) throw ValueError("save_views: this picture has no several views (optimize(views=N), N > 1)");
+    if (core::lowerCaseExtension(path) != ".png") throw ValueError(path + ": the several views' figure is saved as .png");
+    core::writePng(viewsFigure, path, transparent);
+}
+
 py::bytes Picture::png() const
 {
     const std::vector<std::uint8_t> bytes = core::encodePng(result.figure, transparent);

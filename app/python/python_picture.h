@@ -12,7 +12,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace ivis::python {
 
@@ -27,6 +29,8 @@ struct Picture {
     nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
     render::RenderOptions look;   ///< what it was rendered with (size, method as drawn, colours, legend)
     std::string scalar;           ///< the scalar asked for ("" : the file's default array)
+    std::vector<std::shared_ptr<Picture>> views;  ///< of optimize(views=N > 1): each view's picture, the best first
+    core::Image viewsFigure;      ///< of optimize(views=N > 1): the views side by side with one colour bar
 
     /// @brief The PNG's pixels: height x width x 4 uint8, sRGB-encoded (alpha 255 unless transparent).
     pybind11::array rgba() const;
@@ -43,6 +47,9 @@ struct Picture {
     void saveView(const std::string& path) const;
     /// @brief The PNG file's bytes, for a notebook.
     pybind11::bytes png() const;
+    /// @brief Writes the several views' figure (optimize(views=N)) as PNG, as `optimize --views -o` writes it.
+    /// @throw ValueError for a picture without several views or another extension; InputError when it cannot be written
+    void saveViews(const std::string& path) const;
 };
 
 }  // namespace ivis::python

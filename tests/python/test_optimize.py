@@ -33,6 +33,34 @@ def test_optimize_finds_and_draws_what_the_cli_does(tmp_path):
     assert (again.rgba == picture.rgba).all()
 
 
+def test_several_views_are_those_the_cli_chooses_and_draws(tmp_path):
+    cli_png, cli_json = tmp_path / "cli.png", tmp_path / "cli.json"
+    done = run_cli("optimize", "scene:vessel-tree", "--volume-res", "64", "--opt-res", "24", "--steps", "2",
+                   "--finalists", "0", "--res", "200x160", "--views", "2", "-o", str(cli_png), "--json", str(cli_json))
+    assert done.returncode == 0, done.stderr
+    picture = inversevis.optimize(inversevis.Mesh.read("scene:vessel-tree"), views=2, **SMALL)
+    picture.save_views(str(tmp_path / "py.png"))
+    assert (tmp_path / "py.png").read_bytes() == cli_png.read_bytes()
+    cli = json.loads(cli_json.read_text())["several_views"]
+    assert picture.optimization["several_views"] == cli
+    assert len(picture.views) == 2
+    assert (picture.views[0].rgba == picture.rgba).all(), "the best view first"
+    for view, measured in zip(picture.views, cli["views"]):
+        assert view.measures == measured
+        assert view.method == measured["params"]
+    assert cli["union"]["visibility"] > max(v["visibility"] for v in cli["views"])
+    # The second view's file draws it again with the command line.
+    picture.views[1].save_view(str(tmp_path / "second.json"))
+    again = run_cli("render", "scene:vessel-tree", "--volume-res", "64", "--view", str(tmp_path / "second.json"),
+                    "-o", str(tmp_path / "again.png"))
+    assert again.returncode == 0, again.stderr
+    picture.views[1].save(str(tmp_path / "second.png"))
+    assert (tmp_path / "again.png").read_bytes() == (tmp_path / "second.png").read_bytes()
+    with pytest.raises(ValueError, match="no several views"):
+        inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), "front", size=(40, 40),
+                          volume_resolution=64).save_views(str(tmp_path / "none.png"))
+
+
 def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     mesh = inversevis.Mesh.read("scene:vessel-tree")
     first = inversevis.optimize(mesh, "inversevis", seed=7, **SMALL)
@@ -61,6 +89,8 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     (dict(start=(float("inf"), 0.0)), "start .inf, 0.*: theta and phi must be finite"),
     (dict(size=(4, 100)), "needs a wider picture"),
     (dict(alpha=0.5), "alpha"),
+    (dict(views=0), "views 0 is out of range"),
+    (dict(views=2, energy="scalar"), "need energy='visibility'"),
 ])
 def test_bad_settings_are_refused_with_a_clear_message(arguments, message):
     mesh = inversevis.Mesh.read("scene:vessel-tree")
