@@ -6,6 +6,7 @@
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/readability.h>
+#include <ivis/optimize/view_set.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
@@ -37,6 +38,35 @@ public:
 private:
     const std::atomic<bool>& mCancel;
 };
+
+/// The view set of @a annealing (the best view first) with each further view's readable rule,
+/// appended to @a result, and a line of what the views show together on @a evaluator's voxels.
+std::string addViewSet(const optimize::AnnealingResult& annealing, const optimize::EnergyEvaluator& evaluator,
+                       const OptimiserSettings& settings, OptimiserResult& result)
+{
+    const std::vector<std::size_t> chosen =
+        optimize::chooseViewSet(annealing.visited, annealing.best, *evaluator.surfaceVoxels(), settings.views);
+    std::vector<std::uint64_t> together;
+    std::string each;
+    for (std::size_t index : chosen) {
+        const optimize::VisitedView& view = annealing.visited[index];
+        render::MethodPtr method = view.method;
+        const double minCoherence = settings.optimization.minCoherence;
+        if (index != annealing.best && minCoherence > 0.0 && !method->info().readabilityParameter.empty())
+            method = optimize::loosestReadable(evaluator.scene(), view.camera, method,
+                                               glm::ivec2(optimize::kCoherenceResolution), minCoherence)
+                         .method;
+        result.views.push_back({view.camera, method});
+        together.insert(together.end(), view.value.seenVoxels.begin(), view.value.seenVoxels.end());
+        char text[32];
+        std::snprintf(text, sizeof text, "%s%.4f", each.empty() ? "" : ", ", view.value.energy);
+        each += text;
+    }
+    char text[160];
+    std::snprintf(text, sizeof text, "; %zu views together show %.4f (each %s; the panel's view buttons switch)",
+                  chosen.size(), evaluator.surfaceVoxels()->shareSeen(together).area, each.c_str());
+    return text;
+}
 
 }  // namespace
 
@@ -105,6 +135,9 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
                       settings.optimization.energy.c_str(), result.energyBefore, result.energyAfter,
                       annealing.visited.size(), result.evaluations, result.seconds);
         result.summary = text + readable;
+        if (settings.views > 1)
+            result.summary += evaluator.surfaceVoxels() ? addViewSet(annealing, evaluator, settings, result)
+                                                        : "; several views need the visibility energy";
         return result;
     };
 }

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace ivis::app {
 
@@ -32,6 +33,7 @@ struct OptimiserResult {
     int evaluations = 0;         ///< energies computed
     double seconds = 0.0;
     std::string summary;         ///< one line for the panel and stdout
+    std::vector<ViewState> views;  ///< "optimise view" with OptimiserSettings::views > 1: the view set, the best first
 };
 
 /// @brief A CPU optimiser, called on a background thread with the scene and the current view.
@@ -47,6 +49,7 @@ struct OptimiserSettings {
     int resolution = 100;              ///< rays per image side while optimising (paper: 100 or 1000)
     core::ScalarRange importanceRange; ///< scalar values mapped to importance 0 and 1 (scalar energy)
     bool framed = false;               ///< each view framed for its method (render::frameView), as the viewer shows it
+    int views = 1;                     ///< "optimise view": also the visited views showing the most surface with the best (visibility energy)
 };
 
 /// @brief The parameter optimiser ("optimise alpha", ...): optimize::optimizeParameters (gradient ascent with golden-section line
@@ -55,7 +58,10 @@ struct OptimiserSettings {
 ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 
 /// @brief "optimise view": optimize::annealViewpoint from the current camera's angles on the radius
-///        2.5 sphere, the parameters optimised at every proposal; returns the best view.
+///        2.5 sphere, the parameters optimised at every proposal; returns the best view and, with
+///        OptimiserSettings::views > 1 and the visibility energy, the view set of `optimize --views`
+///        (optimize::chooseViewSet; each further view with its readable rule) and their union's
+///        visibility at the optimisation resolution in the summary.
 ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings);
 
 /// @brief "readable rule": optimize::loosestReadable of the current method with its readability

@@ -56,6 +56,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     if (mSeries) mShading.scale = mDataScale;  // one scale for every step
     mOptimiser.optimization = mOptions.optimization;
     mOptimiser.resolution = mOptions.optResolution;
+    mOptimiser.views = mOptions.views;
     mOptions.optimization.energyOptions(mOptions.optResolution, mShading.scale.range);  // validates --energy
     mOrbit = OrbitCamera::fromCamera(mOptions.view.camera(), !mOptions.view.cameraFile.empty());
     mOrbit.framed = mOptions.view.framed();

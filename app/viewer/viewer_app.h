@@ -148,6 +148,8 @@ private:
     /// True when the method's rule for drawing rays is chosen, not given (--stable-shift, --view).
     bool choosesReadableRule() const;
     void pollOptimiser(double now);
+    /// Eases the camera (and, when @a sameMethod, the method's optimised parameters) to @a view from @a time.
+    void moveTo(const ViewState& view, bool sameMethod, double time);
 
     ViewerOptions mOptions;
     std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
@@ -214,6 +216,7 @@ private:
 
     std::future<OptimiserResult> mJob;
     render::MethodPtr mJobMethod;  ///< the method the job started from
+    std::vector<ViewState> mViewSet;  ///< the last "optimise view"'s several views (--views), the best first
     std::atomic<bool> mCancelJob{false};
     std::string mJobName;
     double mJobStart = 0.0;

@@ -41,19 +41,24 @@ void ViewerApp::pollOptimiser(double time)
         mStatus = result.summary;
         std::printf("inversevis-view: %s\n", mStatus.c_str());
         std::fflush(stdout);
-        // Unless the method was changed meanwhile, it takes the result's other parameters (the
-        // readable rule) now and its optimised ones ease to the result's.
-        const bool sameMethod = mMethod == mJobMethod;
-        if (sameMethod) mMethod = render::withOptimisedParameters(*result.state.method, render::optimisedParameters(*mMethod));
-        mAnimatedMethod = mMethod->name();
-        const OrbitCamera to = OrbitCamera::fromCamera(result.state.camera, false);
-        mAnimation = CameraAnimation(mOrbit, sameMethod ? render::optimisedParameters(*mMethod) : std::vector<double>{},
-                                     to, sameMethod ? render::optimisedParameters(*result.state.method) : std::vector<double>{},
-                                     time, 1.0);
+        if (mJobName == "optimise view") mViewSet = result.views;
+        moveTo(result.state, mMethod == mJobMethod, time);
     } catch (const std::exception& e) {
         mStatus = mJobName + " failed: " + e.what();
     }
     mDirty = true;
+}
+
+void ViewerApp::moveTo(const ViewState& view, bool sameMethod, double time)
+{
+    // Unless the method was changed meanwhile, it takes the view's other parameters (the readable
+    // rule) now and its optimised ones ease to the view's.
+    if (sameMethod) mMethod = render::withOptimisedParameters(*view.method, render::optimisedParameters(*mMethod));
+    mAnimatedMethod = mMethod->name();
+    const OrbitCamera to = OrbitCamera::fromCamera(view.camera, false);
+    mAnimation = CameraAnimation(mOrbit, sameMethod ? render::optimisedParameters(*mMethod) : std::vector<double>{},
+                                 to, sameMethod ? render::optimisedParameters(*view.method) : std::vector<double>{},
+                                 time, 1.0);
 }
 
 }  // namespace ivis::app

@@ -21,6 +21,11 @@ void ViewerOptions::addTo(CLI::App& app)
     optimization.addTo(app);
     app.add_option("--opt-res", optResolution, "Optimisation resolution (rays per side) of the optimise buttons")
         ->capture_default_str();
+    app.add_option("--views", views,
+                   "'optimise view' also chooses the visited views that show the most surface with the best one (as "
+                   "optimize --views; visibility energy): the panel's view buttons switch between them")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
     // Flags of `inversevis render` that have no meaning in a window.
     for (const char* name : {"--res", "--spp", "--transparent"})
         app.remove_option(app.get_option(name));

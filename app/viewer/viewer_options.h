@@ -24,6 +24,7 @@ struct ViewerOptions {
     ViewOptions view;           ///< --theta, --phi, --method, --alpha, --colormap, --range, ...
     OptimizationOptions optimization;  ///< --energy, --steps, --seed, ... (as `inversevis optimize`)
     int optResolution = 100;    ///< rays per side while optimising (--opt-res)
+    int views = 1;              ///< 'optimise view' also chooses this many views in all (--views)
     int width = 1024;           ///< window (and headless image) width in pixels
     int height = 768;           ///< window (and headless image) height in pixels
     std::string screenshot;     ///< headless: write the last frame here (of a series, each step's, numbered) and exit

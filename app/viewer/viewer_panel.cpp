@@ -166,6 +166,9 @@ void optimiserWidgets(OptimiserSettings& settings, bool hasScalar)
     tooltip("rays per image side while optimising (paper: 100 or 1000)");
     ImGui::SliderInt("anneal steps", &settings.optimization.steps, 1, 100);
     tooltip("proposals of the simulated annealing after the start view");
+    ImGui::SliderInt("views", &settings.views, 1, 4);
+    tooltip("'optimise view' also chooses the visited views that show the most surface with the best one (as "
+            "optimize --views; visibility energy); the buttons 'view 1', 'view 2', ... then switch between them");
 }
 
 std::string optimiseLabel(const render::Method& method)

@@ -142,6 +142,15 @@ void ViewerApp::drawOptimiserSection()
             "stable_shift, from an eighth of its default to 8 times it) whose 1000 x 1000 picture from this view keeps the "
             "mapping coherence --min-coherence (0.99), as render chooses it; done at start when the rule is not given");
     if (mJob.valid()) ImGui::Text("running %.0f s", now() - mJobStart);
+    for (std::size_t k = 0; k < mViewSet.size() && mViewSet.size() > 1; ++k) {
+        if (k > 0) ImGui::SameLine();
+        ImGui::BeginDisabled(busy || mViewSet[k].method->name() != mMethod->name());
+        if (ImGui::Button(("view " + std::to_string(k + 1)).c_str())) moveTo(mViewSet[k], true, now());
+        ImGui::EndDisabled();
+    }
+    if (mViewSet.size() > 1)
+        tooltip("the last 'optimise view''s several views (views > 1, as optimize --views): the best first, then "
+                "those showing the most surface the views before miss; the camera and parameters ease there");
 }
 
 bool ViewerApp::drawPictureSection()

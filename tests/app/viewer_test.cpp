@@ -644,6 +644,30 @@ TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
 #endif
 }
 
+// --views 2: 'optimise view' also chooses a second view and says what the two show together.
+TEST(Viewer, OptimiseViewWithViewsChoosesASecondView)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --optimize view "
+                                    "--views 2 --steps 1 --finalists 0 --opt-res 24 --cache-dir '" + dir.path() +
+                                        "' --ui-screenshot '" + dir.file("window.png") + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const std::size_t at = run.output.find("2 views together show ");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    const double together = std::stod(run.output.substr(at + 22));
+    const std::size_t each = run.output.find("(each ", at);
+    ASSERT_NE(each, std::string::npos) << run.output;
+    const double best = std::stod(run.output.substr(each + 6));
+    EXPECT_GT(together, best) << run.output;
+    EXPECT_LE(together, 1.0);
+#endif
+}
+
 // A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
 // same picture in the viewer as in `render --view`.
 TEST(Viewer, ViewFileShowsTheCpuPicture)
