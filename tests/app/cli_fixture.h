@@ -14,6 +14,14 @@
 
 namespace ivis::app {
 
+/// One triangle: 3 vertices, OBJ numbering from 1.
+inline constexpr const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+/// A closed tetrahedron 1-2-3-4 plus the zero-area triangle 1-5-2 (vertex 5 lies on edge 1-2),
+/// which reading drops and logs.
+inline constexpr const char* kTetraWithDegenerateObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
+                                                       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 5 2\n";
+
 /// Shell-quotes a path for runCli.
 inline std::string quoted(const std::string& path)
 {
