@@ -28,13 +28,6 @@
 namespace ivis::app {
 namespace {
 
-namespace fs = std::filesystem;
-using test::CliResult;
-using test::runCli;
-using test::sharedMesh;
-using test::TempDir;
-using test::writeFile;
-
 TEST_F(Cli, EvaluateTakesTheMeshAndVolumeOptions)
 {
     const CliResult result =

@@ -14,6 +14,13 @@
 
 namespace ivis::app {
 
+namespace fs = std::filesystem;
+using test::CliResult;
+using test::runCli;
+using test::sharedMesh;
+using test::TempDir;
+using test::writeFile;
+
 /// One triangle: 3 vertices, OBJ numbering from 1.
 inline constexpr const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 

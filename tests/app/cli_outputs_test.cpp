@@ -28,13 +28,6 @@
 namespace ivis::app {
 namespace {
 
-namespace fs = std::filesystem;
-using test::CliResult;
-using test::runCli;
-using test::sharedMesh;
-using test::TempDir;
-using test::writeFile;
-
 // Each output is named for the format written into it (a PNG was written into x.exr, x.jpg or x,
 // an EXR into a .png), and no two outputs name the same file (the later overwrote the earlier).
 TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)

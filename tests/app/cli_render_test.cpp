@@ -28,13 +28,6 @@
 namespace ivis::app {
 namespace {
 
-namespace fs = std::filesystem;
-using test::CliResult;
-using test::runCli;
-using test::sharedMesh;
-using test::TempDir;
-using test::writeFile;
-
 TEST_F(Cli, RenderDrawsTheWrapWithItsReadableRuleUnlessTheRuleIsGiven)
 {
     // The rule is chosen on the 1000 x 1000 picture of the same view, whatever the picture's size:
