@@ -13,8 +13,8 @@ namespace {
 
 /// The wrap's ray parameters by default: a hull wider than the paper's 0.4, so that a thick
 /// part's rings reach further round it, and rays that land a fifth as far from the surface as
-/// the paper's, so that a ray skimming a ridge flies on past it (docs/optimisation.md, "A closer
-/// landing").
+/// the paper's, so that a ray skimming a ridge flies on past it
+/// (docs/decisions/wrap-flight-and-landing.md).
 CurvedRayParams wrapRayDefaults()
 {
     CurvedRayParams params;

@@ -53,7 +53,7 @@ public:
     ///        are narrower than the hull round thin parts and where their outer rays are not drawn.
     PictureExtent pictureExtent(const RenderScene& scene, const core::Camera& camera) const override;
     /// @brief The hull offset and 0.4 beyond it: the fast outer rays of a ring fly out before they
-    ///        fall back (docs/optimisation.md, "Wider rings").
+    ///        fall back (docs/decisions/wrap-rings.md).
     float reachNeeded() const override { return rayParams().hullOffset + 0.4f; }
     /// @brief The launch rule.
     const WrapLaunch& launch() const { return mLaunch; }
