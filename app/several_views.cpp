@@ -59,7 +59,6 @@ SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize
     for (std::size_t index : chosen) {
         const optimize::VisitedView& visited = result.visited[index];
         ChosenView& current = set.views.emplace_back();
-        current.visited = &visited;
         if (index == result.best) {  // as the annealing made it readable and the command drew it
             current.camera = bestCamera;
             current.method = options.method;
@@ -84,7 +83,7 @@ SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize
     set.json["views"] = nlohmann::json::array();
     std::string each;
     for (const ChosenView& current : set.views) {
-        optimize::EnergyValue value = optimize::measurePicture(measure, current.picture.layers);
+        const optimize::EnergyValue value = optimize::measurePicture(measure, current.picture.layers);
         const double coherence = optimize::mappingCoherence(current.picture.layers).value();
         const glm::dvec2 angles = current.camera.angles();
         set.json["views"].push_back({{"theta", angles.x},

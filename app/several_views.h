@@ -17,7 +17,6 @@ namespace ivis::app {
 
 /// @brief One view of the set: its camera at the picture's size, its method and its picture.
 struct ChosenView {
-    const optimize::VisitedView* visited = nullptr;
     core::Camera camera;
     render::MethodPtr method;
     render::RenderResult picture;
