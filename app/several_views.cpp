@@ -5,7 +5,6 @@
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/picture.h>
 #include <ivis/optimize/picture_measure.h>
-#include <ivis/optimize/readability.h>
 #include <ivis/optimize/view_set.h>
 #include <ivis/render/method_json.h>
 
@@ -51,28 +50,18 @@ SeveralViews renderSeveralViews(const render::RenderScene& scene, const optimize
                                 const render::RenderOptions& options, const core::Camera& bestCamera,
                                 const render::RenderResult& bestPicture, int count)
 {
-    if (!evaluator.surfaceVoxels())
-        throw ValueError("--views chooses views by the surface they show together: it needs --energy visibility");
     SeveralViews set;
-    const std::vector<std::size_t> chosen =
-        optimize::chooseViewSet(result.visited, result.best, *evaluator.surfaceVoxels(), count);
-    for (std::size_t index : chosen) {
-        const optimize::VisitedView& visited = result.visited[index];
+    for (const optimize::ReadableView& chosen : optimize::chooseReadableViewSet(result, evaluator, annealing, count)) {
         ChosenView& current = set.views.emplace_back();
-        if (index == result.best) {  // as the annealing made it readable and the command drew it
+        if (chosen.index == result.best) {  // as the annealing made it readable and the command drew it
             current.camera = bestCamera;
             current.method = options.method;
             current.picture = bestPicture;
             continue;
         }
-        current.method = visited.method;
-        if (annealing.readableResolution > 0 && !current.method->info().readabilityParameter.empty())
-            current.method = optimize::loosestReadable(scene, visited.camera, current.method,
-                                                       {annealing.readableResolution, annealing.readableResolution},
-                                                       annealing.minCoherence)
-                                 .method;
-        current.camera = framed ? optimize::framedCamera(scene, visited.camera, *current.method, options.width, options.height)
-                                : visited.camera;
+        const core::Camera& camera = result.visited[chosen.index].camera;
+        current.method = chosen.method;
+        current.camera = framed ? optimize::framedCamera(scene, camera, *current.method, options.width, options.height) : camera;
         render::RenderOptions look = options;
         look.method = current.method;
         current.picture = render::renderImage(scene, current.camera, look);

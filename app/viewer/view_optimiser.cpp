@@ -39,24 +39,17 @@ private:
     const std::atomic<bool>& mCancel;
 };
 
-/// The view set of @a annealing (the best view first) with each further view's readable rule,
+/// The view set of @a annealing (the best view first, each further view with its readable rule),
 /// appended to @a result, and a line of what the views show together on @a evaluator's voxels.
 std::string addViewSet(const optimize::AnnealingResult& annealing, const optimize::EnergyEvaluator& evaluator,
-                       const OptimiserSettings& settings, OptimiserResult& result)
+                       const optimize::AnnealingOptions& options, int count, OptimiserResult& result)
 {
-    const std::vector<std::size_t> chosen =
-        optimize::chooseViewSet(annealing.visited, annealing.best, *evaluator.surfaceVoxels(), settings.views);
     std::vector<std::uint64_t> together;
     std::string each;
-    for (std::size_t index : chosen) {
-        const optimize::VisitedView& view = annealing.visited[index];
-        render::MethodPtr method = view.method;
-        const double minCoherence = settings.optimization.minCoherence;
-        if (index != annealing.best && minCoherence > 0.0 && !method->info().readabilityParameter.empty())
-            method = optimize::loosestReadable(evaluator.scene(), view.camera, method,
-                                               glm::ivec2(optimize::kCoherenceResolution), minCoherence)
-                         .method;
-        result.views.push_back({view.camera, method});
+    const std::vector<optimize::ReadableView> set = optimize::chooseReadableViewSet(annealing, evaluator, options, count);
+    for (const optimize::ReadableView& chosen : set) {
+        const optimize::VisitedView& view = annealing.visited[chosen.index];
+        result.views.push_back({view.camera, chosen.method});
         together.insert(together.end(), view.value.seenVoxels.begin(), view.value.seenVoxels.end());
         char text[32];
         std::snprintf(text, sizeof text, "%s%.4f", each.empty() ? "" : ", ", view.value.energy);
@@ -64,7 +57,7 @@ std::string addViewSet(const optimize::AnnealingResult& annealing, const optimiz
     }
     char text[160];
     std::snprintf(text, sizeof text, "; %zu views together show %.4f (each %s; the panel's view buttons switch)",
-                  chosen.size(), evaluator.surfaceVoxels()->shareSeen(together).area, each.c_str());
+                  set.size(), evaluator.surfaceVoxels()->shareSeen(together).area, each.c_str());
     return text;
 }
 
@@ -112,11 +105,10 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
         const optimize::EnergyValue before = evaluator.evaluate(camera, start.method);
         const auto ascentEvaluator =
             settings.optimization.ascentEvaluator(scene, settings.resolution, settings.importanceRange);
+        const optimize::AnnealingOptions annealingOptions = settings.optimization.annealingOptions(
+            angles, settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg));
         const optimize::AnnealingResult annealing = optimize::annealViewpoint(
-            evaluator, start.method,
-            settings.optimization.annealingOptions(angles,
-                                                   settings.framed ? std::nullopt : std::optional(start.camera.fovYDeg)),
-            settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
+            evaluator, start.method, annealingOptions, settings.optimization.ascentOptions(), ascentEvaluator.get(), &interrupter,
             settings.optimization.finalistEvaluator(scene, settings.resolution, settings.importanceRange).get());
         const optimize::VisitedView& best = annealing.bestView();
         const std::string readable = annealing.readable ? ", " + readableSettingLine(*annealing.readable) : "";
@@ -136,7 +128,7 @@ ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings)
                       annealing.visited.size(), result.evaluations, result.seconds);
         result.summary = text + readable;
         if (settings.views > 1)
-            result.summary += evaluator.surfaceVoxels() ? addViewSet(annealing, evaluator, settings, result)
+            result.summary += evaluator.surfaceVoxels() ? addViewSet(annealing, evaluator, annealingOptions, settings.views, result)
                                                         : "; several views need the visibility energy";
         return result;
     };

@@ -1,6 +1,7 @@
 #include <ivis/optimize/view_set.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/optimize/readability.h>
 
 #include <algorithm>
 
@@ -35,6 +36,24 @@ std::vector<std::size_t> chooseViewSet(const std::vector<VisitedView>& views, st
         add(best);
     }
     return chosen;
+}
+
+std::vector<ReadableView> chooseReadableViewSet(const AnnealingResult& result, const EnergyEvaluator& evaluator,
+                                                const AnnealingOptions& options, int count)
+{
+    if (!evaluator.surfaceVoxels())
+        throw ValueError("several views are chosen by the surface they show together: they need the visibility energy");
+    std::vector<ReadableView> set;
+    for (std::size_t index : chooseViewSet(result.visited, result.best, *evaluator.surfaceVoxels(), count)) {
+        const VisitedView& view = result.visited[index];
+        render::MethodPtr method = view.method;
+        if (index != result.best && options.readableResolution > 0 && !method->info().readabilityParameter.empty())
+            method = loosestReadable(evaluator.scene(), view.camera, method,
+                                     {options.readableResolution, options.readableResolution}, options.minCoherence)
+                         .method;
+        set.push_back({index, method});
+    }
+    return set;
 }
 
 }  // namespace ivis::optimize

@@ -19,4 +19,17 @@ namespace ivis::optimize {
 std::vector<std::size_t> chooseViewSet(const std::vector<VisitedView>& views, std::size_t first,
                                        const SurfaceVoxels& surface, int count);
 
+/// @brief One view of a readable set: which visited view, and its method as it is drawn.
+struct ReadableView {
+    std::size_t index = 0;     ///< into AnnealingResult::visited
+    render::MethodPtr method;  ///< the best view's as the annealing left it; a further view's with its own readable rule
+};
+
+/// @brief chooseViewSet of @a result on @a evaluator's surface voxels (the best view first), each
+///        further view given its loosest readable rule as the annealing gives the best one
+///        (@a options' readableResolution and minCoherence; none when readableResolution is 0).
+/// @throw ValueError unless @a evaluator measures the visibility energy
+std::vector<ReadableView> chooseReadableViewSet(const AnnealingResult& result, const EnergyEvaluator& evaluator,
+                                                const AnnealingOptions& options, int count);
+
 }  // namespace ivis::optimize
