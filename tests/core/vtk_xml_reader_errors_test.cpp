@@ -25,8 +25,6 @@ namespace {
 
 using test::TempDir;
 using test::VtkArray;
-using test::VtkDataSet;
-using test::VtkXmlLayout;
 using test::writeFile;
 
 // ----------------------------------------------------------------------------------------------

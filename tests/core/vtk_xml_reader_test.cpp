@@ -25,8 +25,6 @@ namespace {
 
 using test::TempDir;
 using test::VtkArray;
-using test::VtkDataSet;
-using test::VtkXmlLayout;
 using test::writeFile;
 
 const DataArray* arrayNamed(const SurfaceField& field, const std::string& name)
