@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"inversevis: scalar fields on both sides of a surface mesh"};
+    CLI::App app{"inversevis: scalar fields on both sides of a surface mesh", "inversevis"};
     app.set_version_flag("--version", ivis::app::versionText("inversevis"), "Print the version and those of OpenVDB, Embree and OpenEXR");
     app.require_subcommand(1);
     app.fallthrough();  // global flags (-q) may follow the subcommand

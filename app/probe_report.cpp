@@ -1,20 +1,14 @@
 #include "probe_report.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/number_text.h>
 
 #include <cmath>
-#include <cstdio>
 
 namespace ivis::app {
 namespace {
 
-/// @a value to six significant digits.
-std::string sixDigits(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
+using core::shortNumber;
 
 const char* regionName(render::Region region)
 {
@@ -40,15 +34,15 @@ std::optional<std::size_t> fileCell(const core::SurfaceField& field, int triangl
 std::string launchText(const ProbeReport& report)
 {
     const render::ProbedLaunch& launch = *report.probe.launch;
-    auto hundredths = [](float value) { return sixDigits(std::round(value * 100.0) / 100.0); };
+    auto hundredths = [](float value) { return shortNumber(std::round(value * 100.0) / 100.0); };
     const std::string where = launch.ring ? " " + hundredths(*launch.ring) + " across its ring" : "";
     const std::string speed = launch.speed ? " at speed " + hundredths(*launch.speed) : "";
     std::string text = launch.refusal ? "; its ray" + (where.empty() ? "" : " from" + where) + speed +
                                             " is not drawn: " + launch.refusal
                                       : "; its ray starts" + where + speed;
     if (launch.bend > 0.0f && !report.ruleName.empty())
-        text += " (bend " + sixDigits(std::round(launch.bend * 1000.0) / 1000.0) + ", " + report.ruleName + " " +
-                sixDigits(report.rule) + ")";
+        text += " (bend " + shortNumber(std::round(launch.bend * 1000.0) / 1000.0) + ", " + report.ruleName + " " +
+                shortNumber(report.rule) + ")";
     return text;
 }
 
@@ -122,13 +116,13 @@ std::string probeLine(const ProbeReport& report, const core::SurfaceField& field
     if (!point.valid()) return report.probe.launch ? line + launchText(report) : line;
     if (field.hasScalar())
         line += ", " + field.name + " " +
-                (std::isnan(report.probe.scalar) ? std::string("none (NaN or a cap)") : sixDigits(report.probe.scalar));
+                (std::isnan(report.probe.scalar) ? std::string("none (NaN or a cap)") : shortNumber(report.probe.scalar));
     const glm::dvec3 p = field.normalization.meshFromNormalized(glm::dvec3(point.position));
-    line += " at (" + sixDigits(p.x) + ", " + sixDigits(p.y) + ", " + sixDigits(p.z) + ")";
+    line += " at (" + shortNumber(p.x) + ", " + shortNumber(p.y) + ", " + shortNumber(p.z) + ")";
     const std::optional<std::size_t> cell = fileCell(field, point.triangle);
     line += cell ? ", cell " + std::to_string(*cell) : ", on a cap over a hole";
-    line += report.view ? "; seen directly from --theta " + sixDigits(std::round(report.view->x * 10.0) / 10.0) +
-                              " --phi " + sixDigits(std::round(report.view->y * 10.0) / 10.0)
+    line += report.view ? "; seen directly from --theta " + shortNumber(std::round(report.view->x * 10.0) / 10.0) +
+                              " --phi " + shortNumber(std::round(report.view->y * 10.0) / 10.0)
                         : "; no view from outside sees it directly";
     return report.probe.launch ? line + launchText(report) : line;
 }

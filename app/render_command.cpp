@@ -138,8 +138,9 @@ void renderOnePicture(RenderFlags& flags, const RenderPlan& plan, core::Progress
 
     const std::string volumePath =
         vdb::defaultVolumePath(vdb::optionalCacheFolder(flags.cacheDir), flags.mesh.source, field.mesh, plan.volumeOptions);
-    const vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, plan.volumeOptions, volumePath, &progress);
+    vdb::SurfaceVolume volume = vdb::loadOrBuildVolume(field.mesh, plan.volumeOptions, volumePath, &progress);
     const render::RenderScene scene(field, volume);
+    volume.releaseSampledGrids();  // the scene holds its own copies of what it samples
     optimize::PictureRequest pictureRequest;
     pictureRequest.options = renderOptions;
     pictureRequest.camera = plan.requested;

@@ -28,6 +28,7 @@ std::string SeriesScene::show(core::SurfaceField field, core::Interrupter* inter
     mVolume = std::make_unique<vdb::SurfaceVolume>(
         vdb::loadOrBuildVolume(mField->mesh, mOptions, mVolumePath, interrupter, &outcome));
     mScene = std::make_unique<render::RenderScene>(*mField, *mVolume);
+    mVolume->releaseSampledGrids();  // the scene holds its own copies of what it samples
     mMeshHash = hash;
     ++mVolumesLoaded;
     return vdb::toString(outcome);

@@ -3,10 +3,10 @@
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/log.h>
+#include <ivis/core/number_text.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 namespace ivis::app {
@@ -15,9 +15,7 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
 {
     if (!step.array.empty() || name.empty()) return name;
     if (!series.timed()) return name + ", " + step.label;
-    char time[32];
-    std::snprintf(time, sizeof time, "%g", step.time);
-    return name + ", t = " + time;
+    return name + ", t = " + core::shortNumber(step.time);
 }
 
 SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep,

@@ -10,7 +10,7 @@
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"inversevis-bench: timings against same-run references"};
+    CLI::App app{"inversevis-bench: timings against same-run references", "inversevis-bench"};
     app.require_subcommand(1);
     const std::vector<ivis::bench::Benchmark> benchmarks = {
         ivis::bench::addSdfBenchmark(app), ivis::bench::addRenderBenchmark(app), ivis::bench::addReadBenchmark(app)};

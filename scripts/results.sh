@@ -7,10 +7,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 IVIS_TARGETS=inversevis ivis_build
-SHARED=$(cd "${1:-$IVIS_ROOT/../shared/meshes}" && pwd)
-WIDER=${2:-$IVIS_ROOT/../test-meshes}
-[ -f "$WIDER/MANIFEST.md" ] || "$IVIS_ROOT/scripts/test_meshes.sh" "$WIDER"
-WIDER=$(cd "$WIDER" && pwd)
+ivis_mesh_folders "${1:-}" "${2:-}"
 cli="$IVIS_BUILD/app/inversevis"
 work="$IVIS_BUILD/results"
 mkdir -p "$work"

@@ -54,4 +54,13 @@ ivis_build() {
   cmake --build "$IVIS_BUILD" -j "$jobs" "${targets[@]}"
 }
 
+# Sets SHARED (the shared meshes: $1, else ../shared/meshes) and WIDER (the wider test set: $2,
+# else ../test-meshes, fetched by scripts/test_meshes.sh when missing), each an absolute path.
+ivis_mesh_folders() {
+  SHARED=$(cd "${1:-$IVIS_ROOT/../shared/meshes}" && pwd)
+  WIDER=${2:-$IVIS_ROOT/../test-meshes}
+  [ -f "$WIDER/MANIFEST.md" ] || "$IVIS_ROOT/scripts/test_meshes.sh" "$WIDER"
+  WIDER=$(cd "$WIDER" && pwd)
+}
+
 ivis_install_packages

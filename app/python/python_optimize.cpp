@@ -7,6 +7,7 @@
 #include "../several_views.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/number_text.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/picture.h>
 #include <ivis/optimize/picture_measure.h>
@@ -15,20 +16,11 @@
 #include <ivis/render/picture_extent.h>
 
 #include <cmath>
-#include <cstdio>
 
 namespace py = pybind11;
 
 namespace ivis::python {
 namespace {
-
-/// @a value as Python prints a float's short form ("2", "0.5", "inf").
-std::string number(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
 
 /// `optimize`'s settings from @a request, each checked as the command line checks its flag.
 app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, const render::MethodPtr& method)
@@ -41,7 +33,7 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
         if (request.energy != "scalar")
             throw ValueError("gamma weights the directly visible part of the scalar energy; energy is " + request.energy);
         if (!(*request.gamma >= 0.0f && *request.gamma <= 1000.0f))
-            throw ValueError("gamma " + number(*request.gamma) + " must lie in [0, 1000]");
+            throw ValueError("gamma " + core::shortNumber(*request.gamma) + " must lie in [0, 1000]");
         o.gamma = *request.gamma;
     }
     if (request.optResolution < 4 || request.optResolution > 8192)
@@ -80,8 +72,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
     std::optional<glm::dvec2> startAngles;
     if (request.start) {
         if (!std::isfinite(request.start->first) || !std::isfinite(request.start->second))
-            throw ValueError("start (" + number(request.start->first) + ", " +
-                             number(request.start->second) + "): theta and phi must be finite degrees");
+            throw ValueError("start (" + core::shortNumber(request.start->first) + ", " +
+                             core::shortNumber(request.start->second) + "): theta and phi must be finite degrees");
         startAngles = glm::dvec2(request.start->first, request.start->second);
     }
 

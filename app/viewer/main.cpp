@@ -24,7 +24,7 @@ extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"inversevis-view: both sides of a surface, live, on the GPU"};
+    CLI::App app{"inversevis-view: both sides of a surface, live, on the GPU", "inversevis-view"};
     ivis::core::setLogProgram("inversevis-view");  // the libraries' notes name this program
     ivis::app::ViewerOptions options;
     options.addTo(app);

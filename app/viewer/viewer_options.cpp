@@ -4,9 +4,9 @@
 #include "../probe_report.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/number_text.h>
 #include <ivis/core/surface_source.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -79,11 +79,8 @@ void ViewerOptions::validate()
         throw ValueError("--opt-res " + std::to_string(optResolution) + " is out of range (8 to 2000)");
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
-    if (!(playRate >= 0.1 && playRate <= 60.0)) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", playRate);
-        throw ValueError(std::string("--play-rate ") + text + " is out of range (0.1 to 60 steps per second)");
-    }
+    if (!(playRate >= 0.1 && playRate <= 60.0))
+        throw ValueError("--play-rate " + core::shortNumber(playRate) + " is out of range (0.1 to 60 steps per second)");
     if (play && headless())
         throw InputError("--play: --screenshot already shows every step of a series in turn, and --benchmark orbits one");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");

@@ -2,9 +2,9 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/mesh_layout_check.h>
+#include <ivis/core/number_text.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <numeric>
 
 namespace ivis::core::detail {
@@ -134,9 +134,8 @@ std::vector<std::uint8_t> toCellTypes(const std::string& path, const std::vector
     for (std::size_t c = 0; c < values.size(); ++c) {
         const double t = values[c];
         if (!(t >= 0.0 && t <= 255.0) || t != double(int(t))) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%g", t);
-            failInput(path, "cell " + std::to_string(c) + " has the cell type " + text + ", which VTK does not define");
+            failInput(path, "cell " + std::to_string(c) + " has the cell type " + shortNumber(t) +
+                                ", which VTK does not define");
         }
         types[c] = std::uint8_t(t);
     }

@@ -4,6 +4,7 @@
 #include "value_decoding.h"
 
 #include <ivis/core/mesh_layout_check.h>
+#include <ivis/core/number_text.h>
 
 #include <zlib.h>
 
@@ -11,7 +12,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <utility>
 
@@ -241,9 +241,7 @@ std::vector<std::int64_t> toIndices(const std::string& path, const std::string& 
     for (std::size_t i = 0; i < values.size(); ++i) {
         const double v = values[i];
         if (!(v >= -9.2e18 && v <= 9.2e18) || v != std::floor(v)) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%g", v);
-            failInput(path, what + ": value " + text + " at position " + std::to_string(i) + " is not an index");
+            failInput(path, what + ": value " + shortNumber(v) + " at position " + std::to_string(i) + " is not an index");
         }
         indices[i] = std::int64_t(v);
     }

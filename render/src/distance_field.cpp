@@ -1,5 +1,7 @@
 #include <ivis/render/distance_field.h>
 
+#include <ivis/core/errors.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,10 +16,17 @@ float fineBandReach(const vdb::SurfaceVolume& volume)
     return std::max(volume.phi->background() - std::sqrt(3.0f) * voxel, voxel);
 }
 
+/// @a volume, checked to hold the grids a distance field copies (releaseSampledGrids frees them).
+const vdb::SurfaceVolume& sampledVolume(const vdb::SurfaceVolume& volume)
+{
+    IVIS_CHECK(!volume.released());
+    return volume;
+}
+
 }  // namespace
 
 DistanceField::DistanceField(const vdb::SurfaceVolume& volume)
-    : mVolume(volume),
+    : mVolume(sampledVolume(volume)),
       mFar(volume.farPhi ? DenseGrid(*volume.farPhi, *volume.farGradient) : DenseGrid(*volume.phi, *volume.gradient)),
       mBand(volume.farPhi ? BandBricks(*volume.phi, *volume.gradient) : BandBricks()),
       mHasFineBand(bool(volume.farPhi)),

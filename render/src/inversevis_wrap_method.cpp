@@ -1,12 +1,12 @@
 #include <ivis/render/inversevis_wrap_method.h>
 
+#include <ivis/core/number_text.h>
 #include <ivis/render/landed_extent.h>
 #include <ivis/render/render_scene.h>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cstdio>
 
 namespace ivis::render {
 namespace {
@@ -151,13 +151,12 @@ const MethodInfo& inverseVisWrapMethodInfo()
         i.help = "curved rays from the view ray's closest approach, unwrapping the back side outward from the "
                  "silhouette in rings as wide as each part is thick (beyond the paper)";
         const WrapLaunch defaults;
-        char probeStep[16];
-        std::snprintf(probeStep, sizeof probeStep, "%g", double(kWrapProbeStep));
+        const std::string probeStep = core::shortNumber(kWrapProbeStep);
         i.parameters = {
             {"wrap_speed", "alpha at the ring's outer edge (alpha = speed * t (2 - t) across the ring coordinate t)", {defaults.speed}, 0.0f, kMaxAlpha},
             {"wrap_tilt", "outward tilt of the launch at the ring's outer edge", {defaults.tilt}, 0.0f, 4.0f},
             {"ring_scale", "ring width in local radii of the part it surrounds (at most hull_offset)", {defaults.ringScale}, 0.1f, 20.0f},
-            {"stable_shift", std::string("largest bend (normalised units) of the landings of a ray and of the rays seeded ") + probeStep +
+            {"stable_shift", "largest bend (normalised units) of the landings of a ray and of the rays seeded " + probeStep +
                                  " further in and out across its ring (its neighbouring pixels'); rays that bend more fly "
                                  "chaotically or straddle a tear and are not drawn",
              {defaults.stableShift}, 0.0001f, 10.0f},

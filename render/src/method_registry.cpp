@@ -1,13 +1,14 @@
 #include <ivis/render/method_registry.h>
 
 #include <ivis/core/errors.h>
-#include <ivis/render/inversevis_adaptive_method.h>
+#include <ivis/core/number_text.h>
 #include <ivis/render/backfaces_method.h>
 #include <ivis/render/front_method.h>
+#include <ivis/render/inversevis_adaptive_method.h>
 #include <ivis/render/inversevis_method.h>
+#include <ivis/render/inversevis_wrap_method.h>
 #include <ivis/render/mirror_method.h>
 #include <ivis/render/neugebauer_method.h>
-#include <ivis/render/inversevis_wrap_method.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,12 +17,7 @@
 namespace ivis::render {
 namespace {
 
-std::string formatValue(float value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", double(value));
-    return text;
-}
+using core::shortNumber;
 
 /// Checks one parameter's values against its description.
 void validate(const MethodInfo& info, const ParameterSpec& spec, const std::vector<float>& values)
@@ -32,9 +28,9 @@ void validate(const MethodInfo& info, const ParameterSpec& spec, const std::vect
                          std::to_string(values.size()));
     for (float v : values) {
         if (!(v >= spec.lo && v <= spec.hi))
-            throw ValueError(what + " " + formatValue(v) + " is out of range (" + formatValue(spec.lo) + " to " +
-                             formatValue(spec.hi) + ")");
-        if (spec.integer && v != std::round(v)) throw ValueError(what + " " + formatValue(v) + " is not a whole number");
+            throw ValueError(what + " " + shortNumber(v) + " is out of range (" + shortNumber(spec.lo) + " to " +
+                             shortNumber(spec.hi) + ")");
+        if (spec.integer && v != std::round(v)) throw ValueError(what + " " + shortNumber(v) + " is not a whole number");
     }
 }
 

@@ -7,6 +7,7 @@
 #include "test_support.h"
 
 #include <ivis/core/closest_point.h>
+#include <ivis/core/errors.h>
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/render/distance_field.h>
 #include <ivis/vdb/surface_volume.h>
@@ -53,6 +54,37 @@ TEST(DistanceField, PhiAndGradientMatchTheSphereInTheBandAndTheFarField)
             EXPECT_LT(angleDeg(gradient, n), angleTolerance) << "at radius " << radius;
             EXPECT_NEAR(glm::length(gradient), 1.0f, 0.05f) << "at radius " << radius;
         }
+    }
+}
+
+TEST(DistanceField, SamplesTheSameOnceItsVolumeReleasesTheGridsItCopied)
+{
+    // With a far field (the band in bricks) and without (phi itself is the dense copy).
+    for (const test::SceneFixture* fixture : {&sphere(), &test::sphereScene()}) {
+        vdb::SurfaceVolume volume = fixture->volume;  // shares the grids; releasing resets this copy's
+        const DistanceField field(volume);
+        const double reach = volume.reach();
+        const std::size_t bytes = volume.memoryBytes();
+        auto sampleAll = [&] {
+            auto sampler = field.sampler();
+            std::vector<float> values;
+            for (const float radius : {0.95f, 1.0f, 1.04f, 1.3f, 1.8f})
+                for (const glm::vec3& n : test::fibonacciDirections(100)) {
+                    glm::vec3 gradient;
+                    values.push_back(sampler.phiAndGradient(radius * n, gradient));
+                    values.insert(values.end(), {gradient.x, gradient.y, gradient.z});
+                    values.push_back(float(sampler.nearestTriangle(radius * n)));
+                }
+            return values;
+        };
+        const std::vector<float> before = sampleAll();
+        volume.releaseSampledGrids();
+        EXPECT_TRUE(volume.released());
+        EXPECT_EQ(sampleAll(), before);  // bit for bit
+        EXPECT_EQ(volume.reach(), reach);
+        EXPECT_LT(volume.memoryBytes(), bytes / 2);
+        EXPECT_THROW(DistanceField{volume}, InternalError);
+        EXPECT_FALSE(fixture->volume.released());
     }
 }
 

@@ -37,6 +37,18 @@ std::size_t SurfaceVolume::activeVoxels() const
     return count;
 }
 
+void SurfaceVolume::releaseSampledGrids()
+{
+    if (released()) return;
+    // An empty phi of the same background and transform keeps reach() where phi itself reaches.
+    openvdb::FloatGrid::Ptr empty = openvdb::FloatGrid::create(phi->background());
+    empty->setTransform(phi->transform().copy());
+    empty->setName(phi->getName());
+    phi = empty;
+    gradient.reset();
+    barycentric.reset();
+}
+
 std::size_t SurfaceVolume::memoryBytes() const
 {
     std::size_t bytes = 0;

@@ -25,6 +25,8 @@ public:
     }
     const core::SurfaceField& field() const { return mField; }
     const core::TriangleMesh& mesh() const { return mField.mesh; }
+    /// @brief The volume it was built from; once built, the scene reads only its triangle grid, so a
+    ///        program that renders only may release the rest (vdb::SurfaceVolume::releaseSampledGrids).
     const vdb::SurfaceVolume& volume() const { return mVolume; }
     const DistanceField& distance() const { return mDistance; }
     const core::TriangleBvh& bvh() const { return mBvh; }
