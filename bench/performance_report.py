@@ -53,9 +53,11 @@ moving_fps = float(wrap_cpu[4].split()[0])
 rest_seconds = float(wrap_cpu[5].split()[0])
 paper_worst = max(report["seconds"] for _, report in paper.values())
 
+measured = datetime.datetime.fromtimestamp(max(f.stat().st_mtime for f in results.iterdir()), datetime.timezone.utc)
+
 print(f"""# Performance
 
-Generated on {datetime.date.today().isoformat()} by `scripts/bench.sh` (this run: {minutes} minutes) on a
+Measured on {measured.date().isoformat()} (UTC) by `scripts/bench.sh` (this run: {minutes} minutes) on a
 machine with {os.cpu_count()} cores ({cpu_model()}), Release build:
 
 ```sh
@@ -117,7 +119,7 @@ per-voxel gradients) against the same rays on a plain dense float array of the d
 fine voxel size ({mib(render['reference_bytes'])}), the memory-bound ceiling. The front view alone:
 {render['front_seconds']:.2f} s.
 
-| method | frame | full trace | indirect pixels | rays traced | seeds near the lattice's | ours (M steps/s) | dense (M steps/s) | ratio |
+| method | frame | full trace | indirect pixels | rays traced | seeds sought near the lattice's | ours (M steps/s) | dense (M steps/s) | ratio |
 |---|---|---|---|---|---|---|---|---|""")
 for m in render["methods"]:
     print(f"| `{m['method']}`{' (default)' if m is wrap else ''} | **{m['frame_seconds']:.2f} s** | "
@@ -134,8 +136,10 @@ as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
   lattice's valley bottoms, background blocks skipped, the stability rule's probes only where needed.
 - **Four rays in lockstep** (`CurvedRayMap::traceMany`): a ray's steps are a chain of dependent
-  memory reads; four rays stepping in turn overlap them. The stability rule's probes of a tile are
-  traced together too (`CurvedRayMap::areStable`).
+  memory reads; four rays stepping in turn overlap them, each lane keeping its own cache of the
+  band brick it is in (`DistanceField::BrickCursor`). The stability rule's probes of a tile are
+  traced together too (`CurvedRayMap::areStable`;
+  [decisions/lockstep-lanes.md](decisions/lockstep-lanes.md)).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far
