@@ -1,7 +1,8 @@
 // DistanceField::Sampler on a unit sphere (fine band at resolution 100, far field at 40): phi and
 // its gradient against the exact sphere distance |p| - 1, the gradient against the blend of the
-// brute-force gradients at the cell's corners and across voxel faces, the nearest triangle against a brute-force search, and the Hessian against the
-// sphere's (I - n n^T) / |p|.
+// brute-force gradients at the cell's corners and across voxel faces, the nearest triangle against
+// a brute-force search, the samples once the volume has released the grids the field copied, and
+// the Hessian against the sphere's (I - n n^T) / |p|.
 #include "brute_force.h"
 #include "render/scene_fixture.h"
 #include "test_support.h"
