@@ -12,7 +12,7 @@ IVIS_TARGETS="inversevis inversevis-bench inversevis-view inversevis_python" ivi
 ivis_mesh_folders "${1:-}" "${2:-}"
 cli="$IVIS_BUILD/app/inversevis"
 bench="$IVIS_BUILD/bench/inversevis-bench"
-timed=(/usr/bin/python3 "$IVIS_ROOT/bench/timed_run.py")
+timer=(/usr/bin/python3 "$IVIS_ROOT/bench/timed_run.py")
 work="$IVIS_BUILD/bench-results"
 [ "$fresh" = 1 ] && rm -rf "$work"
 mkdir -p "$work"
@@ -34,7 +34,7 @@ timed() {
   shift
   [ -f "$work/$name.json" ] && return 0
   echo "bench: $name" >&2
-  "${timed[@]}" "$work/$name.json" "$@"
+  "${timer[@]}" "$work/$name.json" "$@"
 }
 
 for n in 200 1000 2000; do measure "sdf-$n" "$bench" sdf "$armadillo" --volume-res "$n" --json; done
