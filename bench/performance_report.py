@@ -164,8 +164,9 @@ default method, the visibility energy, volume 200 cached, the readability step, 
 picture and its measures): **{optimize_run['wall_seconds']:.1f} s** wall, of it the search (the
 readability step included) {optimize_report['seconds']:.1f} s.
 
-The paper's set-up, every view and its parameter ascent on 1000^2 rays
-(`inversevis optimize MESH --opt-res 1000`, volume 200 cached; the paper reports 35-120 s on a GPU):
+The paper's set-up, every view evaluated on 1000^2 rays (`inversevis optimize MESH --opt-res 1000`,
+volume 200 cached; the paper reports 35-120 s on a GPU). The default method ascends no parameter
+([decisions/fixed-parameters.md](decisions/fixed-parameters.md)), so each view is one evaluation:
 
 | mesh | search | wall | evaluations |
 |---|---|---|---|""")

@@ -49,7 +49,7 @@ timed print "$cli" -q render scene:vessel-tree --volume-res 2000 --res 4000x3000
 lucy="$WIDER/lucy_100k.ply"
 "$cli" -q sdf "$lucy" >/dev/null
 timed optimize "$cli" -q optimize "$lucy" -o "$work/optimize.png" --json "$work/optimize-report.json"
-# The paper's set-up: every view and its ascent on 1000^2 rays.
+# The paper's set-up: every view evaluated on 1000^2 rays.
 for stem in armadillo_50k cow neptune_30k; do
   "$cli" -q sdf "$SHARED/$stem.ply" >/dev/null
   timed "paper-$stem" "$cli" -q optimize "$SHARED/$stem.ply" --opt-res 1000 -o "$work/paper-$stem.png" \

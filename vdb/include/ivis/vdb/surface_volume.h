@@ -67,8 +67,8 @@ struct SurfaceVolume {
     std::uint64_t meshHash = 0;     ///< core::meshHash of the normalised mesh it was built from
     std::size_t triangleCount = 0;  ///< triangles of that mesh
 
-    /// @brief Frees the fine band's phi, gradient and barycentric grids (about two thirds of the
-    ///        volume's memory), keeping the triangle grid, the far field, the options and reach():
+    /// @brief Frees the fine band's phi, gradient and barycentric grids (most of the volume's
+    ///        memory), keeping the triangle grid, the far field, the options and reach():
     ///        what a renderer still reads once it has copied the distances it samples
     ///        (render::DistanceField). For a program that only renders from it.
     void releaseSampledGrids();
