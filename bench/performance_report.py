@@ -136,10 +136,9 @@ as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
   lattice's valley bottoms, background blocks skipped, the stability rule's probes only where needed.
 - **Four rays in lockstep** (`CurvedRayMap::traceMany`): a ray's steps are a chain of dependent
-  memory reads; four rays stepping in turn overlap them, each lane keeping its own cache of the
-  band brick it is in (`DistanceField::BrickCursor`). The stability rule's probes of a tile are
-  traced together too (`CurvedRayMap::areStable`;
-  [decisions/lockstep-lanes.md](decisions/lockstep-lanes.md)).
+  memory reads; four rays stepping in turn overlap them (more lanes, a brick cache per lane and
+  prefetching did not help: [decisions/lockstep-lanes.md](decisions/lockstep-lanes.md)). The
+  stability rule's probes of a tile are traced together too (`CurvedRayMap::areStable`).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far

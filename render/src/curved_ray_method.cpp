@@ -188,7 +188,6 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
         int launch;
         glm::vec3 launchVelocity;
         CurvedRayEnd end;
-        DistanceField::BrickCursor cursor;  ///< the lane's own brick cache: its ray's next step is mostly in it
     };
     const CurvedRayParams& params = mMethod.rayParams();
     const float escape = escapeDistance(sampler.field());
@@ -214,10 +213,8 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
             Lane& lane = lanes[k];
             CurvedRayEnd& end = lane.end;
             if (end.steps < params.maxSteps) {
-                sampler.swapCursor(lane.cursor);
                 const CurvedRayStep step =
                     stepCurvedRay(sampler, end.position, end.velocity, params.stepSize, mEpsilon, escape);
-                sampler.swapCursor(lane.cursor);
                 if (step == CurvedRayStep::Moved) {
                     ++end.steps;
                     ++k;

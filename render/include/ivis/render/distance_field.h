@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace ivis::render {
 
@@ -36,13 +35,6 @@ public:
     ///        far field (or, without one, its band) and bricks its band for fast sampling.
     explicit DistanceField(const vdb::SurfaceVolume& volume);
 
-    /// @brief The band's brick a sampler looked up last (its cache of one brick): rays traced in
-    ///        lockstep keep one each (CurvedRayMap::traceMany), so that they do not evict each other's.
-    struct BrickCursor {
-        glm::ivec3 leaf{-1};                ///< leaf (fine index / 8) of the brick
-        const glm::vec4* brick = nullptr;   ///< its brick (nullptr: no band there)
-    };
-
     /// @brief Per-thread sampler: owns its brick cache and an OpenVDB accessor, never shared between threads.
     class Sampler {
     public:
@@ -55,8 +47,6 @@ public:
         int nearestTriangle(const glm::vec3& p);
         /// @brief The field this sampler reads.
         const DistanceField& field() const { return mField; }
-        /// @brief Exchanges the sampler's brick cache with @a cursor (the values sampled never change).
-        void swapCursor(BrickCursor& cursor) { std::swap(mCursor, cursor); }
 
     private:
         /// detail::blend's (phi, gradient) of the fine cell containing p, false unless all 8
@@ -67,7 +57,8 @@ public:
         float finePhiAndGradient(const glm::vec3& p, float far, glm::vec3& gradient);
 
         const DistanceField& mField;
-        BrickCursor mCursor;                  ///< the last brick looked up
+        glm::ivec3 mLeaf{-1};                 ///< leaf (fine index / 8) of the last brick looked up
+        const glm::vec4* mBrick = nullptr;    ///< its brick (nullptr: no band there)
         openvdb::Int32Grid::ConstAccessor mTriangle;
     };
 
@@ -123,13 +114,13 @@ inline bool DistanceField::Sampler::fineSample(const glm::vec3& p, glm::vec4& sa
     if (!(q.x >= 0.0f && q.y >= 0.0f && q.z >= 0.0f)) return false;  // outside the box: no band there
     const int x = int(q.x), y = int(q.y), z = int(q.z);                // truncation = floor for q >= 0
     const glm::ivec3 leaf(x >> 3, y >> 3, z >> 3);
-    if (leaf != mCursor.leaf) {
-        mCursor.leaf = leaf;
-        mCursor.brick = mField.mBand.find(x, y, z);
+    if (leaf != mLeaf) {
+        mLeaf = leaf;
+        mBrick = mField.mBand.find(x, y, z);
     }
-    if (!mCursor.brick) return false;
+    if (!mBrick) return false;
     constexpr int sy = BandBricks::kEdge, sz = sy * sy;
-    const glm::vec4* v = mCursor.brick + BandBricks::voxelOffset(x & 7, y & 7, z & 7);
+    const glm::vec4* v = mBrick + BandBricks::voxelOffset(x & 7, y & 7, z & 7);
     const glm::vec4 corners[8] = {v[0], v[1], v[sy], v[sy + 1], v[sz], v[sz + 1], v[sz + sy], v[sz + sy + 1]};
     sample = detail::blend(corners, q - glm::vec3(float(x), float(y), float(z)), mField.mVoxelSize);
     return !std::isnan(sample.x);  // NaN: some corner is outside the band
