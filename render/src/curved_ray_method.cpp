@@ -127,7 +127,28 @@ bool CurvedRayMap::hitsSurface(double x, double y) const
 
 bool CurvedRayMap::start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
-    return !hitsSurface(x, y) && aimedStart(x, y, sampler, start) && isStable(start, sampler);
+    const glm::dvec2 position(x, y);
+    bool drawn = false;
+    startMany(&position, 1, sampler, &start, &drawn);
+    return drawn;
+}
+
+void CurvedRayMap::startMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                             CurvedRayStart* starts, bool* drawn) const
+{
+    std::vector<CurvedRayStart*> aimed;
+    std::vector<std::size_t> pixels;  // the position of each aimed start
+    for (std::size_t i = 0; i < count; ++i) {
+        drawn[i] = false;
+        const glm::dvec2& p = positions[i];
+        if (!hitsSurface(p.x, p.y) && aimedStart(p.x, p.y, sampler, starts[i])) {
+            aimed.push_back(&starts[i]);
+            pixels.push_back(i);
+        }
+    }
+    std::unique_ptr<bool[]> stable(new bool[aimed.size()]);
+    areStable(aimed.data(), aimed.size(), sampler, stable.get());
+    for (std::size_t j = 0; j < aimed.size(); ++j) drawn[pixels[j]] = stable[j];
 }
 
 bool CurvedRayMap::isStable(CurvedRayStart& start, DistanceField::Sampler& sampler) const

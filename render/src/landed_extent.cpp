@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace ivis::render {
 namespace {
@@ -22,12 +24,17 @@ bool anyLanded(const RenderScene& scene, const CurvedRayMap& rays, const glm::iv
         [&](const tbb::blocked_range<int>& range, bool landed) {
             if (landed) return true;
             DistanceField::Sampler sampler = scene.distance().sampler();
+            std::vector<glm::dvec2> positions;
             for (int k = range.begin(); k != range.end(); ++k) {
                 const int along = stride / 2 + k * stride;
-                const double x = (axis == 0 ? index : along) + 0.5, y = (axis == 0 ? along : index) + 0.5;
-                CurvedRayStart start;
-                if (rays.start(x, y, sampler, start) && rays.landing(start, sampler).region == Region::Indirect) return true;
+                positions.emplace_back((axis == 0 ? index : along) + 0.5, (axis == 0 ? along : index) + 0.5);
             }
+            // Their rays traced together: the drawn ones' own rays are traced by the stability rule.
+            std::vector<CurvedRayStart> starts(positions.size());
+            std::unique_ptr<bool[]> drawn(new bool[positions.size()]);
+            rays.startMany(positions.data(), positions.size(), sampler, starts.data(), drawn.get());
+            for (std::size_t i = 0; i < positions.size(); ++i)
+                if (drawn[i] && rays.landing(starts[i], sampler).region == Region::Indirect) return true;
             return false;
         },
         [](bool a, bool b) { return a || b; });

@@ -6,6 +6,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <memory>
+
 namespace ivis::optimize {
 
 ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& camera, int resolution,
@@ -23,14 +26,19 @@ ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& c
         if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         render::DistanceField::Sampler sampler = scene.distance().sampler();
         Row& row = rows[std::size_t(y)];
+        std::vector<glm::dvec2> missed;  // the row's pixels whose view ray misses the surface
         for (int x = 0; x < resolution; ++x) {
-            MissedPixel pixel{float(x + 0.5), float(y + 0.5), {}};
-            const render::PixelMapping direct = screen.directHit(pixel.x, pixel.y);
-            if (direct.region == render::Region::Direct)
-                row.direct.push_back(direct.point);
-            else if (!curved || curved->start(pixel.x, pixel.y, sampler, pixel.start))
-                row.missed.push_back(pixel);
+            const render::PixelMapping direct = screen.directHit(x + 0.5, y + 0.5);
+            if (direct.region == render::Region::Direct) row.direct.push_back(direct.point);
+            else missed.emplace_back(x + 0.5, y + 0.5);
         }
+        // A curved-ray method keeps the pixels whose ray it draws, their rays traced together.
+        std::vector<render::CurvedRayStart> starts(missed.size());
+        std::unique_ptr<bool[]> drawn(new bool[missed.size()]);
+        if (curved) curved->startMany(missed.data(), missed.size(), sampler, starts.data(), drawn.get());
+        else std::fill(drawn.get(), drawn.get() + missed.size(), true);
+        for (std::size_t i = 0; i < missed.size(); ++i)
+            if (drawn[i]) row.missed.push_back({float(missed[i].x), float(missed[i].y), starts[i]});
     });
     if (core::interruptRequested()) throw Cancelled("view sampling cancelled");
     for (const Row& row : rows) {  // in row order: independent of the thread count

@@ -168,6 +168,10 @@ public:
     ///        method's stability rule.
     /// @return false when the view ray hits the surface or the pixel gets no ray (start.refusal says why)
     bool start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// @brief start() of each of @a count pixel positions into @a starts and @a drawn, the stability
+    ///        rule's rays traced together (areStable).
+    void startMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,
+                   CurvedRayStart* starts, bool* drawn) const;
     /// @brief Whether the view ray of pixel position (x, y) hits the surface (any face).
     bool hitsSurface(double x, double y) const;
     /// @brief The start of a pixel whose view ray misses the surface, without the stability rule:
