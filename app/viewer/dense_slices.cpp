@@ -1,6 +1,7 @@
 #include "dense_slices.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/vdb/surface_volume.h>
 
 #include <tbb/blocked_range.h>
@@ -191,7 +192,9 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.voxelSize = float(vdb::BoxLattice{slices.shownResolution}.voxelSize());
     slices.hasFineBand = bool(volume.farPhi);
     slices.reach = field.reach();
-    slices.localRadii = scene.localRadii();
+    for (const render::MethodInfo* info : render::methodRegistry())
+        for (const render::VertexArraySpec& array : info->vertexArrays)
+            slices.methodArrays[info->name].push_back(array.compute(scene));
     slices.unsignedDistance = field.isUnsigned();
     const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
     const openvdb::Vec3SGrid& farGradient = volume.farPhi ? *volume.farGradient : *volume.gradient;

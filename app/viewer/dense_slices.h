@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,7 +50,8 @@ struct DenseSlices {
     /// Closest triangle at shownResolution over the band's active box plus one voxel (-1 = none),
     /// read at the nearest voxel as DistanceField::Sampler::nearestTriangle.
     DenseBox<std::int32_t> triangles;
-    std::vector<float> localRadii;  ///< render::RenderScene::localRadii per vertex (inversevis-wrap's rings)
+    /// Each registered method's render::MethodInfo::vertexArrays, in order, by method name.
+    std::map<std::string, std::vector<std::vector<float>>> methodArrays;
     bool hasFineBand = false;  ///< the volume has a far field, so the band refines it near the surface
     float farVoxelSize = 0.0f; ///< voxel size of @a far
     float voxelSize = 0.0f;    ///< voxel size of @a band and @a triangles

@@ -26,7 +26,6 @@ GpuRenderer::GpuRenderer()
       mNormals(newName(glGenBuffers)),
       mIndices(newName(glGenBuffers)),
       mTriangleScalars(newName(glGenBuffers)),
-      mLocalRadii(newName(glGenBuffers)),
       mColormap(newName(glGenTextures))
 {
     shaders::checkIndirectSnippets();
@@ -83,9 +82,14 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
 {
     mHasVolume = false;
     mVolume.upload(slices);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, mLocalRadii.id());
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<std::size_t>(slices.localRadii.size() * sizeof(float), 16)),
-                 slices.localRadii.data(), GL_STATIC_DRAW);
+    mMethodBuffers.clear();
+    for (const auto& [method, arrays] : slices.methodArrays)
+        for (const std::vector<float>& array : arrays) {
+            GlBuffer& buffer = mMethodBuffers[method].emplace_back(newName(glGenBuffers));
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());
+            glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<std::size_t>(array.size() * sizeof(float), 16)),
+                         array.data(), GL_STATIC_DRAW);
+        }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(mField->mesh, 0.0f, fineVoxelSize));
     mVolumeScale = {fineVoxelSize, slices.reach};
@@ -164,7 +168,9 @@ void GpuRenderer::render(const GpuFrame& frame)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, mNormals.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, mIndices.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, mTriangleScalars.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, mLocalRadii.id());
+    if (const auto buffers = mMethodBuffers.find(method.name()); buffers != mMethodBuffers.end())
+        for (std::size_t k = 0; k < buffers->second.size(); ++k)
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(shaders::kFirstMethodBuffer + int(k)), buffers->second[k].id());
 
     // Direct part: every face, or only those turned away from the camera.
     if (method.directFaces() == core::FaceFilter::BackOnly) {

@@ -19,6 +19,7 @@
 #include <ivis/render/renderer.h>
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -77,7 +78,8 @@ private:
     GlBuffer mNormals;    ///< vec4(normal, NaN flag)
     GlBuffer mIndices;    ///< 3 uint per triangle
     GlBuffer mTriangleScalars;  ///< vec2(scalar, NaN flag) per data triangle, for a cell scalar
-    GlBuffer mLocalRadii; ///< 1 float per vertex (DenseSlices::localRadii)
+    /// Each method's vertex arrays (DenseSlices::methodArrays), by method name.
+    std::map<std::string, std::vector<GlBuffer>> mMethodBuffers;
     VolumeTextures mVolume;
     GlTexture mColormap;
     OffscreenTarget mTarget;

@@ -2,7 +2,6 @@
 
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/curved_ray_method.h>
-#include <ivis/render/neugebauer_method.h>
 #include <ivis/render/shading.h>
 #include <ivis/vdb/surface_volume.h>
 
@@ -18,7 +17,6 @@ namespace ivis::app {
 namespace {
 
 constexpr int kMaxHullSteps = 4096;  // the CPU's backward hull search is unbounded; 4096 is never reached in practice
-constexpr int kRingMaxSteps = 1000;
 
 glm::vec3 toFloat(const glm::dvec3& v) { return glm::vec3(v); }
 
@@ -65,23 +63,32 @@ glm::mat4 clipFromWorld(const core::CameraFrame& frame)
     return glm::mat4(projection * view);
 }
 
-/// Sets every parameter of @a method as its uniform: an int for whole numbers, a vec3 for three
+/// Sets @a v as the uniform of @a key: an int when @a integer, a vec2 or vec3 for two or three
 /// components, else a float or a float array.
-void setParameterUniforms(GlProgram& p, const render::Method& method)
+void setValueUniform(GlProgram& p, const std::string& key, const std::vector<float>& v, bool integer)
+{
+    const std::string name = parameterUniform(key);
+    if (integer)
+        p.set(name.c_str(), int(v[0]));
+    else if (v.size() == 2)
+        p.set(name.c_str(), glm::vec2(v[0], v[1]));
+    else if (v.size() == 3)
+        p.set(name.c_str(), glm::vec3(v[0], v[1], v[2]));
+    else if (v.size() == 1)
+        p.set(name.c_str(), v[0]);
+    else
+        p.setArray(name.c_str(), v.data(), int(v.size()));
+}
+
+/// Sets every parameter of @a method and every value it derives from the view as its uniform.
+void setMethodUniforms(GlProgram& p, const render::Method& method, const core::CameraFrame& camera,
+                       const core::TriangleMesh& mesh)
 {
     const render::ParameterValues values = method.values();
-    for (const render::ParameterSpec& spec : method.info().parameters) {
-        const std::string name = parameterUniform(spec.key);
-        const std::vector<float>& v = values.at(spec.key);
-        if (spec.integer)
-            p.set(name.c_str(), int(v[0]));
-        else if (v.size() == 3)
-            p.set(name.c_str(), glm::vec3(v[0], v[1], v[2]));
-        else if (v.size() == 1)
-            p.set(name.c_str(), v[0]);
-        else
-            p.setArray(name.c_str(), v.data(), int(v.size()));
-    }
+    for (const render::ParameterSpec& spec : method.info().parameters)
+        setValueUniform(p, spec.key, values.at(spec.key), spec.integer);
+    const render::ParameterValues viewValues = method.viewValues(camera, mesh);
+    for (const std::string& key : method.info().viewValueKeys) setValueUniform(p, key, viewValues.at(key), false);
 }
 
 /// The uniforms both passes read every frame: the look and the camera's position and heading.
@@ -174,7 +181,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
     p.set("uShadeIndirect", frame.shading.shadeIndirect);
     p.set("uIndirectShadows", frame.method->indirectRaysArriveFromOutside());
     const render::Method& method = *frame.method;
-    setParameterUniforms(p, method);
+    setMethodUniforms(p, method, camera, field.mesh);
     const render::CurvedRayMethod* curved = method.curved();
     // rays land within the method's landing threshold in voxels (render::landingEpsilon), the
     // wrap's own parameter `landing`
@@ -188,14 +195,6 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
         const core::Bounds3 hull = render::hullBounds(field.mesh, hullOffset, volume.fineVoxelSize);
         p.set("uHullLo", glm::vec3(hull.lo));
         p.set("uHullHi", glm::vec3(hull.hi));
-    }
-    if (const auto* ring = dynamic_cast<const render::NeugebauerMethod*>(&method)) {
-        const render::RingLayout rings = render::layoutRings(camera, field.mesh, ring->params());
-        p.set("uRingPixelCentre", glm::vec2(rings.centre));
-        p.set("uRingInner", float(rings.innerRadius));
-        p.set("uBackCentre", glm::vec2(rings.backCentre));
-        p.set("uBackRadius", float(rings.backRadius));
-        p.set("uRingMaxSteps", kRingMaxSteps);
     }
 }
 

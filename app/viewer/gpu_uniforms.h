@@ -38,8 +38,8 @@ void keepVolumeUniforms(UniformSet& scene, const DenseSlices& slices, float inte
 /// @brief Sets the mesh pass's per-frame uniforms: look, camera, clip transform, key light, shadows.
 void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera);
 
-/// @brief Sets the indirect pass's per-frame uniforms: look, camera and every parameter of the
-///        frame's method (each method's program reads its own).
+/// @brief Sets the indirect pass's per-frame uniforms: look, camera, and every parameter of the
+///        frame's method and every value it derives from the view (each method's program reads its own).
 /// @param field the surface (ring layout, hull box)
 void setIndirectUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera,
                          const core::SurfaceField& field, const VolumeScale& volume);

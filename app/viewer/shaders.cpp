@@ -69,10 +69,20 @@ std::string renderConstants()
     return text;
 }
 
+/// The bindings of the methods' vertex arrays, kMethodBuffer0 ... (macros: a layout qualifier of
+/// GLSL 4.30 takes literals only).
+std::string methodBufferBindings()
+{
+    std::string text;
+    for (int k = 0; k < kMaxMethodBuffers; ++k)
+        text += "#define kMethodBuffer" + std::to_string(k) + " " + std::to_string(kFirstMethodBuffer + k) + "\n";
+    return text;
+}
+
 /// The GLSL version line, render's constants, then the files @a names, in order.
 std::string compose(std::initializer_list<std::string> names)
 {
-    std::string source = "#version 430 core\n" + renderConstants();
+    std::string source = "#version 430 core\n" + renderConstants() + methodBufferBindings();
     for (const std::string& name : names) source += file(name);
     return source;
 }
@@ -93,10 +103,14 @@ std::string outlineFragment() { return compose({"srgb.glsl", "outline_fragment.g
 
 void checkIndirectSnippets()
 {
-    for (const render::MethodInfo* info : render::methodRegistry())
+    for (const render::MethodInfo* info : render::methodRegistry()) {
         if (render::makeMethod(info->name)->drawsIndirect() && !findFile("method_" + info->name + ".glsl"))
             throw GlError("the method " + info->name + " has no viewer shader: assets/shaders/method_" + info->name +
                           ".glsl is missing (or not embedded by app/CMakeLists.txt)");
+        if (info->vertexArrays.size() > std::size_t(kMaxMethodBuffers))
+            throw GlError("the method " + info->name + " has more vertex arrays than the viewer binds (" +
+                          std::to_string(kMaxMethodBuffers) + ", app/viewer/shaders.h)");
+    }
 }
 
 std::string indirectFragment(const std::string& method)

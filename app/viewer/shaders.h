@@ -9,6 +9,12 @@
 
 namespace ivis::app::shaders {
 
+/// @brief The storage-buffer binding of a method's first vertex array (render::MethodInfo::vertexArrays);
+///        its k-th is bound at kFirstMethodBuffer + k, which its snippet names kMethodBuffer<k>.
+inline constexpr int kFirstMethodBuffer = 4;
+/// @brief Vertex arrays a method may have.
+inline constexpr int kMaxMethodBuffers = 4;
+
 /// @brief Vertex shader of the mesh pass: attribute 0 = (position, scalar), 1 = (normal, NaN flag).
 std::string meshVertex();
 /// @brief Fragment shader of the mesh pass: colour map, key light + ambient, sphere-traced shadows.
@@ -18,8 +24,8 @@ std::string fullScreenVertex();
 /// @brief Fragment shader of the outline pass (full screen, image load/store, no outputs).
 std::string outlineFragment();
 /// @brief Checks that every registered method that draws an indirect part has its snippet
-///        method_<name>.glsl embedded.
-/// @throw GlError naming the first method without one
+///        method_<name>.glsl embedded, and no method more vertex arrays than kMaxMethodBuffers.
+/// @throw GlError naming the first method that fails
 void checkIndirectSnippets();
 /// @brief Fragment shader of the full-screen pass for the method named @a method: the shared
 ///        snippets, then method_<method>.glsl (which defines indirectRay), then indirect_main.glsl.

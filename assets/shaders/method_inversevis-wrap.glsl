@@ -4,7 +4,7 @@ uniform float uWrapSpeed;
 uniform float uWrapTilt;
 uniform float uRingScale;
 uniform float uStableShift;
-layout(std430, binding = 4) readonly buffer LocalRadii { float localRadius[]; };  // render::vertexLocalRadii
+layout(std430, binding = kMethodBuffer0) readonly buffer LocalRadii { float localRadius[]; };  // render::vertexLocalRadii
 
 // render::findClosestApproach: the point of the view ray closest to the surface, within the hull,
 // centred in the ray's valley where phi stays within a voxel of its least (the k* constants are

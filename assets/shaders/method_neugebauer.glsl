@@ -7,10 +7,10 @@ uniform float uRingWidth;       // r2 - r1 in image half-heights (render::RingPa
 uniform vec2 uBackCentre;
 uniform float uBackRadius;
 uniform vec3 uRingCentre;       // the centre c the ring rays start from
-uniform int uRingMaxSteps;
 uniform float uInteriorStep;    // largest trusted step where phi < 0 (inside a closed mesh)
 
 const float kPi = 3.14159265358979;
+const int kRingMaxSteps = 1000;  // the sphere trace's step cap (the CPU intersects the BVH)
 
 // The ring map's CPU reference intersects its straight ray with the BVH. Here the ray was
 // sphere-traced to within uLanding voxels of the surface at p: intersect it exactly (Moller-Trumbore) with
@@ -81,7 +81,7 @@ bool indirectRay(vec2 pixel, out vec3 colour)
     vec3 direction;
     if (!ringRayDirection(pixel, direction)) return false;
     float t = 0.0;
-    for (int step = 0; step < uRingMaxSteps; ++step) {
+    for (int step = 0; step < kRingMaxSteps; ++step) {
         vec3 p = uRingCentre + t * direction;
         if (any(greaterThan(abs(p), vec3(uBoxHalf)))) return false;
         float phi = phiAt(p);

@@ -2,6 +2,7 @@
 
 #include <ivis/core/number_text.h>
 #include <ivis/render/landed_extent.h>
+#include <ivis/render/local_radius.h>
 #include <ivis/render/render_scene.h>
 
 #include <glm/geometric.hpp>
@@ -30,12 +31,19 @@ float localRadiusNear(const RenderScene& scene, const glm::vec3& p, double bound
     const core::TrianglePoint closest = scene.bvh().closestPoint(glm::dvec3(p), bound, triangle);
     if (triangle < 0) return -1.0f;
     const auto& corners = scene.mesh().triangles[std::size_t(triangle)];
-    const std::vector<float>& radii = scene.localRadii();
+    const std::vector<float>& radii = wrapLocalRadii(scene);
     return float(closest.barycentric.x) * radii[corners[0]] + float(closest.barycentric.y) * radii[corners[1]] +
            float(closest.barycentric.z) * radii[corners[2]];
 }
 
 }  // namespace
+
+const std::vector<float>& wrapLocalRadii(const RenderScene& scene)
+{
+    return scene.derived<std::vector<float>>("inversevis-wrap local radii", [](const RenderScene& s) {
+        return vertexLocalRadii(s.mesh(), s.bvh(), s.normals(), 1.0f);
+    });
+}
 
 ParameterValues InverseVisWrapMethod::values() const
 {
@@ -165,6 +173,7 @@ const MethodInfo& inverseVisWrapMethodInfo()
                 .ofTheTracer()};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";
+        i.vertexArrays = {{"local radii", [](const RenderScene& scene) { return wrapLocalRadii(scene); }}};
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;
             launch.speed = v.at("wrap_speed")[0];

@@ -31,6 +31,15 @@ ParameterValues NeugebauerMethod::values() const
     return {{"ring_centre", {mParams.centre.x, mParams.centre.y, mParams.centre.z}}, {"ring_width", {mParams.ringWidth}}};
 }
 
+ParameterValues NeugebauerMethod::viewValues(const core::CameraFrame& frame, const core::TriangleMesh& mesh) const
+{
+    const RingLayout rings = layoutRings(frame, mesh, mParams);
+    return {{"ring_pixel_centre", {float(rings.centre.x), float(rings.centre.y)}},
+            {"ring_inner", {float(rings.innerRadius)}},
+            {"back_centre", {float(rings.backCentre.x), float(rings.backCentre.y)}},
+            {"back_radius", {float(rings.backRadius)}}};
+}
+
 std::unique_ptr<IndirectMap> NeugebauerMethod::indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const
 {
     return std::make_unique<RingMap>(scene, frame, mParams);
@@ -50,6 +59,7 @@ const MethodInfo& neugebauerMethodInfo()
         i.parameters = {{"ring_centre", "ring map centre x y z (normalised units)", {0.0f, 0.0f, 0.0f}, -2.5f, 2.5f},
                         {"ring_width", "ring width r2 - r1 (fraction of the image half-height; at most 0.9, so that a framed "
                          "picture keeps room for the object)", {0.3f}, 0.01f, 0.9f}};
+        i.viewValueKeys = {"ring_pixel_centre", "ring_inner", "back_centre", "back_radius"};
         i.create = [](const ParameterValues& v) {
             RingParams params;
             const std::vector<float>& c = v.at("ring_centre");

@@ -7,6 +7,7 @@
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/energy.h>
 #include <ivis/render/curved_ray_method.h>
+#include <ivis/render/inversevis_wrap_method.h>
 #include <ivis/render/method_registry.h>
 
 #include <glm/geometric.hpp>
@@ -64,7 +65,7 @@ double landingBesideSeed(const std::string& name, float radii)
             if (triangle < 0) return 0.0;
             const auto& corners = scene.mesh().triangles[std::size_t(triangle)];
             float radius = 0.0f;
-            for (int k = 0; k < 3; ++k) radius += float(closest.barycentric[k]) * scene.localRadii()[corners[k]];
+            for (int k = 0; k < 3; ++k) radius += float(closest.barycentric[k]) * render::wrapLocalRadii(scene)[corners[k]];
             const float height = glm::length(start.seed - glm::vec3(closest.point));
             ++landed;
             if (glm::length(landing.point.position - glm::vec3(closest.point)) <= height + radii * radius) ++beside;

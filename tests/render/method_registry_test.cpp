@@ -34,6 +34,8 @@ TEST(MethodRegistry, NamesAndParameterKeysAreUniqueAndDefaultsWithinBounds)
         EXPECT_EQ(method->name(), info->name);
         EXPECT_EQ(method->values().size(), info->parameters.size()) << info->name;
         for (const ParameterSpec& spec : info->parameters) EXPECT_EQ(method->values().at(spec.key), spec.defaults);
+        for (const std::string& key : info->viewValueKeys)  // the viewer reads both as uniforms, by key
+            EXPECT_EQ(info->parameter(key), nullptr) << info->name << " " << key;
         // The analytic gradient is the curved rays' tangent-linear one, for the parameters they launch with.
         const bool launchesWithOptimised = method->curvedRays() && !optimisedParameters(*method).empty();
         EXPECT_EQ(launchesWithOptimised, info->tangentLinearGradient) << info->name;

@@ -4,6 +4,7 @@
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/neugebauer_map.h>
+#include <ivis/render/neugebauer_method.h>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -227,6 +228,24 @@ TEST(NeugebauerMap, BackDiscSitsUpperLeftAndLooksAlongTheView)
         ASSERT_TRUE(ringRayDirection(layout, frame, layout.backCentre + glm::dvec2(0.999 * R, 0.0), direction));
         EXPECT_NEAR(glm::dot(glm::dvec3(direction), n), 0.0, 0.01) << s.name;
         EXPECT_LT(glm::dot(glm::dvec3(direction), frame.right()), -0.99) << s.name;
+    }
+}
+
+// The values the viewer's ring program reads each frame (Method::viewValues) are the CPU's layout.
+TEST(NeugebauerMap, ViewValuesAreTheLayoutTheRingMapUses)
+{
+    for (const RingCase& s : setups()) {
+        const core::CameraFrame frame(s.camera, s.width, s.height);
+        const RingLayout layout = layoutRings(frame, *s.mesh, s.params);
+        const NeugebauerMethod method(s.params);
+        const ParameterValues values = method.viewValues(frame, *s.mesh);
+        ASSERT_EQ(values.size(), method.info().viewValueKeys.size()) << s.name;
+        for (const std::string& key : method.info().viewValueKeys) EXPECT_EQ(values.count(key), 1u) << key;
+        EXPECT_EQ(values.at("ring_pixel_centre"), (std::vector<float>{float(layout.centre.x), float(layout.centre.y)}));
+        EXPECT_EQ(values.at("ring_inner"), std::vector<float>{float(layout.innerRadius)});
+        EXPECT_EQ(values.at("back_centre"),
+                  (std::vector<float>{float(layout.backCentre.x), float(layout.backCentre.y)}));
+        EXPECT_EQ(values.at("back_radius"), std::vector<float>{float(layout.backRadius)});
     }
 }
 

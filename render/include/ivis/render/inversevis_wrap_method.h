@@ -24,6 +24,10 @@ struct WrapLaunch {
     float stableShift = 0.1f;  ///< largest |P(inner) + P(outer) - 2 P| over the neighbouring pixels' rays (else not drawn)
 };
 
+/// @brief The local radius of each vertex of @a scene's mesh (vertexLocalRadii capped at the
+///        normalised half-extent 1), which sizes the rings: made once per scene (RenderScene::derived).
+const std::vector<float>& wrapLocalRadii(const RenderScene& scene);
+
 /// @brief Description of `inversevis-wrap`: wrap_speed, wrap_tilt, ring_scale, stable_shift (the
 ///        readability parameter), landing, hull_offset, step, max_steps; none is optimised by the ascent
 ///        (each ray's speed and stability are set when it is aimed, docs/optimisation.md).

@@ -61,6 +61,14 @@ struct LineSearch {
     double tolerance = 0.01;     ///< final bracket length
 };
 
+/// @brief A per-vertex array a method derives from its scene alone (the wrap's local radii): the
+///        viewer uploads it once per scene and the method's shader reads it as a storage buffer
+///        (kMethodBuffer0, 1, ... in the order of MethodInfo::vertexArrays: app/viewer/shaders.h).
+struct VertexArraySpec {
+    std::string name;  ///< what it holds, for messages
+    std::function<std::vector<float>(const RenderScene&)> compute;  ///< one value per vertex of the scene's mesh
+};
+
 /// @brief Everything the command line, the JSON writer, the optimiser and the viewer know of a method.
 struct MethodInfo {
     std::string name;                     ///< command-line name, e.g. "inversevis"
@@ -78,6 +86,11 @@ struct MethodInfo {
     /// more rays (the wrap's stable_shift): the optimisation's readability step sets it to the
     /// loosest value whose picture stays coherent (optimize/readability.h); empty: none.
     std::string readabilityParameter;
+    /// The keys of what Method::viewValues() derives from each view (the viewer's programs read
+    /// each as a uniform, as the parameters); empty: none.
+    std::vector<std::string> viewValueKeys;
+    /// The per-vertex arrays its viewer shader reads; empty: none.
+    std::vector<VertexArraySpec> vertexArrays;
     /// Creates the method from complete, validated values.
     std::function<std::shared_ptr<const Method>(const ParameterValues&)> create;
 
@@ -108,6 +121,12 @@ public:
     virtual const MethodInfo& info() const = 0;
     /// @brief Every parameter's value, keyed as info().parameters.
     virtual ParameterValues values() const = 0;
+    /// @brief What this method derives from the view @a frame of @a mesh (the ring map's layout),
+    ///        keyed as info().viewValueKeys; empty by default.
+    virtual ParameterValues viewValues(const core::CameraFrame& /*frame*/, const core::TriangleMesh& /*mesh*/) const
+    {
+        return {};
+    }
     /// @brief Which faces the straight view rays see.
     virtual core::FaceFilter directFaces() const { return core::FaceFilter::Any; }
     /// @brief The map of the pixels that miss the surface for one view; null when they stay background.

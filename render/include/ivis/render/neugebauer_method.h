@@ -18,6 +18,8 @@ public:
     explicit NeugebauerMethod(const RingParams& params) : mParams(params) {}
     const MethodInfo& info() const override { return neugebauerMethodInfo(); }
     ParameterValues values() const override;
+    /// @brief The rings' layout (layoutRings): ring_pixel_centre, ring_inner, back_centre, back_radius.
+    ParameterValues viewValues(const core::CameraFrame& frame, const core::TriangleMesh& mesh) const override;
     bool indirectRaysArriveFromOutside() const override { return false; }
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     bool drawsIndirect() const override { return true; }

@@ -6,11 +6,14 @@
 #include <ivis/core/surface_field.h>
 #include <ivis/core/triangle_bvh.h>
 #include <ivis/render/distance_field.h>
-#include <ivis/render/local_radius.h>
 #include <ivis/render/surface_point.h>
 #include <ivis/vdb/surface_volume.h>
 
+#include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 namespace ivis::render {
@@ -32,22 +35,37 @@ public:
     const core::TriangleBvh& bvh() const { return mBvh; }
     /// @brief Area-weighted vertex normals of the mesh (for smooth shading).
     const std::vector<glm::vec3>& normals() const { return mNormals; }
-    /// @brief vertexLocalRadii() of the mesh capped at the normalised half-extent 1, computed on
-    ///        first use (thread-safe).
-    const std::vector<float>& localRadii() const
+    /// @brief What @a make derives from this scene (a method's own data, such as the wrap's local
+    ///        radii), made on first use and kept under @a key; thread-safe (other callers of the
+    ///        same key wait while it is made).
+    template <class T>
+    const T& derived(const std::string& key, const std::function<T(const RenderScene&)>& make) const
     {
-        std::call_once(mLocalRadiiOnce, [this] { mLocalRadii = vertexLocalRadii(mesh(), mBvh, mNormals, 1.0f); });
-        return mLocalRadii;
+        std::shared_ptr<Derived> entry;
+        {
+            const std::lock_guard<std::mutex> lock(mDerivedMutex);
+            std::shared_ptr<Derived>& slot = mDerived[key];
+            if (!slot) slot = std::make_shared<Derived>();
+            entry = slot;
+        }
+        std::call_once(entry->once, [&] { entry->value = std::make_shared<const T>(make(*this)); });
+        return *static_cast<const T*>(entry->value.get());
     }
 
 private:
+    /// One derived value, made once.
+    struct Derived {
+        std::once_flag once;
+        std::shared_ptr<const void> value;
+    };
+
     const core::SurfaceField& mField;
     const vdb::SurfaceVolume& mVolume;
     DistanceField mDistance;
     core::TriangleBvh mBvh;
     std::vector<glm::vec3> mNormals;
-    mutable std::once_flag mLocalRadiiOnce;
-    mutable std::vector<float> mLocalRadii;
+    mutable std::mutex mDerivedMutex;
+    mutable std::map<std::string, std::shared_ptr<Derived>> mDerived;
 };
 
 }  // namespace ivis::render
