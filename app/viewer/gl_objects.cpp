@@ -34,8 +34,8 @@ GLuint compileShader(const char* program, GLenum type, const char* source)
         std::vector<char> log(std::size_t(std::max(length, 1)), '\0');
         glGetShaderInfoLog(shader, length, nullptr, log.data());
         glDeleteShader(shader);
-        throw GlError(std::string("shader '") + program + "' (" + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                      ") does not compile: " + log.data());
+        const char* stage = type == GL_VERTEX_SHADER ? "vertex" : type == GL_FRAGMENT_SHADER ? "fragment" : "compute";
+        throw GlError(std::string("shader '") + program + "' (" + stage + ") does not compile: " + log.data());
     }
     return shader;
 }
@@ -85,12 +85,20 @@ GlProgram::GlProgram(const char* name, const char* vertexSource, const char* fra
         glDeleteShader(vertex);
         throw;
     }
+    link(name, {vertex, fragment});
+}
+
+GlProgram::GlProgram(const char* name, const char* computeSource)
+{
+    link(name, {compileShader(name, GL_COMPUTE_SHADER, computeSource)});
+}
+
+void GlProgram::link(const char* name, std::initializer_list<GLuint> shaders)
+{
     mProgram = GlHandle<detail::deleteProgram>(glCreateProgram());
-    glAttachShader(mProgram.id(), vertex);
-    glAttachShader(mProgram.id(), fragment);
+    for (GLuint shader : shaders) glAttachShader(mProgram.id(), shader);
     glLinkProgram(mProgram.id());
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
+    for (GLuint shader : shaders) glDeleteShader(shader);
     GLint ok = 0;
     glGetProgramiv(mProgram.id(), GL_LINK_STATUS, &ok);
     if (!ok) {

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -83,6 +84,9 @@ public:
     GlProgram() = default;
     /// @brief Compiles and links; throws GlError with the driver's log on failure.
     GlProgram(const char* name, const char* vertexSource, const char* fragmentSource);
+    /// @brief A compute program (the shader tests run the snippets' functions in one); throws
+    ///        GlError with the driver's log on failure.
+    GlProgram(const char* name, const char* computeSource);
     GLuint id() const { return mProgram.id(); }
     void set(const char* name, int value);
     void set(const char* name, bool value) { set(name, int(value)); }
@@ -95,6 +99,8 @@ public:
     void setArray(const char* name, const float* values, int count);
 
 private:
+    /// Links @a shaders (deleting them) into mProgram; throws GlError with the driver's log on failure.
+    void link(const char* name, std::initializer_list<GLuint> shaders);
     GLint location(const char* name);
     GlHandle<detail::deleteProgram> mProgram;
     std::unordered_map<std::string, GLint> mLocations;

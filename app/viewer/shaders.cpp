@@ -113,11 +113,13 @@ void checkIndirectSnippets()
     }
 }
 
-std::string indirectFragment(const std::string& method)
+std::string indirectFunctions(const std::string& method)
 {
     return compose({"distance_field.glsl", "mesh_buffers.glsl", "srgb.glsl", "colour_map.glsl", "shading.glsl",
-                    "camera_ray.glsl", "landing.glsl",
-                    "hull_search.glsl", "curved_ray.glsl", "method_" + method + ".glsl", "indirect_main.glsl"});
+                    "camera_ray.glsl", "landing.glsl", "hull_search.glsl", "curved_ray.glsl",
+                    "method_" + method + ".glsl"});
 }
+
+std::string indirectFragment(const std::string& method) { return indirectFunctions(method) + file("indirect_main.glsl"); }
 
 }  // namespace ivis::app::shaders

@@ -13,7 +13,7 @@ namespace ivis::app::shaders {
 ///        its k-th is bound at kFirstMethodBuffer + k, which its snippet names kMethodBuffer<k>.
 inline constexpr int kFirstMethodBuffer = 4;
 /// @brief Vertex arrays a method may have.
-inline constexpr int kMaxMethodBuffers = 4;
+inline constexpr int kMaxMethodBuffers = 2;
 
 /// @brief Vertex shader of the mesh pass: attribute 0 = (position, scalar), 1 = (normal, NaN flag).
 std::string meshVertex();
@@ -27,9 +27,14 @@ std::string outlineFragment();
 ///        method_<name>.glsl embedded, and no method more vertex arrays than kMaxMethodBuffers.
 /// @throw GlError naming the first method that fails
 void checkIndirectSnippets();
-/// @brief Fragment shader of the full-screen pass for the method named @a method: the shared
-///        snippets, then method_<method>.glsl (which defines indirectRay), then indirect_main.glsl.
+/// @brief Fragment shader of the full-screen pass for the method named @a method: indirectFunctions(),
+///        then indirect_main.glsl.
 /// @throw GlError when no snippet method_<method>.glsl was embedded
 std::string indirectFragment(const std::string& method);
+/// @brief The functions of the full-screen pass for the method named @a method, without a main:
+///        the shared snippets, then method_<method>.glsl (which defines indirectRay). The shader
+///        tests call them from a compute shader (tests/shader/).
+/// @throw GlError when no snippet method_<method>.glsl was embedded
+std::string indirectFunctions(const std::string& method);
 
 }  // namespace ivis::app::shaders

@@ -84,7 +84,7 @@ float localRadiusNear(vec3 p)
     return barycentric.x * localRadius[v.x] + barycentric.y * localRadius[v.y] + barycentric.z * localRadius[v.z];
 }
 
-// The launch at ring coordinate @a t (InverseVisWrapMethod::aim's launchAt): alpha = speed t (2 - t)
+// The launch at ring coordinate @a t (WrapLaunch::alphaAt and directionAt): alpha = speed t (2 - t)
 // along the view direction's tangential part, tilted outward by tilt t.
 vec3 wrapLaunch(float t, vec3 along, vec3 outward)
 {

@@ -58,14 +58,6 @@ ParameterValues InverseVisWrapMethod::values() const
 
 namespace {
 
-/// The wrap's launch at ring coordinate t: alpha = speed t (2 - t) along the view direction's part
-/// tangential to the hull, tilted outward by tilt t.
-float alphaAt(const WrapLaunch& launch, float t) { return launch.speed * t * (2.0f - t); }
-glm::vec3 directionAt(const WrapLaunch& launch, const glm::vec3& along, const glm::vec3& outward, float t)
-{
-    return glm::normalize(along + launch.tilt * t * outward);
-}
-
 /// The unit outward normal of the hull at a start's seed (zero where the gradient vanishes).
 glm::vec3 outwardAt(const CurvedRayStart& start)
 {
@@ -98,8 +90,8 @@ bool InverseVisWrapMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
         return false;
     }
     const glm::vec3 along = glm::normalize(start.tangent);
-    start.launchDirection = directionAt(mLaunch, along, outward, ring.coordinate);
-    start.alpha = alphaAt(mLaunch, ring.coordinate);
+    start.launchDirection = mLaunch.directionAt(along, outward, ring.coordinate);
+    start.alpha = mLaunch.alphaAt(ring.coordinate);
     return true;
 }
 
@@ -118,8 +110,8 @@ int InverseVisWrapMethod::stabilityProbes(const CurvedRayStart& start, CurvedRay
         const float t = ring.coordinate + shift / ring.width;
         CurvedRayStart& probe = probes[k];
         probe.seed = start.seed + shift * outward;
-        probe.alpha = alphaAt(mLaunch, t);
-        probe.launchDirection = directionAt(mLaunch, along, outward, t);
+        probe.alpha = mLaunch.alphaAt(t);
+        probe.launchDirection = mLaunch.directionAt(along, outward, t);
     }
     return 2;
 }

@@ -86,5 +86,7 @@ def test_ctrl_c_raises_keyboard_interrupt_within_a_second(tmp_path):
     assert done.returncode == 0, done.stderr
     words = done.stdout.split()
     assert words[0] == "interrupted", done.stdout
-    assert float(words[-1]) < 2.5  # the signal at 1 s, the render stopped within a second or so
+    # The signal at 1 s; the render alone takes half a minute or more. Stopped within a second or so
+    # (measured 1.4-1.7 s), allowing for a loaded 2-core machine (2.8 s seen beside the viewer's tests).
+    assert float(words[-1]) < 5.0
     assert not (tmp_path / "p.png").exists()

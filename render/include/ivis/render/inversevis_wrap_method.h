@@ -9,6 +9,8 @@
 
 #include <ivis/render/curved_ray_method.h>
 
+#include <glm/geometric.hpp>
+
 namespace ivis::render {
 
 /// @brief The stability rule's probes are seeded this far (normalised units) further in and out
@@ -22,6 +24,15 @@ struct WrapLaunch {
     float speed = 2.5f;       ///< alpha = speed * t (2 - t): fastest, and changing least, at the outer edge
     float tilt = 0.5f;        ///< launch direction: view direction + tilt * t * grad phi (normalised)
     float stableShift = 0.1f;  ///< largest |P(inner) + P(outer) - 2 P| over the neighbouring pixels' rays (else not drawn)
+
+    /// @brief The launch speed at ring coordinate @a t: speed t (2 - t).
+    float alphaAt(float t) const { return speed * t * (2.0f - t); }
+    /// @brief The launch direction at ring coordinate @a t: @a along (the view direction's part
+    ///        tangential to the hull) tilted outward by tilt t along @a outward, normalised.
+    glm::vec3 directionAt(const glm::vec3& along, const glm::vec3& outward, float t) const
+    {
+        return glm::normalize(along + tilt * t * outward);
+    }
 };
 
 /// @brief The local radius of each vertex of @a scene's mesh (vertexLocalRadii capped at the
