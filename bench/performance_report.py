@@ -172,10 +172,10 @@ volume 200 cached; the paper reports 35-120 s on a GPU). The default method asce
 for stem, (run, report) in paper.items():
     print(f"| {stem} | {report['seconds']:.0f} s | {run['wall_seconds']:.0f} s | {report['evaluations']:,} |")
 print(f"""
-Each evaluation traces about as many curved rays as a 1000 x 1000 picture has indirect pixels;
-the view's direct hits and hull seeds are computed once per view (`ViewSamples`).
-`--ascent-res 100` ascends each view's parameters on 100^2 rays and measures the views on 1000^2
-rays ([optimisation.md](optimisation.md)).
+Each evaluation maps the view's 1000^2 pixels as the method's 1000 x 1000 picture does (adaptive
+image sampling, `ViewSamples`): it costs about what that picture costs. For a method with
+parameters to ascend, `--ascent-res 100` ascends them on 100^2 rays and measures the views on
+1000^2 rays ([optimisation.md](optimisation.md)).
 
 ## The viewer without a GPU (`bench/viewer_frame_rates.sh`)
 

@@ -1,6 +1,6 @@
-// The measures of a picture from its own layers equal the evaluator's trace of the same view at
-// the same pixels: the full trace's picture gives the very same figures, the adaptive picture's
-// the same to a voxel or so.
+// The measures of a picture from its own layers equal the evaluator's energy of the same view at
+// the same pixels: the default picture gives the very same figures (the evaluator maps the wrap's
+// pixels adaptively, as the picture does), the full trace's the same to a voxel or so.
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>
@@ -14,7 +14,7 @@
 namespace ivis::optimize {
 namespace {
 
-TEST(PictureMeasure, TheFullTracesPictureMeasuresAsTheEvaluatorsTrace)
+TEST(PictureMeasure, ThePictureMeasuresAsTheEvaluatorMapsIt)
 {
     const auto& fixture = test::vesselScene();
     EnergyOptions options;
@@ -32,7 +32,8 @@ TEST(PictureMeasure, TheFullTracesPictureMeasuresAsTheEvaluatorsTrace)
         look.width = look.height = options.resolution;
         look.method = method;
         look.legend = false;
-        look.adaptive.enabled = false;  // every pixel's own trace, as the evaluator's
+        // The default picture: the wrap's pixels sampled adaptively, as the evaluator maps them
+        // (ViewSamples), every other method's pixels each traced alone.
         const render::RenderResult picture = render::renderImage(*fixture.scene, camera, look);
         const EnergyValue traced = evaluator.evaluate(camera, method);
         const EnergyValue measured = measurePicture(evaluator, picture.layers);
@@ -45,9 +46,9 @@ TEST(PictureMeasure, TheFullTracesPictureMeasuresAsTheEvaluatorsTrace)
         EXPECT_DOUBLE_EQ(measured.reveal.total, traced.reveal.total);
         EXPECT_EQ(measured.seenVoxels, traced.seenVoxels);
 
-        look.adaptive.enabled = true;  // the default picture: its landings within a tenth of a voxel
-        const EnergyValue adaptive = measurePicture(evaluator, render::renderImage(*fixture.scene, camera, look).layers);
-        EXPECT_NEAR(adaptive.energy, traced.energy, 2.0 / double(evaluator.surfaceVoxels()->count()));
+        look.adaptive.enabled = false;  // every pixel's own trace: its landings within a tenth of a voxel
+        const EnergyValue full = measurePicture(evaluator, render::renderImage(*fixture.scene, camera, look).layers);
+        EXPECT_NEAR(full.energy, traced.energy, 2.0 / double(evaluator.surfaceVoxels()->count()));
     }
 }
 

@@ -66,9 +66,17 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
     const ScreenMap screen(mScene, samples.frame(), method);
     const CurvedRayMap* curved = screen.curvedRays();
     const std::vector<MissedPixel>& missed = samples.missed();
+    auto count = [&](const SurfacePoint& point, Tally& tally) {  // an indirect pixel showing point
+        ++tally.pixelsIndirect;
+        if (mSurface)
+            tally.allKeys.push_back(mSurface->keyOf(point.position));
+        else
+            tally.indirect += importance(point);
+    };
     // Fixed blocks summed in block order: the result does not depend on the thread count.
     const std::size_t blockSize = 64, blocks = (missed.size() + blockSize - 1) / blockSize;
-    std::vector<Tally> tallies(blocks);
+    std::vector<Tally> tallies(blocks + 1);  // the last: the samples' own mapped pixels
+    for (const SurfacePoint& point : samples.indirect()) count(point, tallies.back());
     tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) {
         if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown below)
         DistanceField::Sampler sampler = mScene.distance().sampler();
@@ -82,14 +90,8 @@ EnergyValue EnergyEvaluator::evaluate(const ViewSamples& samples, const MethodPt
         } else {
             for (std::size_t i = begin; i < end; ++i) mappings[i - begin] = screen.indirect(missed[i].x, missed[i].y, sampler);
         }
-        for (const PixelMapping& m : mappings) {
-            if (m.region != Region::Indirect) continue;
-            ++tally.pixelsIndirect;
-            if (mSurface)
-                tally.allKeys.push_back(mSurface->keyOf(m.point.position));
-            else
-                tally.indirect += importance(m.point);
-        }
+        for (const PixelMapping& m : mappings)
+            if (m.region == Region::Indirect) count(m.point, tally);
     });
     if (core::interruptRequested()) throw Cancelled("energy evaluation cancelled");
     EnergyValue value;

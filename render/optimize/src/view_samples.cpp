@@ -11,12 +11,54 @@
 
 namespace ivis::optimize {
 
+namespace {
+
+/// The direct and indirect surface points of every pixel, mapped as the picture maps them: tile by
+/// tile (render::ScreenMap::mapTile), in tile order.
+void mapAllPixels(const render::RenderScene& scene, const render::ScreenMap& screen, int resolution,
+                  std::vector<render::SurfacePoint>& direct, std::vector<render::SurfacePoint>& indirect)
+{
+    const int tilesPerSide = (resolution + render::kAdaptiveTileSize - 1) / render::kAdaptiveTileSize;
+    struct Tile {
+        std::vector<render::SurfacePoint> direct, indirect;
+    };
+    std::vector<Tile> tiles(std::size_t(tilesPerSide) * std::size_t(tilesPerSide));
+    tbb::parallel_for(0, int(tiles.size()), [&](int t) {
+        if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown by the caller)
+        render::PixelTile tile;
+        tile.x0 = (t % tilesPerSide) * render::kAdaptiveTileSize;
+        tile.y0 = (t / tilesPerSide) * render::kAdaptiveTileSize;
+        tile.width = std::min(render::kAdaptiveTileSize, resolution - tile.x0);
+        tile.height = std::min(render::kAdaptiveTileSize, resolution - tile.y0);
+        render::DistanceField::Sampler sampler = scene.distance().sampler();
+        std::vector<render::PixelMapping> mappings(std::size_t(tile.width) * std::size_t(tile.height));
+        render::TileCounts counts;
+        screen.mapTile(tile, {0.5, 0.5}, render::AdaptiveSampling{}, sampler, mappings.data(), counts);
+        Tile& out = tiles[std::size_t(t)];
+        for (const render::PixelMapping& m : mappings)
+            if (m.region == render::Region::Direct) out.direct.push_back(m.point);
+            else if (m.region == render::Region::Indirect) out.indirect.push_back(m.point);
+    });
+    for (const Tile& tile : tiles) {  // in tile order: independent of the thread count
+        direct.insert(direct.end(), tile.direct.begin(), tile.direct.end());
+        indirect.insert(indirect.end(), tile.indirect.begin(), tile.indirect.end());
+    }
+}
+
+}  // namespace
+
 ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& camera, int resolution,
                          const render::MethodPtr& method)
     : mFrame(camera, resolution, resolution), mMethod(method)
 {
     const render::ScreenMap screen(scene, mFrame, method);
     const render::CurvedRayMap* curved = screen.curvedRays();
+    if (curved && render::optimisedParameters(*method).empty()) {
+        mMapped = true;
+        mapAllPixels(scene, screen, resolution, mDirect, mIndirect);
+        if (core::interruptRequested()) throw Cancelled("view sampling cancelled");
+        return;
+    }
     struct Row {
         std::vector<render::SurfacePoint> direct;
         std::vector<MissedPixel> missed;

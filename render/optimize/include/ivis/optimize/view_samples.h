@@ -1,7 +1,9 @@
 /// @file view_samples.h
 /// @brief What an energy evaluation of one view computes once for every parameter value: which
 ///        pixels see the surface directly and where, and for the others the start of their
-///        indirect ray (the hull seed of a curved ray).
+///        indirect ray (the hull seed of a curved ray). For a method the ascent moves nothing of
+///        (the wrap) the indirect pixels are mapped at once, as the picture maps them (adaptive
+///        image sampling, render::ScreenMap::mapTile): the energy is then the picture's.
 /// @note Valid for the parameters it was made with up to the ones an ascent changes (alpha, the
 ///       alpha profile, the mirror's w): see compatibleWith().
 #pragma once
@@ -21,7 +23,8 @@ struct MissedPixel {
 /// @brief Per-view samples at resolution^2 pixel centres, in row order.
 class ViewSamples {
 public:
-    /// @brief Maps every pixel's view ray; for curved-ray methods keeps only the pixels that meet the hull.
+    /// @brief Maps every pixel's view ray; for curved-ray methods keeps only the pixels whose ray
+    ///        the method draws, or, where the ascent moves none of its parameters, maps them.
     /// @throw Cancelled once Ctrl-C was pressed (core/interrupt_signal.h)
     ViewSamples(const render::RenderScene& scene, const core::Camera& camera, int resolution,
                 const render::MethodPtr& method);
@@ -33,14 +36,20 @@ public:
     const core::CameraFrame& frame() const { return mFrame; }
     /// @brief Surface points of the direct pixels.
     const std::vector<render::SurfacePoint>& direct() const { return mDirect; }
-    /// @brief Pixels that may show the surface indirectly.
+    /// @brief Pixels that may show the surface indirectly (none when mapped()).
     const std::vector<MissedPixel>& missed() const { return mMissed; }
+    /// @brief Whether the indirect pixels are mapped already: then indirect() holds what they show.
+    bool mapped() const { return mMapped; }
+    /// @brief Surface points of the indirect pixels, where mapped().
+    const std::vector<render::SurfacePoint>& indirect() const { return mIndirect; }
 
 private:
     core::CameraFrame mFrame;
     render::MethodPtr mMethod;
     std::vector<render::SurfacePoint> mDirect;
     std::vector<MissedPixel> mMissed;
+    bool mMapped = false;
+    std::vector<render::SurfacePoint> mIndirect;
 };
 
 }  // namespace ivis::optimize
