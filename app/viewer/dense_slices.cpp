@@ -193,8 +193,8 @@ DenseSlices buildDenseSlices(const render::RenderScene& scene, const DenseSliceO
     slices.hasFineBand = bool(volume.farPhi);
     slices.reach = field.reach();
     for (const render::MethodInfo* info : render::methodRegistry())
-        for (const render::VertexArraySpec& array : info->vertexArrays)
-            slices.methodArrays[info->name].push_back(array.compute(scene));
+        for (const render::VertexArrayMaker& make : info->vertexArrays)
+            slices.methodArrays[info->name].push_back(make(scene));
     slices.unsignedDistance = field.isUnsigned();
     const openvdb::FloatGrid& farSource = volume.farPhi ? *volume.farPhi : *volume.phi;
     const openvdb::Vec3SGrid& farGradient = volume.farPhi ? *volume.farGradient : *volume.gradient;

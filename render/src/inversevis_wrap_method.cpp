@@ -165,7 +165,7 @@ const MethodInfo& inverseVisWrapMethodInfo()
                 .ofTheTracer()};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
         i.readabilityParameter = "stable_shift";
-        i.vertexArrays = {{"local radii", [](const RenderScene& scene) { return wrapLocalRadii(scene); }}};
+        i.vertexArrays = {[](const RenderScene& scene) { return wrapLocalRadii(scene); }};
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;
             launch.speed = v.at("wrap_speed")[0];

@@ -54,7 +54,6 @@ ViewSamples::ViewSamples(const render::RenderScene& scene, const core::Camera& c
     const render::ScreenMap screen(scene, mFrame, method);
     const render::CurvedRayMap* curved = screen.curvedRays();
     if (curved && render::optimisedParameters(*method).empty()) {
-        mMapped = true;
         mapAllPixels(scene, screen, resolution, mDirect, mIndirect);
         if (core::interruptRequested()) throw Cancelled("view sampling cancelled");
         return;

@@ -61,13 +61,11 @@ struct LineSearch {
     double tolerance = 0.01;     ///< final bracket length
 };
 
-/// @brief A per-vertex array a method derives from its scene alone (the wrap's local radii): the
-///        viewer uploads it once per scene and the method's shader reads it as a storage buffer
-///        (kMethodBuffer0, 1, ... in the order of MethodInfo::vertexArrays: app/viewer/shaders.h).
-struct VertexArraySpec {
-    std::string name;  ///< what it holds, for messages
-    std::function<std::vector<float>(const RenderScene&)> compute;  ///< one value per vertex of the scene's mesh
-};
+/// @brief Makes a per-vertex array a method derives from its scene alone (the wrap's local
+///        radii), one value per vertex of the scene's mesh: the viewer uploads it once per scene
+///        and the method's shader reads it as a storage buffer (kMethodBuffer0, 1, ... in the order
+///        of MethodInfo::vertexArrays: app/viewer/shaders.h).
+using VertexArrayMaker = std::function<std::vector<float>(const RenderScene&)>;
 
 /// @brief Everything the command line, the JSON writer, the optimiser and the viewer know of a method.
 struct MethodInfo {
@@ -90,7 +88,7 @@ struct MethodInfo {
     /// each as a uniform, as the parameters); empty: none.
     std::vector<std::string> viewValueKeys;
     /// The per-vertex arrays its viewer shader reads; empty: none.
-    std::vector<VertexArraySpec> vertexArrays;
+    std::vector<VertexArrayMaker> vertexArrays;
     /// Creates the method from complete, validated values.
     std::function<std::shared_ptr<const Method>(const ParameterValues&)> create;
 

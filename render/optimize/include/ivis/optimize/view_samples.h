@@ -36,11 +36,11 @@ public:
     const core::CameraFrame& frame() const { return mFrame; }
     /// @brief Surface points of the direct pixels.
     const std::vector<render::SurfacePoint>& direct() const { return mDirect; }
-    /// @brief Pixels that may show the surface indirectly (none when mapped()).
+    /// @brief Pixels that may show the surface indirectly, their rays still to trace (none where
+    ///        the pixels are mapped at once).
     const std::vector<MissedPixel>& missed() const { return mMissed; }
-    /// @brief Whether the indirect pixels are mapped already: then indirect() holds what they show.
-    bool mapped() const { return mMapped; }
-    /// @brief Surface points of the indirect pixels, where mapped().
+    /// @brief Surface points the indirect pixels show, where they are mapped at once (a method the
+    ///        ascent moves nothing of); else empty.
     const std::vector<render::SurfacePoint>& indirect() const { return mIndirect; }
 
 private:
@@ -48,7 +48,6 @@ private:
     render::MethodPtr mMethod;
     std::vector<render::SurfacePoint> mDirect;
     std::vector<MissedPixel> mMissed;
-    bool mMapped = false;
     std::vector<render::SurfacePoint> mIndirect;
 };
 
