@@ -24,14 +24,14 @@ CurvedRayParams wrapRayDefaults()
     return params;
 }
 
-/// The local radius at the surface point closest to @a p, searched within @a bound; negative if none.
-float localRadiusNear(const RenderScene& scene, const glm::vec3& p, double bound)
+/// The local radius (@a radii per vertex) at the surface point closest to @a p, searched within
+/// @a bound; negative if none.
+float localRadiusNear(const RenderScene& scene, const std::vector<float>& radii, const glm::vec3& p, double bound)
 {
     int triangle = -1;
     const core::TrianglePoint closest = scene.bvh().closestPoint(glm::dvec3(p), bound, triangle);
     if (triangle < 0) return -1.0f;
     const auto& corners = scene.mesh().triangles[std::size_t(triangle)];
-    const std::vector<float>& radii = wrapLocalRadii(scene);
     return float(closest.barycentric.x) * radii[corners[0]] + float(closest.barycentric.y) * radii[corners[1]] +
            float(closest.barycentric.z) * radii[corners[2]];
 }
@@ -76,8 +76,9 @@ bool InverseVisWrapMethod::aim(const CurvedRayMap& rays, CurvedRayStart& start, 
     // it): a search within two voxels of that foot, not within phi of the seed, which meets many
     // more triangles; where the foot lies off the surface, the search from the seed.
     const float voxel = scene.distance().voxelSize();
-    float radius = localRadiusNear(scene, start.seed - distance * outward, 2.0 * voxel);
-    if (radius < 0.0f) radius = localRadiusNear(scene, start.seed, 1.01 * distance + voxel);
+    const std::vector<float>& radii = wrapLocalRadii(scene);
+    float radius = localRadiusNear(scene, radii, start.seed - distance * outward, 2.0 * voxel);
+    if (radius < 0.0f) radius = localRadiusNear(scene, radii, start.seed, 1.01 * distance + voxel);
     if (radius < 0.0f) {
         start.refusal = Refusal::NoSurfaceNearSeed;
         return false;

@@ -9,11 +9,11 @@
 #include <ivis/render/surface_point.h>
 #include <ivis/vdb/surface_volume.h>
 
-#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ivis::render {
@@ -35,18 +35,19 @@ public:
     const core::TriangleBvh& bvh() const { return mBvh; }
     /// @brief Area-weighted vertex normals of the mesh (for smooth shading).
     const std::vector<glm::vec3>& normals() const { return mNormals; }
-    /// @brief What @a make derives from this scene (a method's own data, such as the wrap's local
-    ///        radii), made on first use and kept under @a key; thread-safe (other callers of the
-    ///        same key wait while it is made).
-    template <class T>
-    const T& derived(const std::string& key, const std::function<T(const RenderScene&)>& make) const
+    /// @brief What @a make (a callable taking the scene, returning a T) derives from this scene (a
+    ///        method's own data, such as the wrap's local radii), made on first use and kept under
+    ///        @a key; thread-safe (other callers of the same key wait while it is made). A lookup
+    ///        takes a lock and searches a map: keep it out of a ray's steps.
+    template <class T, class Make>
+    const T& derived(std::string_view key, Make&& make) const
     {
-        std::shared_ptr<Derived> entry;
+        Derived* entry = nullptr;
         {
             const std::lock_guard<std::mutex> lock(mDerivedMutex);
-            std::shared_ptr<Derived>& slot = mDerived[key];
-            if (!slot) slot = std::make_shared<Derived>();
-            entry = slot;
+            auto it = mDerived.find(key);
+            if (it == mDerived.end()) it = mDerived.emplace(std::string(key), std::make_unique<Derived>()).first;
+            entry = it->second.get();  // entries are never removed: the pointer stays valid
         }
         std::call_once(entry->once, [&] { entry->value = std::make_shared<const T>(make(*this)); });
         return *static_cast<const T*>(entry->value.get());
@@ -65,7 +66,7 @@ private:
     core::TriangleBvh mBvh;
     std::vector<glm::vec3> mNormals;
     mutable std::mutex mDerivedMutex;
-    mutable std::map<std::string, std::shared_ptr<Derived>> mDerived;
+    mutable std::map<std::string, std::unique_ptr<Derived>, std::less<>> mDerived;
 };
 
 }  // namespace ivis::render
