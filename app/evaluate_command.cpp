@@ -76,7 +76,7 @@ std::vector<std::pair<std::string, std::string>> onlyPairs(const std::vector<std
 nlohmann::json settingsUsedBy(nlohmann::json settings, const render::MethodInfo& method)
 {
     if (method.scannedParameter.empty()) settings.erase("--alpha-scan");
-    if (method.readabilityParameter.empty()) settings.erase("--min-coherence");
+    if (method.readableRuleParameter.empty()) settings.erase("--min-coherence");
     return settings;
 }
 
@@ -292,7 +292,7 @@ Command addEvaluateCommand(CLI::App& app)
                                                                           {"params", render::methodToJson(*optimum.method)},
                                                                           {"visibility", measured.energy}};
                     if (run.readable)
-                        entry["by_resolution"][std::to_string(resolution)]["readability"] = readableSettingJson(*run.readable);
+                        entry["by_resolution"][std::to_string(resolution)]["readable_rule"] = readableSettingJson(*run.readable);
                     if (k == 0) {
                         best = optimum;
                         if (options->views > 1) {  // chosen among this run's views, on its evaluator's voxels

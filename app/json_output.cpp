@@ -27,7 +27,7 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view)
 
 std::string readableSettingLine(const optimize::ReadableSetting& setting)
 {
-    const std::string& parameter = setting.method->info().readabilityParameter;
+    const std::string& parameter = setting.method->info().readableRuleParameter;
     char text[200];
     std::snprintf(text, sizeof text,
                   "readable rule: %s %.4g, estimated coherence %.4f on %zu sampled pairs of a %dx%d picture",

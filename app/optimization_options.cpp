@@ -60,7 +60,7 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->check(CLI::Range(4, 8192))
         ->capture_default_str();
     command.add_option("--min-coherence", minCoherence,
-                       "Readability step: at the best view, the loosest rule for drawing rays (inversevis-wrap: "
+                       "Readable rule: at the best view, the loosest rule for drawing rays (inversevis-wrap: "
                        "--stable-shift, from an eighth of it to 8 times it) whose picture keeps an estimated mapping "
                        "coherence of at least this (beyond the paper); 0: keep the rule as given")
         ->check(finiteRange(0.0, 1.0))
@@ -106,7 +106,7 @@ void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& meth
     }
     if (given("--alpha-scan") && none([](const render::MethodInfo& i) { return !i.scannedParameter.empty(); }))
         throw ValueError("--alpha-scan: no method given has a parameter to scan (inversevis: alpha)");
-    if (given("--min-coherence") && none([](const render::MethodInfo& i) { return !i.readabilityParameter.empty(); }))
+    if (given("--min-coherence") && none([](const render::MethodInfo& i) { return !i.readableRuleParameter.empty(); }))
         throw ValueError("--min-coherence: no method given has a rule for drawing rays to loosen (inversevis-wrap: "
                          "--stable-shift)");
     if (ascentResolution > 0 &&

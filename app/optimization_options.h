@@ -33,7 +33,7 @@ struct OptimizationOptions {
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 200;       ///< rays per side of that measurement
-    double minCoherence = optimize::kDefaultMinCoherence;         ///< the readability step's coherence; 0: no step
+    double minCoherence = optimize::kDefaultMinCoherence;         ///< the readable rule's coherence; 0: no step
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
@@ -57,7 +57,7 @@ struct OptimizationOptions {
     optimize::EnergyOptions measureOptions(int resolution, const core::ScalarRange& range) const;
     /// @brief Annealing options starting at @a startAngles (theta, phi; none: at the best axis view)
     ///        with the fixed field of view @a fovYDeg (none: each view framed for its method); the
-    ///        readability step keeps the coherence of the measure's 1000 x 1000 picture.
+    ///        readable rule keeps the coherence of the measure's 1000 x 1000 picture.
     optimize::AnnealingOptions annealingOptions(std::optional<glm::dvec2> startAngles,
                                                 std::optional<double> fovYDeg) const;
     /// @brief Ascent options (gradient mode, line searches, alpha scan).

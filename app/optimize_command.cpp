@@ -285,7 +285,7 @@ Command addOptimizeCommand(CLI::App& app)
         if (isSeries) json["series"] = seriesStats;
         if (!severalViews.is_null()) json["several_views"] = severalViews;
         if (result.readable) {
-            json["readability"] = readableSettingJson(*result.readable);
+            json["readable_rule"] = readableSettingJson(*result.readable);
             core::logInfo(readableSettingLine(*result.readable));
         }
         if (!options->json.empty())

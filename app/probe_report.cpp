@@ -79,7 +79,7 @@ ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPt
     const render::SurfacePoint& point = report.probe.mapping.point;
     if (point.valid())
         report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);
-    report.ruleName = method->info().readabilityParameter;
+    report.ruleName = method->info().readableRuleParameter;
     if (!report.ruleName.empty()) report.rule = method->values().at(report.ruleName)[0];
     return report;
 }

@@ -23,7 +23,7 @@ struct ProbeReport {
     glm::ivec2 pixel{0};             ///< column and row of the picture, from its top left
     render::PixelProbe probe;        ///< what the pixel's centre shows
     std::optional<glm::dvec2> view;  ///< theta and phi (degrees) of a view that sees the point head-on (facingView)
-    std::string ruleName;            ///< the method's rule for drawing rays (MethodInfo::readabilityParameter; "" for none)
+    std::string ruleName;            ///< the method's rule for drawing rays (MethodInfo::readableRuleParameter; "" for none)
     float rule = 0.0f;               ///< its value
 };
 

@@ -19,7 +19,7 @@
 #include <ivis/core/progress_bar.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/picture.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
@@ -63,7 +63,7 @@ struct RenderPlan {
     std::vector<OutputFile> outputs;
     std::vector<InputFile> inputs;
     render::RenderOptions asked;        ///< the method and the picture's size (before the data's scale)
-    bool chooseRule = false;            ///< the readable rule is chosen (optimize/readability.h)
+    bool chooseRule = false;            ///< the readable rule is chosen (optimize/readable_rule.h)
     SeriesRenderRequest frameRange;     ///< --frames
     std::vector<glm::ivec2> probePixels;
     vdb::VolumeOptions volumeOptions;
@@ -209,7 +209,7 @@ void renderOnePicture(RenderFlags& flags, const RenderPlan& plan, core::Progress
                                   {"camera", cameraPath}};
     const nlohmann::json method = render::methodToJson(*renderOptions.method);
     for (const auto& [key, value] : method.items()) stats[key] = value;
-    if (readable) stats["readability"] = readableSettingJson(*readable);
+    if (readable) stats["readable_rule"] = readableSettingJson(*readable);
     if (flags.measure || !flags.unseenMap.empty()) {
         core::Image unseen;
         stats["measures"] = pictureMeasuresJson(scene, camera, renderOptions.method, renderOptions.height,
@@ -336,12 +336,12 @@ Command addRenderCommand(CLI::App& app)
         checkOutputFiles(plan.outputs, plan.inputs);
         plan.asked = options->view.renderOptions();
         // The readable rule is chosen when the method has one and neither an option nor --view gives it.
-        const std::string readabilityKey = plan.asked.method->info().readabilityParameter;
-        if (readabilityKey.empty() && command->get_option("--min-coherence")->count() > 0)
+        const std::string readableRuleKey = plan.asked.method->info().readableRuleParameter;
+        if (readableRuleKey.empty() && command->get_option("--min-coherence")->count() > 0)
             throw ValueError("--min-coherence: " + plan.asked.method->name() +
                              " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
         plan.chooseRule =
-            options->minCoherence > 0.0 && !readabilityKey.empty() && !options->view.givesParameter(readabilityKey);
+            options->minCoherence > 0.0 && !readableRuleKey.empty() && !options->view.givesParameter(readableRuleKey);
         if (const ViewFile* view = options->view.view())
             options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);

@@ -10,7 +10,7 @@
 #include <ivis/core/image_io.h>
 #include <ivis/core/log.h>
 #include <ivis/optimize/coherence.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
@@ -93,7 +93,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         const core::Camera at =
             view.pictureCamera(current.scene(), request.camera, *request.method, options.width, options.height);
         readable = optimize::loosestReadable(current.scene(), at, request.method,
-                                             optimize::readabilityPictureSize(options.width, options.height),
+                                             optimize::readableRulePictureSize(options.width, options.height),
                                              request.minCoherence);
         core::logInfo(readableSettingLine(*readable));
         request.method = readable->method;
@@ -201,7 +201,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
                             {"frames", frames}};
     const nlohmann::json method = render::methodToJson(*request.method);
     for (const auto& [key, value] : method.items()) stats[key] = value;
-    if (readable) stats["readability"] = readableSettingJson(*readable);
+    if (readable) stats["readable_rule"] = readableSettingJson(*readable);
     core::logInfo("wrote " + std::to_string(last - first + 1) + " frames " + framePath(request.png, first, count) + " .. " +
                   framePath(request.png, last, count) + " (" + std::to_string(width) + "x" +
                   std::to_string(height) + ", " + request.method->name() + ", " + view.describeFraming(camera) + ", " +

@@ -159,9 +159,9 @@ and the figure with its colour bar.
 ## `optimize` as a user runs it
 
 `inversevis optimize lucy_100k.ply` (the wider test set's statue, {optimize_report['mesh'].split('/')[-1]}: the
-default method, the visibility energy, volume 200 cached, the readability step, the 1000 x 1000
+default method, the visibility energy, volume 200 cached, the readable rule, the 1000 x 1000
 picture and its measures): **{optimize_run['wall_seconds']:.1f} s** wall, of it the search (the
-readability step included) {optimize_report['seconds']:.1f} s.
+readable rule included) {optimize_report['seconds']:.1f} s.
 
 The paper's set-up, every view evaluated on 1000^2 rays (`inversevis optimize MESH --opt-res 1000`,
 volume 200 cached; the paper reports 35-120 s on a GPU). The default method ascends no parameter

@@ -10,7 +10,7 @@
 #include <ivis/core/camera_json.h>
 #include <ivis/core/data_array.h>
 #include <ivis/core/errors.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/render/method_registry.h>
 
 #include <pybind11/stl.h>
@@ -94,7 +94,7 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         .def_property_readonly("method", [](const python::Picture& p) { return python::fromJson(p.method); },
                                "The method and its parameters as drawn (the readable rule chosen where it ran).")
         .def_property_readonly("measures", [](const python::Picture& p) { return python::fromJson(p.measures); },
-                               "The mapping coherence, what the readability step chose, timing and pixel counts; with measure=True "
+                               "The mapping coherence, what the readable rule chose, timing and pixel counts; with measure=True "
                                "(and of optimize()) the surface visibility and the other measures of docs/measures.md.")
         .def_property_readonly(
             "optimization",

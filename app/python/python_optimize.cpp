@@ -53,7 +53,7 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
     if (request.look.minCoherence < 0.0 || request.look.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
     // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
-    const std::string& rule = method->info().readabilityParameter;
+    const std::string& rule = method->info().readableRuleParameter;
     o.minCoherence = rule.empty() || request.look.parameters.contains(rule) ? 0.0 : request.look.minCoherence;
     o.checkUsedBy({method}, {request.optResolution});
     return o;
@@ -138,7 +138,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                                   {"energy_value", best.value.energy},
                                   {"front_energy_value", best.value.front},
                                   {"visited", visited}};
-            if (result.readable) made->optimization["readability"] = optimize::readableSettingJson(*result.readable);
+            if (result.readable) made->optimization["readable_rule"] = optimize::readableSettingJson(*result.readable);
             if (request.views > 1) {  // as `optimize --views`: the further views, their pictures and union
                 const app::SeveralViews set =
                     app::renderSeveralViews(renderScene, result, evaluator, measureEvaluator,

@@ -25,7 +25,7 @@ struct Picture {
     core::Camera camera;          ///< the camera it was rendered with (framed when asked)
     core::Similarity meshUnits;   ///< the mesh's normalising transform (the EXR and camera files carry it)
     nlohmann::json method;        ///< the method and its parameters, as --stats-json lists them
-    nlohmann::json measures;      ///< coherence, and what the readability step chose
+    nlohmann::json measures;      ///< coherence, and what the readable rule chose
     nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
     render::RenderOptions look;   ///< what it was rendered with (size, method as drawn, colours, legend)
     std::string scalar;           ///< the scalar asked for ("" : the file's default array)

@@ -135,7 +135,7 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
     if (picture.framed && double(options.width) <= render::kFramingMargin * options.height)
         throw ValueError("a framed picture of " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                          " needs a wider picture");
-    const std::string& rule = method->info().readabilityParameter;
+    const std::string& rule = method->info().readableRuleParameter;
     picture.minCoherence = rule.empty() || values.count(rule) ? 0.0 : request.minCoherence;
 
     auto made = std::make_shared<Picture>();
@@ -157,7 +157,7 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
                               {"pixels_direct", made->result.stats.pixelsDirect},
                               {"pixels_indirect", made->result.stats.pixelsIndirect},
                               {"volume_cache", scene->volumePath}};
-            if (result.readable) made->measures["readability"] = optimize::readableSettingJson(*result.readable);
+            if (result.readable) made->measures["readable_rule"] = optimize::readableSettingJson(*result.readable);
             if (request.measure) {
                 const nlohmann::json measured = app::pictureMeasuresJson(
                     *scene->render, result.camera, result.method, look.options.height,

@@ -5,7 +5,7 @@
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/parameter_optimizer.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/optimize/view_set.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/framing.h>
@@ -141,7 +141,7 @@ ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings)
         const core::Camera camera =
             settings.framed ? render::frameView(scene, start.camera, *start.method, 1.0) : start.camera;
         // From the rule's default, as render chooses it: the rule shown may be too loose for this view.
-        const std::string& key = start.method->info().readabilityParameter;
+        const std::string& key = start.method->info().readableRuleParameter;
         const render::ParameterSpec* spec = start.method->info().parameter(key);
         const render::MethodPtr fromDefault = spec ? render::withValues(*start.method, {{key, spec->defaults}}) : start.method;
         const glm::ivec2 square(optimize::kCoherenceResolution);  // the frame above is square

@@ -64,8 +64,8 @@ ViewOptimiser parameterOptimiser(const OptimiserSettings& settings);
 ///        visibility at the optimisation resolution in the summary.
 ViewOptimiser viewpointOptimiser(const OptimiserSettings& settings);
 
-/// @brief "readable rule": optimize::loosestReadable of the current method with its readability
-///        parameter at its default, at the current camera (framed square, as the other optimisers
+/// @brief "readable rule": optimize::loosestReadable of the current method with the readable
+///        rule's parameter at its default, at the current camera (framed square, as the other optimisers
 ///        measure), for a 1000 x 1000 picture (optimize::kCoherenceResolution) and the settings'
 ///        minimum coherence: the rule render would choose for that picture.
 ViewOptimiser readableRuleOptimiser(const OptimiserSettings& settings);

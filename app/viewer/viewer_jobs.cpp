@@ -11,7 +11,7 @@ namespace ivis::app {
 
 bool ViewerApp::choosesReadableRule() const
 {
-    const std::string& key = mMethod->info().readabilityParameter;
+    const std::string& key = mMethod->info().readableRuleParameter;
     return mOptions.optimization.minCoherence > 0.0 && !key.empty() && !mOptions.view.givesParameter(key);
 }
 

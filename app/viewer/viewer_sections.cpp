@@ -135,7 +135,7 @@ void ViewerApp::drawOptimiserSection()
             "sphere from this view, the parameters optimised at every proposal; the camera then eases to the best "
             "view. Closing the window stops it.");
     ImGui::SameLine();
-    ImGui::BeginDisabled(busy || mMethod->info().readabilityParameter.empty());
+    ImGui::BeginDisabled(busy || mMethod->info().readableRuleParameter.empty());
     if (ImGui::Button("readable rule")) startOptimiser(Job::ReadableRule);
     ImGui::EndDisabled();
     tooltip("CPU, in the background: optimize::loosestReadable, the loosest rule for drawing rays (inversevis-wrap: "

@@ -165,7 +165,7 @@ const MethodInfo& inverseVisWrapMethodInfo()
                           {wrapRayDefaults().landingVoxels}, 0.01f, 1.0f}
                 .ofTheTracer()};
         for (const ParameterSpec& spec : curvedRaySpecs(wrapRayDefaults())) i.parameters.push_back(spec);
-        i.readabilityParameter = "stable_shift";
+        i.readableRuleParameter = "stable_shift";
         i.vertexArrays = {[](const RenderScene& scene) { return wrapLocalRadii(scene); }};
         i.create = [](const ParameterValues& v) {
             WrapLaunch launch;

@@ -162,7 +162,7 @@ TEST_F(Cli, OptimizeLoosensTheWrapsRuleAsFarAsThePictureStaysReadable)
     };
     ASSERT_EQ(optimizeTree("0.55", "readable.json").status, 0);
     const nlohmann::json readable = nlohmann::json::parse(std::ifstream(output("readable.json")));
-    const nlohmann::json& choice = readable.at("readability");
+    const nlohmann::json& choice = readable.at("readable_rule");
     EXPECT_EQ(choice.at("parameter"), "stable_shift");
     EXPECT_EQ(choice.at("value"), readable.at("params").at("stable_shift")) << "the best view's rule is the chosen one";
     EXPECT_GT(choice.at("value").get<double>(), 0.1001) << "loosened";
@@ -174,13 +174,13 @@ TEST_F(Cli, OptimizeLoosensTheWrapsRuleAsFarAsThePictureStaysReadable)
                readable.at("theta").dump() + " --phi " + readable.at("phi").dump() + " --cache-dir " +
                quoted(output("")) + " -o " + quoted(output("r.png")) + " --stats-json " + quoted(output("r.json")));
     ASSERT_EQ(rendered.status, 0) << rendered.err;
-    const nlohmann::json renderedChoice = nlohmann::json::parse(std::ifstream(output("r.json"))).at("readability");
+    const nlohmann::json renderedChoice = nlohmann::json::parse(std::ifstream(output("r.json"))).at("readable_rule");
     EXPECT_EQ(renderedChoice.at("value"), choice.at("value"));
     EXPECT_NEAR(renderedChoice.at("estimated_coherence").get<double>(), choice.at("estimated_coherence").get<double>(), 1e-9);
 
     ASSERT_EQ(optimizeTree("0", "given.json").status, 0);
     const nlohmann::json given = nlohmann::json::parse(std::ifstream(output("given.json")));
-    EXPECT_FALSE(given.contains("readability")) << "0: no readability step";
+    EXPECT_FALSE(given.contains("readable_rule")) << "0: no readable rule";
     EXPECT_FLOAT_EQ(given.at("params").at("stable_shift").get<float>(), 0.1f);
     EXPECT_LT(given.at("measures").at("visibility").get<double>(), readable.at("measures").at("visibility").get<double>())
         << "the looser rule shows more";

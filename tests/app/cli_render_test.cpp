@@ -41,7 +41,7 @@ TEST_F(Cli, RenderDrawsTheWrapWithItsReadableRuleUnlessTheRuleIsGiven)
         return nlohmann::json::parse(std::ifstream(output(name + ".json")));
     };
     const nlohmann::json readable = renderTree("readable", "--fov 63 --min-coherence 0.5 --view-out " + quoted(output("v.json")));
-    const nlohmann::json& choice = readable.at("readability");
+    const nlohmann::json& choice = readable.at("readable_rule");
     EXPECT_EQ(choice.at("parameter"), "stable_shift");
     EXPECT_GT(choice.at("value").get<double>(), 0.1001) << "loosened";
     EXPECT_EQ(choice.at("value"), readable.at("stable_shift")) << "the picture is drawn with the chosen rule";
@@ -50,20 +50,20 @@ TEST_F(Cli, RenderDrawsTheWrapWithItsReadableRuleUnlessTheRuleIsGiven)
     // The 1000 x 1000 picture of the same view gets the same rule, from the same estimate; a wide
     // picture is judged in its own aspect.
     const nlohmann::json large = renderTree("large", "--fov 63 --min-coherence 0.5", "1000x1000");
-    EXPECT_EQ(large.at("readability"), choice);
+    EXPECT_EQ(large.at("readable_rule"), choice);
     const nlohmann::json wide = renderTree("wide", "--fov 63 --min-coherence 0.5", "96x64");
-    EXPECT_EQ(wide.at("readability").at("picture_size"), nlohmann::json::array({1500, 1000}));
+    EXPECT_EQ(wide.at("readable_rule").at("picture_size"), nlohmann::json::array({1500, 1000}));
 
     const nlohmann::json given = renderTree("given", "--fov 63 --min-coherence 0.5 --stable-shift 0.005");
-    EXPECT_FALSE(given.contains("readability")) << "a rule given is drawn as given";
+    EXPECT_FALSE(given.contains("readable_rule")) << "a rule given is drawn as given";
     EXPECT_FLOAT_EQ(given.at("stable_shift").get<float>(), 0.005f);
     EXPECT_LT(given.at("pixels_indirect").get<int>(), readable.at("pixels_indirect").get<int>()) << "the looser rule draws more";
     const nlohmann::json off = renderTree("off", "--fov 63 --min-coherence 0");
-    EXPECT_FALSE(off.contains("readability"));
+    EXPECT_FALSE(off.contains("readable_rule"));
     EXPECT_FLOAT_EQ(off.at("stable_shift").get<float>(), 0.1f) << "the default rule";
     const nlohmann::json tight = renderTree("tight", "--fov 63 --min-coherence 0.9999");
-    EXPECT_FLOAT_EQ(tight.at("readability").at("value").get<float>(), 0.0125f) << "tightened to the ladder's foot";
-    EXPECT_FALSE(tight.at("readability").at("keeps_min_coherence").get<bool>()) << "and still short of 0.9999";
+    EXPECT_FLOAT_EQ(tight.at("readable_rule").at("value").get<float>(), 0.0125f) << "tightened to the ladder's foot";
+    EXPECT_FALSE(tight.at("readable_rule").at("keeps_min_coherence").get<bool>()) << "and still short of 0.9999";
     EXPECT_TRUE(choice.at("keeps_min_coherence").get<bool>());
     EXPECT_LT(tight.at("pixels_indirect").get<int>(), off.at("pixels_indirect").get<int>()) << "the tighter rule draws less";
     expectBadInput(runCli("render scene:vessel-tree --volume-res 64 --min-coherence 0.5 --method inversevis -o " +
@@ -71,7 +71,7 @@ TEST_F(Cli, RenderDrawsTheWrapWithItsReadableRuleUnlessTheRuleIsGiven)
                    {"--min-coherence: inversevis has no rule"});  // a method without such a rule: it did nothing
 
     const nlohmann::json again = renderTree("again", "--min-coherence 0.5 --view " + quoted(output("v.json")));
-    EXPECT_FALSE(again.contains("readability")) << "the view file gives the rule";
+    EXPECT_FALSE(again.contains("readable_rule")) << "the view file gives the rule";
     EXPECT_EQ(again.at("stable_shift"), readable.at("stable_shift"));
     EXPECT_EQ(core::readPng(output("again.png")).pixels(), core::readPng(output("readable.png")).pixels());
 }

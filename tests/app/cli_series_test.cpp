@@ -308,7 +308,7 @@ TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
     // Every frame is the best view, with its parameters.
     EXPECT_DOUBLE_EQ(series.at("theta").get<double>(), json.at("theta").get<double>());
     EXPECT_DOUBLE_EQ(series.at("fov_y_deg").get<double>(), json.at("fov_y_deg").get<double>());
-    for (const char* key : {"wrap_speed", "stable_shift"})  // the default method, its rule as the readability step chose it
+    for (const char* key : {"wrap_speed", "stable_shift"})  // the default method, its rule as the readable rule chose it
         EXPECT_EQ(series.at(key), json.at("params").at(key)) << key;
     for (int k = 0; k < 5; ++k) EXPECT_TRUE(std::filesystem::exists(output("best_000" + std::to_string(k) + ".png")));
     EXPECT_FALSE(std::filesystem::exists(output("best.png")));

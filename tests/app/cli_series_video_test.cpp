@@ -116,8 +116,8 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
                                                  " --stats-json " + quoted(output("job.json")));
         ASSERT_EQ(job.status, 0) << job.err;
         const nlohmann::json stats = nlohmann::json::parse(test::readFile(output("job.json")));
-        EXPECT_GT(stats.at("readability").at("value").get<double>(), 0.1001) << "loosened beyond the default: " << range;
-        EXPECT_EQ(stats.at("readability").at("value"), stats.at("stable_shift")) << range;
+        EXPECT_GT(stats.at("readable_rule").at("value").get<double>(), 0.1001) << "loosened beyond the default: " << range;
+        EXPECT_EQ(stats.at("readable_rule").at("value"), stats.at("stable_shift")) << range;
     }
     for (int k = 0; k < 5; ++k) {
         const std::string suffix = "_000" + std::to_string(k) + ".png";

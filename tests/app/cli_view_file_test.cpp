@@ -79,7 +79,7 @@ TEST_F(Cli, AParameterGivenWithAViewOverridesOnlyItself)
     EXPECT_FLOAT_EQ(s.at("wrap_speed").get<float>(), 1.5f);
     EXPECT_FLOAT_EQ(s.at("ring_scale").get<float>(), 8.0f);
     EXPECT_FLOAT_EQ(s.at("stable_shift").get<float>(), 0.05f);
-    EXPECT_FALSE(s.contains("readability"));
+    EXPECT_FALSE(s.contains("readable_rule"));
 }
 
 // A view of a scalar given by --scalar-file shows that scalar again (it showed none: grey).

@@ -133,7 +133,7 @@ TEST(Viewer, PlayShowsEveryStepInTurnAndStopsAtTheLast)
 }
 
 // "optimise view" leaves the picture drawn with every parameter of the best view: the optimised
-// speed and the rule its readability step chose (the rule used to be dropped, and the speed with it).
+// speed and the rule its readable rule chose (the rule used to be dropped, and the speed with it).
 TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
 {
 #ifndef IVIS_VIEW_PATH

@@ -29,7 +29,7 @@ def test_a_file_with_a_chosen_scalar_and_parameters_renders_as_the_cli(tmp_path,
     picture.save(str(tmp_path / "py.png"))
     assert (tmp_path / "py.png").read_bytes() == cli_png.read_bytes()
     assert picture.method["stable_shift"] == pytest.approx(0.3)
-    assert "readability" not in picture.measures  # the rule was given
+    assert "readable_rule" not in picture.measures  # the rule was given
 
 
 def test_numpy_arrays_render_as_the_same_mesh_read_from_its_file(sphere_file):

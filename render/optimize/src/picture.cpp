@@ -28,8 +28,8 @@ Picture makePicture(const render::RenderScene& scene, const PictureRequest& requ
     };
     Picture picture;
     picture.camera = cameraFor(*options.method);
-    if (request.minCoherence > 0.0 && !options.method->info().readabilityParameter.empty()) {
-        const glm::ivec2 judged = readabilityPictureSize(options.width, options.height);
+    if (request.minCoherence > 0.0 && !options.method->info().readableRuleParameter.empty()) {
+        const glm::ivec2 judged = readableRulePictureSize(options.width, options.height);
         picture.readable = loosestReadable(scene, picture.camera, options.method, judged, request.minCoherence);
         options.method = picture.readable->method;
         picture.camera = cameraFor(*options.method);  // the rule draws other rays: the picture's extent moves

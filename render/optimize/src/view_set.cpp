@@ -1,7 +1,7 @@
 #include <ivis/optimize/view_set.h>
 
 #include <ivis/core/errors.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 
 #include <algorithm>
 
@@ -47,7 +47,7 @@ std::vector<ReadableView> chooseReadableViewSet(const AnnealingResult& result, c
     for (std::size_t index : chooseViewSet(result.visited, result.best, *evaluator.surfaceVoxels(), count)) {
         const VisitedView& view = result.visited[index];
         render::MethodPtr method = view.method;
-        if (index != result.best && options.readableResolution > 0 && !method->info().readabilityParameter.empty())
+        if (index != result.best && options.readableResolution > 0 && !method->info().readableRuleParameter.empty())
             method = loosestReadable(evaluator.scene(), view.camera, method,
                                      {options.readableResolution, options.readableResolution}, options.minCoherence)
                          .method;

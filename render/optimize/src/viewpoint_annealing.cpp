@@ -162,7 +162,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         result.evaluations += polished.evaluations;
         measured(best, polished, best.camera, true);
     }
-    if (options.readableResolution > 0 && !start->info().readabilityParameter.empty()) {
+    if (options.readableResolution > 0 && !start->info().readableRuleParameter.empty()) {
         VisitedView& best = result.visited[result.best];
         result.readable = loosestReadable(evaluator.scene(), best.camera, best.method,
                                           {options.readableResolution, options.readableResolution}, options.minCoherence);

@@ -40,7 +40,7 @@ struct WrapLaunch {
 const std::vector<float>& wrapLocalRadii(const RenderScene& scene);
 
 /// @brief Description of `inversevis-wrap`: wrap_speed, wrap_tilt, ring_scale, stable_shift (the
-///        readability parameter), landing, hull_offset, step, max_steps; none is optimised by the ascent
+///        readable rule's parameter), landing, hull_offset, step, max_steps; none is optimised by the ascent
 ///        (each ray's speed and stability are set when it is aimed, docs/optimisation.md).
 const MethodInfo& inverseVisWrapMethodInfo();
 

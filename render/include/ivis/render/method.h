@@ -81,9 +81,9 @@ struct MethodInfo {
     /// (AscentOptions::scanSamples); empty: none.
     std::string scannedParameter;
     /// A one-component parameter that trades completeness for coherence, larger values drawing
-    /// more rays (the wrap's stable_shift): the optimisation's readability step sets it to the
-    /// loosest value whose picture stays coherent (optimize/readability.h); empty: none.
-    std::string readabilityParameter;
+    /// more rays (the wrap's stable_shift): the optimisation's readable rule sets it to the
+    /// loosest value whose picture stays coherent (optimize/readable_rule.h); empty: none.
+    std::string readableRuleParameter;
     /// The keys of what Method::viewValues() derives from each view (the viewer's programs read
     /// each as a uniform, as the parameters); empty: none.
     std::vector<std::string> viewValueKeys;

@@ -1,11 +1,11 @@
 /// @file picture.h
 /// @brief One finished picture of a method, as `inversevis render` makes it and the Python module
 ///        too: the camera framed to the method's picture, the readable rule chosen where the
-///        method has one (readability.h), then the render.
+///        method has one (readable_rule.h), then the render.
 #pragma once
 
 #include <ivis/core/interrupter.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/render/renderer.h>
 
 #include <optional>
@@ -18,7 +18,7 @@ struct PictureRequest {
     core::Camera camera;            ///< the eye and target asked for
     bool framed = true;             ///< fit the field of view to the method's picture (render::frameView)
     /// The readable rule's least coherence, where the method has a rule for drawing its rays that was
-    /// not given (MethodInfo::readabilityParameter); 0: the method's own rule.
+    /// not given (MethodInfo::readableRuleParameter); 0: the method's own rule.
     double minCoherence = kDefaultMinCoherence;
 };
 
@@ -26,8 +26,8 @@ struct PictureRequest {
 struct Picture {
     render::RenderResult result;
     core::Camera camera;                     ///< framed when asked
-    render::MethodPtr method;                ///< with the rule the readability step chose
-    std::optional<ReadableSetting> readable;  ///< what the readability step chose, where it ran
+    render::MethodPtr method;                ///< with the stable_shift the readable rule chose
+    std::optional<ReadableSetting> readable;  ///< what the readable rule chose, where it ran
 };
 
 /// @brief @a camera framed for @a method's picture of @a width x @a height (render::frameView),
@@ -35,7 +35,7 @@ struct Picture {
 core::Camera framedCamera(const render::RenderScene& scene, const core::Camera& camera, const render::Method& method,
                           int width, int height);
 
-/// @brief The picture of @a request: framed, its rule chosen (judged at readabilityPictureSize),
+/// @brief The picture of @a request: framed, its rule chosen (judged at readableRulePictureSize),
 ///        rendered.
 /// @throw Cancelled when @a interrupter asks; ValueError for bad options
 Picture makePicture(const render::RenderScene& scene, const PictureRequest& request,

@@ -12,7 +12,7 @@
 #pragma once
 
 #include <ivis/optimize/parameter_optimizer.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 
 #include <array>
 #include <cstdint>
@@ -36,7 +36,7 @@ struct AnnealingOptions {
     int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
     double polishDeg = 0.0;  ///< after the proposals, a compass search round the best view: steps of this, halved each round; 0: none
     int polishRounds = 3;    ///< the compass search's rounds (4 views each)
-    int readableResolution = 0;  ///< pixels per side of the picture the readability step keeps coherent (loosestReadable); 0: no step
+    int readableResolution = 0;  ///< pixels per side of the picture the readable rule keeps coherent (loosestReadable); 0: no step
     double minCoherence = kDefaultMinCoherence;  ///< the coherence that step keeps
 };
 
@@ -65,7 +65,7 @@ struct VisitedView {
 struct AnnealingResult {
     std::vector<VisitedView> visited;
     std::size_t best = 0;  ///< index into visited
-    std::optional<ReadableSetting> readable;  ///< the readability step's choice for the best view (when it ran)
+    std::optional<ReadableSetting> readable;  ///< the readable rule's choice for the best view (when it ran)
     double seconds = 0.0;
     int evaluations = 0;
     /// @brief The best view.

@@ -1,10 +1,10 @@
-// The readability step: the loosest setting of a method's drawing rule whose picture stays
+// The readable rule: the loosest setting of a method's drawing rule whose picture stays
 // coherent, chosen on the ladder v/8 ... 8v in steps of sqrt(2); and the annealing applying it to its best view.
 #include "render/scene_fixture.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/optimize/energy.h>
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
@@ -23,7 +23,7 @@ const glm::ivec2 kSize(kResolution, kResolution);
 
 float stableShift(const render::Method& method) { return method.values().at("stable_shift").at(0); }
 
-TEST(Readability, LowerBoundIsTheEstimateLessTwoStandardErrors)
+TEST(ReadableRule, LowerBoundIsTheEstimateLessTwoStandardErrors)
 {
     Coherence c;
     c.pairs = 10000;
@@ -34,7 +34,7 @@ TEST(Readability, LowerBoundIsTheEstimateLessTwoStandardErrors)
     EXPECT_DOUBLE_EQ(coherenceLowerBound(Coherence{}), 1.0) << "no pair, nothing torn";
 }
 
-TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
+TEST(ReadableRule, CoherenceAtSettingsIsTheMeasureOfEachSetting)
 {
     // Brute force: the method made with each value and its picture measured pixel by pixel.
     const auto& fixture = test::vesselScene();
@@ -60,7 +60,7 @@ TEST(Readability, CoherenceAtSettingsIsTheMeasureOfEachSetting)
     EXPECT_THROW(coherenceAtSettings(*fixture.scene, camera, *wrap, {size, 0}, 1, values), ValueError);
 }
 
-TEST(Readability, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
+TEST(ReadableRule, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
 {
     // Brute force: a 150 x 90 picture rendered with each value, every ray traced (the rule judges
     // each view ray alone), its coherence counted on its layers.
@@ -82,24 +82,24 @@ TEST(Readability, CoherenceAtSettingsMeasuresAWidePictureAsItsRender)
     }
 }
 
-TEST(Readability, JudgesEveryPictureAtTheMeasuresRowsInItsOwnAspect)
+TEST(ReadableRule, JudgesEveryPictureAtTheMeasuresRowsInItsOwnAspect)
 {
-    EXPECT_EQ(readabilityPictureSize(480, 480), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
-    EXPECT_EQ(readabilityPictureSize(4000, 4000), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
-    EXPECT_EQ(readabilityPictureSize(1600, 900), glm::ivec2(1778, kCoherenceResolution));
-    EXPECT_EQ(readabilityPictureSize(300, 1200), glm::ivec2(250, kCoherenceResolution));
-    EXPECT_EQ(readabilityPictureSize(100000, 10), glm::ivec2(4 * kCoherenceResolution, kCoherenceResolution))
+    EXPECT_EQ(readableRulePictureSize(480, 480), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
+    EXPECT_EQ(readableRulePictureSize(4000, 4000), glm::ivec2(kCoherenceResolution, kCoherenceResolution));
+    EXPECT_EQ(readableRulePictureSize(1600, 900), glm::ivec2(1778, kCoherenceResolution));
+    EXPECT_EQ(readableRulePictureSize(300, 1200), glm::ivec2(250, kCoherenceResolution));
+    EXPECT_EQ(readableRulePictureSize(100000, 10), glm::ivec2(4 * kCoherenceResolution, kCoherenceResolution))
         << "a very wide picture judged on its middle";
-    EXPECT_EQ(readabilityPictureSize(1, 100000), glm::ivec2(1, kCoherenceResolution));
-    EXPECT_THROW(readabilityPictureSize(0, 10), ValueError);
-    EXPECT_THROW(readabilityPictureSize(10, 0), ValueError);
+    EXPECT_EQ(readableRulePictureSize(1, 100000), glm::ivec2(1, kCoherenceResolution));
+    EXPECT_THROW(readableRulePictureSize(0, 10), ValueError);
+    EXPECT_THROW(readableRulePictureSize(10, 0), ValueError);
 }
 
-TEST(Readability, TheLadderRunsFromAnEighthToEightTimesTheOwnValueInStepsOfRootTwo)
+TEST(ReadableRule, TheLadderRunsFromAnEighthToEightTimesTheOwnValueInStepsOfRootTwo)
 {
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
     const float own = stableShift(*wrap);
-    const std::vector<float> ladder = readabilityLadder(*wrap);
+    const std::vector<float> ladder = readableRuleLadder(*wrap);
     ASSERT_EQ(ladder.size(), 13u);
     EXPECT_FLOAT_EQ(ladder.front(), own / 8.0f);
     EXPECT_EQ(ladder[6], own) << "the method's own value is the middle rung";
@@ -107,19 +107,19 @@ TEST(Readability, TheLadderRunsFromAnEighthToEightTimesTheOwnValueInStepsOfRootT
     for (std::size_t k = 1; k < ladder.size(); ++k) EXPECT_NEAR(ladder[k] / ladder[k - 1], std::sqrt(2.0f), 1e-5f) << k;
     // Within the parameter's bounds: a method near its upper bound gets fewer, clamped rungs.
     const float hi = wrap->info().parameter("stable_shift")->hi;
-    const std::vector<float> high = readabilityLadder(*render::withValues(*wrap, {{"stable_shift", {hi / 2.0f}}}));
+    const std::vector<float> high = readableRuleLadder(*render::withValues(*wrap, {{"stable_shift", {hi / 2.0f}}}));
     EXPECT_EQ(high.back(), hi);
     EXPECT_EQ(high.size(), 9u) << "hi/2 * sqrt(2) and hi, then nothing looser";
-    EXPECT_TRUE(readabilityLadder(*render::makeMethod("inversevis")).empty());
+    EXPECT_TRUE(readableRuleLadder(*render::makeMethod("inversevis")).empty());
 }
 
-TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
+TEST(ReadableRule, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
 {
     const auto& fixture = test::vesselScene();
     const render::RenderScene& scene = *fixture.scene;
     const core::Camera camera = core::Camera::fromAngles(90.0, 0.0);
     const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
-    const std::vector<float> ladder = readabilityLadder(*wrap);
+    const std::vector<float> ladder = readableRuleLadder(*wrap);
     const std::size_t own = 6;
     const std::vector<Coherence> coherence =
         coherenceAtSettings(scene, camera, *wrap, kSize, kResolution / 200, ladder);
@@ -162,7 +162,7 @@ TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
         render::withValues(*wrap, {{"stable_shift", {wrap->info().parameter("stable_shift")->hi}}});
     EXPECT_EQ(loosestReadable(scene, camera, loosest, kSize, 1e-6).method, loosest);
 
-    // A method without a readability parameter is left as it is; bad arguments are refused.
+    // A method without a readable rule's parameter is left as it is; bad arguments are refused.
     const render::MethodPtr faithful = render::makeMethod("inversevis");
     EXPECT_EQ(loosestReadable(scene, camera, faithful, kSize, 0.99).method, faithful);
     EXPECT_THROW(loosestReadable(scene, camera, wrap, {0, kResolution}, 0.99), ValueError);
@@ -170,7 +170,7 @@ TEST(Readability, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     EXPECT_THROW(loosestReadable(scene, camera, wrap, kSize, 1.5), ValueError);
 }
 
-TEST(Readability, TheAnnealingsBestViewIsMeasuredWithTheChosenSetting)
+TEST(ReadableRule, TheAnnealingsBestViewIsMeasuredWithTheChosenSetting)
 {
     const auto& fixture = test::vesselScene();
     EnergyOptions energy;

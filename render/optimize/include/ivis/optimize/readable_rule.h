@@ -1,7 +1,7 @@
-/// @file readability.h
-/// @brief The optimisation's readability step (beyond the paper, docs/optimisation.md, "Readable by
-///        choice"): a method whose rule for drawing its rays trades completeness for coherence
-///        (MethodInfo::readabilityParameter) gets, at the optimised view, the loosest setting
+/// @file readable_rule.h
+/// @brief The optimisation's readable rule (beyond the paper, docs/optimisation.md, "The readable
+///        rule"): a method whose rule for drawing its rays trades completeness for coherence
+///        (MethodInfo::readableRuleParameter) gets, at the optimised view, the loosest setting
 ///        whose picture keeps the mapping coherence a reader needs.
 #pragma once
 
@@ -17,10 +17,10 @@
 namespace ivis::optimize {
 
 /// @brief The coherence a picture a person can read needs at least (docs/measures.md): the
-///        readability step's default minimum.
+///        readable rule's default minimum.
 inline constexpr double kDefaultMinCoherence = 0.99;
 
-/// @brief What the readability step chose.
+/// @brief What the readable rule chose.
 struct ReadableSetting {
     render::MethodPtr method;  ///< the method with the chosen setting
     Coherence coherence;       ///< its picture's coherence, estimated on sampled pairs
@@ -33,30 +33,30 @@ struct ReadableSetting {
 double coherenceLowerBound(const Coherence& coherence);
 
 /// @brief The mapping coherence of @a method's picture from @a camera at @a size pixels (width,
-///        height) with its readability parameter at each of @a values, from one tracing of its rays
+///        height) with its readable rule's parameter at each of @a values, from one tracing of its rays
 ///        at the largest value (a ray is drawn at a value when its CurvedRayStart::bend is at most
 ///        that): on the pairs of every @a stride-th row and column (mappingCoherence's stride;
 ///        stride 1 is measureCoherence of the method at that value).
-/// @throw ValueError for a method without a readability parameter, no value, a size or stride below 1
+/// @throw ValueError for a method without a readable rule's parameter, no value, a size or stride below 1
 std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, const core::Camera& camera,
                                            const render::Method& method, const glm::ivec2& size, int stride,
                                            const std::vector<float>& values);
 
-/// @brief The size the readability step judges a @a width x @a height picture at, whatever its
+/// @brief The size the readable rule judges a @a width x @a height picture at, whatever its
 ///        own: the coherence measure's kCoherenceResolution rows (docs/measures.md, 2)
 ///        and as many columns as the picture's aspect gives (at most 4 times as many). The rule
 ///        then draws the same rays at every size (the wrap's rule judges each view ray alone), and
 ///        a small picture, whose neighbouring pixels land further apart, does not get a tighter
 ///        rule that scatters its outer rings into dust.
 /// @throw ValueError for a size below 1
-glm::ivec2 readabilityPictureSize(int width, int height);
+glm::ivec2 readableRulePictureSize(int width, int height);
 
-/// @brief The settings the readability step chooses among, tightest first: @a method's readability
-///        parameter at its own value v times 2^(k/2), k = -6..6 (v/8 to 8v), within the parameter's
+/// @brief The settings the readable rule chooses among, tightest first: the readable rule's
+///        parameter of @a method at its own value v times 2^(k/2), k = -6..6 (v/8 to 8v), within the parameter's
 ///        bounds; empty for a method without such a parameter.
-std::vector<float> readabilityLadder(const render::Method& method);
+std::vector<float> readableRuleLadder(const render::Method& method);
 
-/// @brief Of readabilityLadder(@a method), the loosest rung reached from the tightest before a rung
+/// @brief Of readableRuleLadder(@a method), the loosest rung reached from the tightest before a rung
 ///        whose picture from @a camera at @a size pixels (width, height) has a coherence lower
 ///        bound below @a minCoherence (the tightest when the next one falls short, and
 ///        keepsMinimum false when it falls short itself), estimated on
@@ -67,7 +67,7 @@ std::vector<float> readabilityLadder(const render::Method& method);
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, const glm::ivec2& size, double minCoherence);
 
-/// @brief What the readability step chose, as --stats-json reports it: {"parameter", "value",
+/// @brief What the readable rule chose, as --stats-json reports it: {"parameter", "value",
 ///        "estimated_coherence", "sampled_pairs", "picture_size", "keeps_min_coherence"}.
 nlohmann::json readableSettingJson(const ReadableSetting& setting);
 

@@ -1,4 +1,4 @@
-#include <ivis/optimize/readability.h>
+#include <ivis/optimize/readable_rule.h>
 
 #include <ivis/core/errors.h>
 #include <ivis/core/interrupt_signal.h>
@@ -36,8 +36,8 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
                                            const render::Method& method, const glm::ivec2& size, int stride,
                                            const std::vector<float>& values)
 {
-    const std::string& parameter = method.info().readabilityParameter;
-    if (parameter.empty() || !method.curved()) throw ValueError(method.name() + " has no readability parameter");
+    const std::string& parameter = method.info().readableRuleParameter;
+    if (parameter.empty() || !method.curved()) throw ValueError(method.name() + " has no readable rule's parameter");
     if (values.empty() || size.x < 1 || size.y < 1 || stride < 1)
         throw ValueError("coherence at settings needs values, a positive size and a positive stride");
     const float loosest = *std::max_element(values.begin(), values.end());
@@ -81,7 +81,7 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
             bends[at[k]] = starts[k].bend;
         }
     });
-    if (core::interruptRequested()) throw Cancelled("readability step cancelled");
+    if (core::interruptRequested()) throw Cancelled("readable rule cancelled");
     std::vector<Coherence> result;
     std::vector<char> drawn(pixels);
     for (const float value : values) {
@@ -91,16 +91,16 @@ std::vector<Coherence> coherenceAtSettings(const render::RenderScene& scene, con
     return result;
 }
 
-glm::ivec2 readabilityPictureSize(int width, int height)
+glm::ivec2 readableRulePictureSize(int width, int height)
 {
-    if (width < 1 || height < 1) throw ValueError("the readability step needs a picture of positive size");
+    if (width < 1 || height < 1) throw ValueError("the readable rule needs a picture of positive size");
     const double columns = std::round(double(kCoherenceResolution) * width / height);
     return {int(std::clamp(columns, 1.0, double(kMaxAspect * kCoherenceResolution))), kCoherenceResolution};
 }
 
-std::vector<float> readabilityLadder(const render::Method& method)
+std::vector<float> readableRuleLadder(const render::Method& method)
 {
-    const std::string& parameter = method.info().readabilityParameter;
+    const std::string& parameter = method.info().readableRuleParameter;
     if (parameter.empty()) return {};
     const render::ParameterSpec& spec = *method.info().parameter(parameter);
     const float own = method.values().at(parameter).at(0);
@@ -115,11 +115,11 @@ std::vector<float> readabilityLadder(const render::Method& method)
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, const glm::ivec2& size, double minCoherence)
 {
-    if (size.x < 1 || size.y < 1) throw ValueError("the readability step needs a positive size");
+    if (size.x < 1 || size.y < 1) throw ValueError("the readable rule needs a positive size");
     if (!(minCoherence > 0.0 && minCoherence <= 1.0)) throw ValueError("the minimum coherence must lie in (0, 1]");
-    const std::string& parameter = method->info().readabilityParameter;
+    const std::string& parameter = method->info().readableRuleParameter;
     if (parameter.empty()) return {method, {}, size};
-    const std::vector<float> ladder = readabilityLadder(*method);
+    const std::vector<float> ladder = readableRuleLadder(*method);
     const std::vector<Coherence> coherence =
         coherenceAtSettings(scene, camera, *method, size, std::max(1, size.y / kSampledLines), ladder);
     std::size_t chosen = 0;
@@ -131,7 +131,7 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
 
 nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)
 {
-    const std::string& parameter = setting.method->info().readabilityParameter;
+    const std::string& parameter = setting.method->info().readableRuleParameter;
     return {{"parameter", parameter},
             {"value", setting.method->values().at(parameter).at(0)},
             {"estimated_coherence", setting.coherence.value()},
