@@ -48,7 +48,7 @@ struct CurvedRayStart {
     std::optional<RingPosition> ring;  ///< where across its ring the seed lies, for a method with rings
     float bend = 0.0f;          ///< how far the landing strays from a smooth function of the launch, where
                                 ///< the method measures it (the wrap's stability rule); rays bending more
-                                ///< than its readable rule's parameter are not drawn (MethodInfo::readableRuleParameter)
+                                ///< than the readable rule's parameter are not drawn (MethodInfo::readableRuleParameter)
     /// The end of the first launch's ray where it was traced already (the wrap's stability rule
     /// traces it), set only where that end is final: CurvedRayMap::traceMany() takes it as it is.
     std::optional<CurvedRayEnd> traced;
