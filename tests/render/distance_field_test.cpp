@@ -1,8 +1,8 @@
 // DistanceField::Sampler on a unit sphere (fine band at resolution 100, far field at 40): phi and
 // its gradient against the exact sphere distance |p| - 1, the gradient against the blend of the
 // brute-force gradients at the cell's corners and across voxel faces, the nearest triangle against
-// a brute-force search, the samples once the volume has released the grids the field copied, and
-// the Hessian against the sphere's (I - n n^T) / |p|.
+// a brute-force search, the samples once the volume has released the grids the field copied, the
+// Hessian against the sphere's (I - n n^T) / |p|, and detail::blend against its formula bit for bit.
 #include "brute_force.h"
 #include "render/scene_fixture.h"
 #include "test_support.h"
@@ -20,7 +20,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iostream>
+#include <limits>
+#include <random>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -200,6 +203,41 @@ TEST(DistanceField, NearestTriangleIsTheBruteForceClosestAtVoxelCentres)
         ++checked;
     }
     EXPECT_GT(checked, 1000);
+}
+
+// detail::blend (four components in one SSE register where there is SSE2) gives the bits of its
+// formula written out one component at a time: sum_i w_i c_i, then phi += h (sum g . t - sum_i w_i
+// g_i . d_i), each sum in corner order; zero gradient components of either sign and a NaN corner
+// (outside the band) included.
+TEST(DistanceField, BlendGivesTheBitsOfItsFormula)
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), signedUnit(-1.0f, 1.0f);
+    for (int item = 0; item < 20000; ++item) {
+        glm::vec4 c[8];
+        for (glm::vec4& corner : c)
+            corner = glm::vec4(0.05f * signedUnit(random), signedUnit(random), signedUnit(random), signedUnit(random));
+        if (item % 7 == 0) c[item % 8].z = item % 2 ? 0.0f : -0.0f;
+        if (item % 101 == 0) c[item % 8].x = std::numeric_limits<float>::quiet_NaN();
+        const glm::vec3 t(unit(random), unit(random), unit(random));
+        const float h = 0.01f * (1.0f + unit(random));
+        float w[8];
+        detail::trilinearWeights(t, w);
+        float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f}, towards = 0.0f;
+        for (int i = 0; i < 8; ++i) {
+            for (int k = 0; k < 4; ++k) sum[k] += w[i] * c[i][k];
+            towards += w[i] * ((i & 1 ? c[i].y : 0.0f) + (i & 2 ? c[i].z : 0.0f) + (i & 4 ? c[i].w : 0.0f));
+        }
+        sum[0] += h * (sum[1] * t.x + sum[2] * t.y + sum[3] * t.z - towards);
+        const glm::vec4 blended = detail::blend(c, t, h);
+        if (std::isnan(sum[0])) {
+            EXPECT_TRUE(std::isnan(blended.x)) << "item " << item;
+            continue;
+        }
+        ASSERT_EQ(std::memcmp(&blended.x, sum, sizeof sum), 0)
+            << "item " << item << ": (" << blended.x << ", " << blended.y << ", " << blended.z << ", " << blended.w
+            << ") against (" << sum[0] << ", " << sum[1] << ", " << sum[2] << ", " << sum[3] << ")";
+    }
 }
 
 }  // namespace

@@ -120,9 +120,8 @@ inline bool DistanceField::Sampler::fineSample(const glm::vec3& p, glm::vec4& sa
     }
     if (!mBrick) return false;
     constexpr int sy = BandBricks::kEdge, sz = sy * sy;
-    const glm::vec4* v = mBrick + BandBricks::voxelOffset(x & 7, y & 7, z & 7);
-    const glm::vec4 corners[8] = {v[0], v[1], v[sy], v[sy + 1], v[sz], v[sz + 1], v[sz + sy], v[sz + sy + 1]};
-    sample = detail::blend(corners, q - glm::vec3(float(x), float(y), float(z)), mField.mVoxelSize);
+    sample = detail::blendCell(mBrick + BandBricks::voxelOffset(x & 7, y & 7, z & 7), sy, sz,
+                               q - glm::vec3(float(x), float(y), float(z)), mField.mVoxelSize);
     return !std::isnan(sample.x);  // NaN: some corner is outside the band
 }
 
