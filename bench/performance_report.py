@@ -139,6 +139,10 @@ as fast as they are:
   memory reads; four rays stepping in turn overlap them (more lanes, a brick cache per lane and
   prefetching did not help: [decisions/lockstep-lanes.md](decisions/lockstep-lanes.md)). The
   stability rule's probes of a tile are traced together too (`CurvedRayMap::areStable`).
+- **The blend in SSE2** (`detail::blend`, `render/include/ivis/render/dense_grid.h`): a sample's
+  eight (phi, gradient) corners summed four components at a time, read where they lie, with the
+  bits of the formula summed one component at a time
+  ([decisions/simd-blend.md](decisions/simd-blend.md)).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far
