@@ -33,7 +33,7 @@ struct OptimizationOptions {
     int finalists = 5;                  ///< best annealed views measured again at finalistResolution; 0, 1: none
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 200;       ///< rays per side of that measurement
-    double minCoherence = optimize::kDefaultMinCoherence;         ///< the readable rule's coherence; 0: no step
+    double minCoherence = optimize::kDefaultMinCoherence;         ///< the coherence the readable rule keeps; 0: no readable rule
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,

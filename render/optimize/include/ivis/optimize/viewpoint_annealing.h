@@ -36,7 +36,7 @@ struct AnnealingOptions {
     int finalists = 0;  ///< with a finalist evaluator: this many best views are measured again on it, its best wins
     double polishDeg = 0.0;  ///< after the proposals, a compass search round the best view: steps of this, halved each round; 0: none
     int polishRounds = 3;    ///< the compass search's rounds (4 views each)
-    int readableResolution = 0;  ///< pixels per side of the picture the readable rule keeps coherent (loosestReadable); 0: no step
+    int readableResolution = 0;  ///< pixels per side of the picture the readable rule keeps coherent (loosestReadable); 0: no readable rule
     double minCoherence = kDefaultMinCoherence;  ///< the coherence that step keeps
 };
 
