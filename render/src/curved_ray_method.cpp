@@ -127,10 +127,7 @@ bool CurvedRayMap::hitsSurface(double x, double y) const
 
 bool CurvedRayMap::start(double x, double y, DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
-    const glm::dvec2 position(x, y);
-    bool drawn = false;
-    startMany(&position, 1, sampler, &start, &drawn);
-    return drawn;
+    return !hitsSurface(x, y) && aimedStart(x, y, sampler, start) && isStable(start, sampler);
 }
 
 void CurvedRayMap::startMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,

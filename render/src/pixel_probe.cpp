@@ -26,11 +26,9 @@ PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const c
     const ScreenMap map(scene, frame, method);
     DistanceField::Sampler sampler = scene.distance().sampler();
     PixelProbe probe;
-    // The pixel's tile, as the renderer maps it (renderer.cpp: tiles of kAdaptiveTileSize from the top left).
+    // The pixel's tile, as the renderer maps it (tileAt).
     const int px = std::clamp(int(std::floor(x)), 0, width - 1), py = std::clamp(int(std::floor(y)), 0, height - 1);
-    PixelTile tile;
-    tile.x0 = px / kAdaptiveTileSize * kAdaptiveTileSize, tile.y0 = py / kAdaptiveTileSize * kAdaptiveTileSize;
-    tile.width = std::min(kAdaptiveTileSize, width - tile.x0), tile.height = std::min(kAdaptiveTileSize, height - tile.y0);
+    const PixelTile tile = tileAt(py / kAdaptiveTileSize * tilesAcross(width) + px / kAdaptiveTileSize, width, height);
     std::vector<PixelMapping> mappings(std::size_t(tile.width) * tile.height);
     TileCounts counts;
     map.mapTile(tile, {x - px, y - py}, sampling, sampler, mappings.data(), counts);

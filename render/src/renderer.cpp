@@ -72,20 +72,17 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
     std::mutex statsMutex;
     std::atomic<int> tilesDone{0};
     std::atomic<bool> cancelled{false};
-    const int tileSize = kAdaptiveTileSize;
-    const int columns = (options.width + tileSize - 1) / tileSize, rows = (options.height + tileSize - 1) / tileSize;
+    const int tileCount = tilesAcross(options.width) * tilesAcross(options.height);
     if (interrupter) interrupter->start("render");
-    tbb::parallel_for(tbb::blocked_range<int>(0, columns * rows), [&](const tbb::blocked_range<int>& tiles) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, tileCount), [&](const tbb::blocked_range<int>& tiles) {
         if (cancelled) return;
         DistanceField::Sampler sampler = scene.distance().sampler();
         RenderStats local;
         TileCounts counts;
-        std::vector<PixelMapping> mappings(std::size_t(tileSize) * tileSize);
+        std::vector<PixelMapping> mappings(std::size_t(kAdaptiveTileSize) * kAdaptiveTileSize);
         std::vector<glm::vec4> colours(mappings.size());
         for (int t = tiles.begin(); t != tiles.end(); ++t) {
-            PixelTile tile;
-            tile.x0 = (t % columns) * tileSize, tile.y0 = (t / columns) * tileSize;
-            tile.width = std::min(tileSize, options.width - tile.x0), tile.height = std::min(tileSize, options.height - tile.y0);
+            const PixelTile tile = tileAt(t, options.width, options.height);
             std::fill(colours.begin(), colours.end(), glm::vec4(0.0f));
             for (int k = 0; k < options.samplesPerPixel; ++k) {
                 screen.mapTile(tile, sampleOffset(k), options.adaptive, sampler, mappings.data(), counts);
@@ -136,7 +133,7 @@ RenderResult renderImage(const RenderScene& scene, const core::Camera& camera, c
             s.nanPixels += local.nanPixels;
         }
         const int done = tilesDone += int(tiles.size());
-        if (interrupter && interrupter->wasInterrupted(int(100.0 * done / (columns * rows)))) cancelled = true;
+        if (interrupter && interrupter->wasInterrupted(int(100.0 * done / tileCount))) cancelled = true;
     });
     if (interrupter) interrupter->end();
     if (cancelled) throw Cancelled("render cancelled");

@@ -18,18 +18,14 @@ namespace {
 void mapAllPixels(const render::RenderScene& scene, const render::ScreenMap& screen, int resolution,
                   std::vector<render::SurfacePoint>& direct, std::vector<render::SurfacePoint>& indirect)
 {
-    const int tilesPerSide = (resolution + render::kAdaptiveTileSize - 1) / render::kAdaptiveTileSize;
+    const int tilesPerSide = render::tilesAcross(resolution);
     struct Tile {
         std::vector<render::SurfacePoint> direct, indirect;
     };
     std::vector<Tile> tiles(std::size_t(tilesPerSide) * std::size_t(tilesPerSide));
     tbb::parallel_for(0, int(tiles.size()), [&](int t) {
         if (core::interruptRequested()) return;  // Ctrl-C: the rest is not needed (thrown by the caller)
-        render::PixelTile tile;
-        tile.x0 = (t % tilesPerSide) * render::kAdaptiveTileSize;
-        tile.y0 = (t / tilesPerSide) * render::kAdaptiveTileSize;
-        tile.width = std::min(render::kAdaptiveTileSize, resolution - tile.x0);
-        tile.height = std::min(render::kAdaptiveTileSize, resolution - tile.y0);
+        const render::PixelTile tile = render::tileAt(t, resolution, resolution);
         render::DistanceField::Sampler sampler = scene.distance().sampler();
         std::vector<render::PixelMapping> mappings(std::size_t(tile.width) * std::size_t(tile.height));
         render::TileCounts counts;

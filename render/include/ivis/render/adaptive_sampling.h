@@ -12,6 +12,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace ivis::render {
@@ -25,6 +26,19 @@ struct PixelTile {
 
 /// @brief Pixels a tile of adaptive sampling spans on each side: its coarsest lattice step.
 inline constexpr int kAdaptiveTileSize = 16;
+
+/// @brief Tiles across @a pixels pixels (the last one may be narrower).
+inline int tilesAcross(int pixels) { return (pixels + kAdaptiveTileSize - 1) / kAdaptiveTileSize; }
+
+/// @brief Tile @a index, in row order, of a @a width x @a height picture cut into tiles of
+///        kAdaptiveTileSize from the top left (the last column and row clipped to the picture), as
+///        the renderer maps them.
+inline PixelTile tileAt(int index, int width, int height)
+{
+    const int columns = tilesAcross(width);
+    const int x0 = index % columns * kAdaptiveTileSize, y0 = index / columns * kAdaptiveTileSize;
+    return {x0, y0, std::min(kAdaptiveTileSize, width - x0), std::min(kAdaptiveTileSize, height - y0)};
+}
 
 /// @brief How adaptive image sampling samples.
 struct AdaptiveSampling {
