@@ -317,8 +317,7 @@ Command addEvaluateCommand(CLI::App& app)
                 if (displayOptions.reveal && !entry.at("reveal").is_null()) {  // the hot spots in the picture
                     picture.method = best.method;
                     if (!bestPicture) bestPicture = render::renderImage(scene, camera, picture);
-                    entry["reveal"]["shapes"] =
-                        hotSpotShapesJson(optimize::hotSpotShapes(*display.revealMeasure(), bestPicture->layers));
+                    addHotSpotShapes(entry, display, bestPicture->layers);
                 }
                 entry["theta"] = best.thetaDeg;
                 entry["phi"] = best.phiDeg;

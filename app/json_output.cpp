@@ -52,12 +52,14 @@ nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence
     return json;
 }
 
-nlohmann::json hotSpotShapesJson(const std::vector<optimize::HotSpotShape>& shapes)
+void addHotSpotShapes(nlohmann::json& measures, const optimize::EnergyEvaluator& evaluator,
+                      const core::ImageLayers& layers)
 {
-    nlohmann::json json = nlohmann::json::array();
-    for (const optimize::HotSpotShape& shape : shapes)
-        json.push_back({{"pixels", shape.pixels}, {"largest_share", shape.largestShare}, {"outline_ratio", shape.outlineRatio}});
-    return json;
+    if (!evaluator.revealMeasure() || !measures.contains("reveal") || measures.at("reveal").is_null()) return;
+    nlohmann::json shapes = nlohmann::json::array();
+    for (const optimize::HotSpotShape& shape : optimize::hotSpotShapes(*evaluator.revealMeasure(), layers))
+        shapes.push_back({{"pixels", shape.pixels}, {"largest_share", shape.largestShare}, {"outline_ratio", shape.outlineRatio}});
+    measures["reveal"]["shapes"] = shapes;
 }
 
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,
@@ -74,8 +76,7 @@ nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core:
     const optimize::EnergyEvaluator evaluator(scene, options);
     const optimize::EnergyValue value = evaluator.evaluate(camera, method);
     nlohmann::json measures = measuresJson(value, coherence, options.reveal);
-    if (options.reveal && !measures.at("reveal").is_null())
-        measures["reveal"]["shapes"] = hotSpotShapesJson(optimize::hotSpotShapes(*evaluator.revealMeasure(), layers));
+    addHotSpotShapes(measures, evaluator, layers);
     const std::size_t surfacePixels = value.pixelsDirect + value.pixelsIndirect;
     measures["surface_pixels"] = surfacePixels;
     measures["even_bound"] =

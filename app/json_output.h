@@ -27,8 +27,11 @@ std::string readableSettingLine(const optimize::ReadableSetting& setting);
 ///        direct, per_region).
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal);
 
-/// @brief The hot spots' shapes (optimize/hot_spot_shape.h): [{pixels, largest_share, outline_ratio}, ...].
-nlohmann::json hotSpotShapesJson(const std::vector<optimize::HotSpotShape>& shapes);
+/// @brief Adds each hot spot's shape in a picture's @a layers (optimize/hot_spot_shape.h) to
+///        @a measures as reveal.shapes, [{pixels, largest_share, outline_ratio}, ...], when they
+///        hold a reveal measured by @a evaluator.
+void addHotSpotShapes(nlohmann::json& measures, const optimize::EnergyEvaluator& evaluator,
+                      const core::ImageLayers& layers);
 
 /// @brief measuresJson of a rendered picture (`render --measure`): @a method traced again from
 ///        @a camera with @a resolution rays per side, its landings counted on the 200^3 grid of docs/measures.md;

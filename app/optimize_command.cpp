@@ -186,6 +186,7 @@ Command addOptimizeCommand(CLI::App& app)
         measureOptions.reveal = field.hasScalar();
         const optimize::EnergyEvaluator measure(scene, measureOptions);
         optimize::EnergyValue measured;
+        nlohmann::json measures;  // measured's JSON, with the hot spots' shapes in the picture
         // Renamed into place together once all are written (a series' frames: by renderSeries).
         core::AtomicFileSet files;
         if (isSeries) {
@@ -203,6 +204,7 @@ Command addOptimizeCommand(CLI::App& app)
             seriesStats = renderSeries(*series, options->view, request, &progress);
             coherence = seriesStats.at("frames").at(0).at("coherence").get<double>();
             measured = measure.evaluate(camera, best.method);
+            measures = measuresJson(measured, coherence, measureOptions.reveal);
             render::RenderOptions look = renderOptions;
             look.shading.scale = seriesScale;
             files.write(viewPath, [&](const std::string& temporary) {
@@ -244,6 +246,8 @@ Command addOptimizeCommand(CLI::App& app)
             });
             coherence = optimize::mappingCoherence(picture.layers).value();
             measured = optimize::measurePicture(measure, picture.layers);  // the picture's own pixels
+            measures = measuresJson(measured, coherence, measureOptions.reveal);
+            addHotSpotShapes(measures, measure, picture.layers);
         }
         // The visibility energy is the measure itself: measure it once.
         const optimize::EnergyValue display =
@@ -279,7 +283,7 @@ Command addOptimizeCommand(CLI::App& app)
             {"display_energy_value", display.energy},
             {"display_front_energy_value", display.front},
             {"mean_importance", best.value.meanImportance},
-            {"measures", measuresJson(measured, coherence, measureOptions.reveal)},
+            {"measures", measures},
             {"output", options->output},
             {"visited", visited}};
         if (isSeries) json["series"] = seriesStats;

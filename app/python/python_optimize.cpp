@@ -122,6 +122,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*best.method);
             made->measures = app::measuresJson(measured, coherence, measure.reveal);
+            app::addHotSpotShapes(made->measures, measureEvaluator, made->result.layers);
             made->measures["seconds"] = made->result.stats.seconds;
             made->measures["pixels_direct"] = made->result.stats.pixelsDirect;
             made->measures["pixels_indirect"] = made->result.stats.pixelsIndirect;

@@ -107,6 +107,25 @@ TEST_F(Cli, OptimizeWritesTheBestViewItsPictureAndTheVisitedViews)
     EXPECT_EQ(core::readExrChannel(output("best.exr"), "R"), core::readExrChannel(output("again.exr"), "R"));
 }
 
+TEST_F(Cli, OptimizeReportsTheHotSpotsShapesInItsPictureAsRenderMeasuresThem)
+{
+    const std::string files = " --volume-res 64 --hotspots 2 --cache-dir " + quoted(output(""));
+    const CliResult result = runCli("optimize scene:torus" + files + " --energy scalar --opt-res 24 --steps 2 "
+                                    "--finalists 0 --res 120x120 -o " + quoted(output("best.png")) + " --json " +
+                                    quoted(output("best.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const nlohmann::json shapes = nlohmann::json::parse(std::ifstream(output("best.json"))).at("measures").at("reveal").at("shapes");
+    ASSERT_EQ(shapes.size(), 2u);
+    // The best view's file draws the same picture, whose shapes render --measure finds the same.
+    const CliResult again = runCli("render scene:torus" + files + " --view " + quoted(output("best.png.view.json")) +
+                                   " -o " + quoted(output("again.png")) + " --measure --stats-json " + quoted(output("again.json")));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_EQ(shapes, nlohmann::json::parse(std::ifstream(output("again.json"))).at("measures").at("reveal").at("shapes"));
+    int shown = 0;
+    for (const nlohmann::json& shape : shapes) shown += shape.at("pixels").get<int>();
+    EXPECT_GT(shown, 0);
+}
+
 TEST_F(Cli, OptimizeViewsShowsSeveralPicturesSideBySideAndTheirUnion)
 {
     const std::string common = "optimize scene:sphere --volume-res 64 --opt-res 24 --steps 3 --finalists 0 "
