@@ -57,36 +57,33 @@ for mesh in "$SHARED"/*.ply scene:vessel-tree "$WIDER"/*.ply; do
 done
 minutes=$(( ($(date +%s) - start + 59) / 60 ))
 
-# A row per mesh of the two views' figures.
-views_table() {
-  echo "| Surface | best view: visibility / coherence | second view: visibility / coherence | together: visibility (by voxel count) | seconds |"
-  echo "|---|---|---|---|---|"
-  /usr/bin/python3 - "$work/views" <<'PY'
+# A row per mesh of the optimize reports in folder $1: "views" (the two views' figures) or
+# "hot-spots" (the hot spots at the scalar energy's optimum).
+report_table() {
+  /usr/bin/python3 - "$work/$1" "$1" <<'PY'
 import json, pathlib, sys
-for path in sorted(p for p in pathlib.Path(sys.argv[1]).glob("*.json") if ".png." not in p.name):
+folder, kind = pathlib.Path(sys.argv[1]), sys.argv[2]
+if kind == "views":
+    print("| Surface | best view: visibility / coherence | second view: visibility / coherence "
+          "| together: visibility (by voxel count) | seconds |")
+else:
+    print("| Surface | hot spots seen, percent of each | share in one place / outline ratio, each "
+          "| surface visibility / coherence | seconds |")
+print("|---|---|---|---|---|")
+for path in sorted(p for p in folder.glob("*.json") if ".png." not in p.name):
     report = json.loads(path.read_text())
-    several = report["several_views"]
-    views = [f'{100 * v["visibility"]:.1f} / {v["coherence"]:.3f}' for v in several["views"]] + ["-"]
-    together = several["union"]
-    print(f'| {path.stem} | {views[0]} | {views[1]} | {100 * together["visibility"]:.1f} '
-          f'({100 * together["voxel_visibility"]:.1f}) | {report["seconds"]:.1f} |')
-PY
-}
-
-# A row per mesh of the hot spots at the scalar energy's optimum.
-hot_spots_table() {
-  echo "| Surface | hot spots seen, percent of each | share in one place / outline ratio, each | surface visibility / coherence | seconds |"
-  echo "|---|---|---|---|---|"
-  /usr/bin/python3 - "$work/hot-spots" <<'PY'
-import json, pathlib, sys
-for path in sorted(p for p in pathlib.Path(sys.argv[1]).glob("*.json") if ".png." not in p.name):
-    report = json.loads(path.read_text())
-    measures = report["measures"]
-    reveal = measures["reveal"]
-    seen = ", ".join(f"{100 * r:.1f}" for r in reveal["per_region"])
-    shapes = ", ".join(f'{s["largest_share"]:.2f} / {s["outline_ratio"]:.2f}' for s in reveal["shapes"])
-    print(f'| {path.stem} | {seen} | {shapes} | {100 * measures["visibility"]:.1f} / {measures["coherence"]:.3f} '
-          f'| {report["seconds"]:.1f} |')
+    if kind == "views":
+        several = report["several_views"]
+        views = [f'{100 * v["visibility"]:.1f} / {v["coherence"]:.3f}' for v in several["views"]] + ["-"]
+        together = several["union"]
+        cells = [views[0], views[1], f'{100 * together["visibility"]:.1f} ({100 * together["voxel_visibility"]:.1f})']
+    else:
+        measures = report["measures"]
+        reveal = measures["reveal"]
+        cells = [", ".join(f"{100 * r:.1f}" for r in reveal["per_region"]),
+                 ", ".join(f'{s["largest_share"]:.2f} / {s["outline_ratio"]:.2f}' for s in reveal["shapes"]),
+                 f'{100 * measures["visibility"]:.1f} / {measures["coherence"]:.3f}']
+    print(f'| {path.stem} | {" | ".join(cells)} | {report["seconds"]:.1f} |')
 PY
 }
 
@@ -116,7 +113,7 @@ Every method at its own optimum (the best view and parameters its visibility ene
 [measures.md](measures.md) says: surface visibility by area, by voxel count and read literally,
 mapping coherence, hot-spot reveal and how each hot spot reads in the picture; Table 2 the
 optimisation's seconds. Generated on $(date -u +%Y-%m-%d) on a machine with $(nproc) cores (this
-run: ${minutes} minutes; from nothing the whole takes about 90 minutes on 2 cores, and a run
+run: ${minutes} minutes; from nothing the whole takes about 30 minutes on 2 cores, and a run
 interrupted goes on where it stopped) by
 
 \`\`\`sh
@@ -154,12 +151,12 @@ HEADER
   printf '\n# Two views of the default method (optimize --views 2)\n\n'
   printf 'The best view and the visited view that adds the most surface to it (docs/optimisation.md,\n'
   printf '"Several views"), each at its readable rule; "together" is the area their pictures show.\n\n'
-  views_table
+  report_table views
   printf '\n# Hot spots at the scalar energy'"'"'s optimum (the default method)\n\n'
   printf 'Two generated hot spots at the ends of each mesh'"'"'s thinnest axis (`--hotspots 2`, the artery and\n'
   printf 'the tree too), the view and rule `optimize --energy scalar` chooses, measured on its 1000 x 1000\n'
   printf 'picture (docs/measures.md, 3): how much of each hot spot is seen, and how each reads in the picture.\n\n'
-  hot_spots_table
+  report_table hot-spots
   printf '\n# Pictures of the shared meshes at each method'"'"'s optimum (240 x 240)\n\n'
   picture_table
 } >"$out.tmp"
