@@ -36,6 +36,19 @@ std::string readableSettingLine(const optimize::ReadableSetting& setting)
     return text + std::string(setting.keepsMinimum ? "" : " (below --min-coherence even at the tightest rule)");
 }
 
+std::string hotSpotChoiceLine(const optimize::HotSpotChoice& choice)
+{
+    char text[200];
+    if (!choice.chosen) {
+        std::snprintf(text, sizeof text, "hot-spot rule: no hot spot reads as one place in the %d views judged; the "
+                      "best view stays", choice.judged);
+        return text;
+    }
+    std::snprintf(text, sizeof text, "hot-spot rule: judged view %d is the best whose every hot spot reads as one place "
+                  "(%.0f%% of the best view's energy)", choice.judged, 100.0 * choice.energyRatio);
+    return text;
+}
+
 nlohmann::json measuresJson(const optimize::EnergyValue& value, double coherence, bool withReveal)
 {
     nlohmann::json json = {{"visibility", value.energy},
@@ -56,10 +69,7 @@ void addHotSpotShapes(nlohmann::json& measures, const optimize::EnergyEvaluator&
                       const core::ImageLayers& layers)
 {
     if (!evaluator.revealMeasure() || !measures.contains("reveal") || measures.at("reveal").is_null()) return;
-    nlohmann::json shapes = nlohmann::json::array();
-    for (const optimize::HotSpotShape& shape : optimize::hotSpotShapes(*evaluator.revealMeasure(), layers))
-        shapes.push_back({{"pixels", shape.pixels}, {"largest_share", shape.largestShare}, {"outline_ratio", shape.outlineRatio}});
-    measures["reveal"]["shapes"] = shapes;
+    measures["reveal"]["shapes"] = optimize::hotSpotShapesJson(optimize::hotSpotShapes(*evaluator.revealMeasure(), layers));
 }
 
 nlohmann::json pictureMeasuresJson(const render::RenderScene& scene, const core::Camera& camera,

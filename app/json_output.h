@@ -22,6 +22,10 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 ///        1000x1000 picture".
 std::string readableSettingLine(const optimize::ReadableSetting& setting);
 
+/// @brief "hot-spot rule: judged view 3 is the best whose every hot spot reads as one place (82% of
+///        the best view's energy)", or that none did.
+std::string hotSpotChoiceLine(const optimize::HotSpotChoice& choice);
+
 /// @brief The measures (docs/measures.md) of one view: visibility, voxel_visibility, paper_literal, front_visibility,
 ///        coherence (optimize::mappingCoherence's value) and, when @a withReveal, reveal (total,
 ///        direct, per_region).

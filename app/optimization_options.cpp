@@ -65,6 +65,13 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "coherence of at least this (beyond the paper); 0: keep the rule as given")
         ->check(finiteRange(0.0, 1.0))
         ->capture_default_str();
+    command.add_option("--hot-spot-views", hotSpotViews,
+                       "Hot-spot rule, with the scalar energy: the best view is the best of this many best visited "
+                       "views (each at least 20 degrees from those before) whose every hot spot is at least 90% seen "
+                       "and reads as one place in a 500 x 500 picture (share in one region at least 0.9, outline "
+                       "ratio at most 1.6; beyond the paper); where none does, the best view stays; 0: no rule")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
 }
 
 nlohmann::json OptimizationOptions::settingsJson() const
@@ -84,7 +91,8 @@ nlohmann::json OptimizationOptions::settingsJson() const
             {"--alpha-scan", unlessZero(alphaScan)},
             {"--finalists", finalists},
             {"--finalist-res", finalistResolution},
-            {"--min-coherence", minCoherence}};
+            {"--min-coherence", minCoherence},
+            {"--hot-spot-views", hotSpotViews}};
 }
 
 void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& methods,
@@ -106,6 +114,8 @@ void OptimizationOptions::checkUsedBy(const std::vector<render::MethodPtr>& meth
     }
     if (given("--alpha-scan") && none([](const render::MethodInfo& i) { return !i.scannedParameter.empty(); }))
         throw ValueError("--alpha-scan: no method given has a parameter to scan (inversevis: alpha)");
+    if (given("--hot-spot-views") && hotSpotViews > 0 && !scalar)
+        throw ValueError("--hot-spot-views: the hot-spot rule chooses among views by the scalar energy; --energy is " + energy);
     if (given("--min-coherence") && none([](const render::MethodInfo& i) { return !i.readableRuleParameter.empty(); }))
         throw ValueError("--min-coherence: no method given has a rule for drawing rays to loosen (inversevis-wrap: "
                          "--stable-shift)");
@@ -152,6 +162,7 @@ optimize::AnnealingOptions OptimizationOptions::annealingOptions(std::optional<g
     // The rule is judged at the coherence measure's size whatever the picture's (as render judges it).
     options.readableResolution = minCoherence > 0.0 ? optimize::kCoherenceResolution : 0;
     options.minCoherence = minCoherence;
+    options.hotSpotViews = hotSpotViews;
     return options;
 }
 

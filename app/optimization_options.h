@@ -34,10 +34,11 @@ struct OptimizationOptions {
     double polishDeg = 16.0;            ///< first step of the compass search after the proposals; 0: none
     int finalistResolution = 200;       ///< rays per side of that measurement
     double minCoherence = optimize::kDefaultMinCoherence;         ///< the coherence the readable rule keeps; 0: no readable rule
+    int hotSpotViews = 8;               ///< views the hot-spot rule judges (scalar energy); 0: no hot-spot rule
 
     /// @brief Registers --energy, --gamma, --visibility-res, --opt-visibility-res, --seed, --steps,
     ///        --cooling, --polish, --gradient, --ascent-iterations, --ascent-res, --alpha-scan, --finalists,
-    ///        --finalist-res, --min-coherence.
+    ///        --finalist-res, --min-coherence, --hot-spot-views.
     void addTo(CLI::App& command);
     /// @brief These settings keyed by their flags ({"--steps": 20, ...}; an unset default null).
     nlohmann::json settingsJson() const;

@@ -288,6 +288,10 @@ Command addOptimizeCommand(CLI::App& app)
             {"visited", visited}};
         if (isSeries) json["series"] = seriesStats;
         if (!severalViews.is_null()) json["several_views"] = severalViews;
+        if (result.hotSpots) {
+            json["hot_spot_rule"] = optimize::hotSpotChoiceJson(*result.hotSpots);
+            core::logInfo(hotSpotChoiceLine(*result.hotSpots));
+        }
         if (result.readable) {
             json["readable_rule"] = readableSettingJson(*result.readable);
             core::logInfo(readableSettingLine(*result.readable));

@@ -187,7 +187,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
         "optimize",
         [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::string& energy,
            const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed, int finalists,
-           const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
+           int hotSpotViews, const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
            double minCoherence, bool legend, bool shadows, bool transparent, const py::object& progress,
            const py::kwargs& parameters) {
@@ -214,6 +214,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
                 throw ValueError("seed " + std::string(py::repr(seed)) + " must be a whole number from 0 to 2**64 - 1");
             }
             request.finalists = finalists;
+            request.hotSpotViews = hotSpotViews;
             request.start = start;
             request.views = views;
             return python::optimizeMesh(mesh, request, progress);
@@ -221,7 +222,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
         py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,
-        py::arg("finalists") = 5, py::arg("start") = py::none(), py::arg("views") = 1,
+        py::arg("finalists") = 5, py::arg("hot_spot_views") = 8, py::arg("start") = py::none(), py::arg("views") = 1,
         py::arg("size") = std::pair<int, int>(1000, 1000),
         py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
         py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("legend") = true, py::arg("shadows") = true,
@@ -233,7 +234,8 @@ energy: 'visibility' (the share of the surface some pixel shows) or 'scalar' (th
 gamma weighting the direct part, 1 by default). opt_res: rays per side while searching (the paper: 100 or
 1000); ascent_res: rays per side of each view's parameter ascent (0: opt_res); steps: annealing
 proposals after the start; seed: the search's seed (the same seed, the same result); finalists:
-best views measured again at 200 rays per side (0: none); start: (theta, phi) to start from (None:
+best views measured again at 200 rays per side (0: none); hot_spot_views: with the scalar energy, the
+hot-spot rule's views (as `optimize --hot-spot-views`, 0: none); start: (theta, phi) to start from (None:
 the best of the six axis views); views: with N > 1, also the visited views that show the most surface
 with the best one (as `optimize --views N`: Picture.views, save_views(), optimization['several_views']
 with their union's visibility; the visibility energy). The method's parameters as keywords start its ascent (a readable

@@ -50,6 +50,9 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
     if (request.finalists < 0 || request.finalists > 1000)
         throw ValueError("finalists " + std::to_string(request.finalists) + " is out of range (0 to 1000)");
     o.finalists = request.finalists;
+    if (request.hotSpotViews < 0 || request.hotSpotViews > 1000)
+        throw ValueError("hot_spot_views " + std::to_string(request.hotSpotViews) + " is out of range (0 to 1000)");
+    o.hotSpotViews = request.hotSpotViews;
     if (request.look.minCoherence < 0.0 || request.look.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
     // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
@@ -139,6 +142,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                                   {"energy_value", best.value.energy},
                                   {"front_energy_value", best.value.front},
                                   {"visited", visited}};
+            if (result.hotSpots) made->optimization["hot_spot_rule"] = optimize::hotSpotChoiceJson(*result.hotSpots);
             if (result.readable) made->optimization["readable_rule"] = optimize::readableSettingJson(*result.readable);
             if (request.views > 1) {  // as `optimize --views`: the further views, their pictures and union
                 const app::SeveralViews set =

@@ -126,6 +126,37 @@ TEST_F(Cli, OptimizeReportsTheHotSpotsShapesInItsPictureAsRenderMeasuresThem)
     EXPECT_GT(shown, 0);
 }
 
+TEST_F(Cli, OptimizeTakesTheBestViewWhoseHotSpotsReadAsOnePlace)
+{
+    // The cow's best view by the scalar energy shows a flank's hot spot in pieces round the rings.
+    const std::string common = "optimize " + quoted(test::sharedMesh("cow.ply")) +
+                               " --volume-res 64 --hotspots 2 --energy scalar --opt-res 24 --steps 2 --finalists 0 "
+                               "--res 120x120 --cache-dir " + quoted(output("")) + " -o " + quoted(output("best.png"));
+    ASSERT_EQ(runCli(common + " --json " + quoted(output("rule.json"))).status, 0);
+    ASSERT_EQ(runCli(common + " --hot-spot-views 0 --json " + quoted(output("plain.json"))).status, 0);
+    const nlohmann::json rule = nlohmann::json::parse(std::ifstream(output("rule.json")));
+    const nlohmann::json plain = nlohmann::json::parse(std::ifstream(output("plain.json")));
+    EXPECT_FALSE(plain.contains("hot_spot_rule"));
+    const nlohmann::json& choice = rule.at("hot_spot_rule");
+    ASSERT_FALSE(choice.at("chosen_view").is_null()) << choice.dump();
+    EXPECT_GT(choice.at("judged").get<int>(), 1) << "the best view's hot spots do not read as one place";
+    const nlohmann::json& chosen = rule.at("visited").at(choice.at("chosen_view").get<std::size_t>());
+    EXPECT_EQ(rule.at("theta"), chosen.at("theta"));
+    EXPECT_EQ(rule.at("phi"), chosen.at("phi"));
+    EXPECT_NE(std::make_pair(rule.at("theta"), rule.at("phi")), std::make_pair(plain.at("theta"), plain.at("phi")));
+    EXPECT_GT(choice.at("energy_ratio").get<double>(), 0.0);
+    EXPECT_LT(choice.at("energy_ratio").get<double>(), 1.0) << "a view of less energy than the best";
+    for (const nlohmann::json& shape : choice.at("shapes")) {
+        EXPECT_GE(shape.at("largest_share").get<double>(), 0.9);
+        EXPECT_LE(shape.at("outline_ratio").get<double>(), 1.6);
+    }
+    // The rule chooses among views by the scalar energy only.
+    fs::remove_all(output(""));
+    fs::create_directories(output(""));
+    expectRejected("optimize scene:sphere --volume-res 64 --opt-res 24 --hot-spot-views 3 -o " + quoted(output("s.png")),
+                   {"--hot-spot-views", "--energy"});
+}
+
 TEST_F(Cli, OptimizeViewsShowsSeveralPicturesSideBySideAndTheirUnion)
 {
     const std::string common = "optimize scene:sphere --volume-res 64 --opt-res 24 --steps 3 --finalists 0 "

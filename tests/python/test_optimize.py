@@ -24,6 +24,7 @@ def test_optimize_finds_and_draws_what_the_cli_does(tmp_path):
     assert picture.optimization["energy_value"] == cli["energy_value"]
     assert len(picture.optimization["visited"]) == len(cli["visited"])
     assert picture.method == cli["params"]
+    assert picture.optimization["hot_spot_rule"] == cli["hot_spot_rule"]
     for key, value in cli["measures"].items():
         assert picture.measures[key] == value, key
     # The best view's camera draws the same picture again with render().

@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +99,14 @@ std::vector<HotSpotShape> hotSpotShapes(const RevealMeasure& reveal, const core:
     for (std::size_t r = 0; r < reveal.regionCount(); ++r)
         shapes.push_back(shapeOf(label, int(r), layers.width(), layers.height()));
     return shapes;
+}
+
+nlohmann::json hotSpotShapesJson(const std::vector<HotSpotShape>& shapes)
+{
+    nlohmann::json json = nlohmann::json::array();
+    for (const HotSpotShape& shape : shapes)
+        json.push_back({{"pixels", shape.pixels}, {"largest_share", shape.largestShare}, {"outline_ratio", shape.outlineRatio}});
+    return json;
 }
 
 }  // namespace ivis::optimize

@@ -162,6 +162,16 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         result.evaluations += polished.evaluations;
         measured(best, polished, best.camera, true);
     }
+    if (options.hotSpotViews > 0 && evaluator.options().kind == EnergyKind::Scalar) {
+        EnergyOptions judged;  // the reported measures' grid, with the energy's importance
+        judged.reveal = true;
+        judged.importanceRange = evaluator.options().importanceRange;
+        const EnergyEvaluator measure(evaluator.scene(), judged);
+        if (measure.revealMeasure() && measure.revealMeasure()->regionCount() > 0) {
+            result.hotSpots = chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter);
+            if (result.hotSpots->chosen) result.best = *result.hotSpots->chosen;
+        }
+    }
     if (options.readableResolution > 0 && !start->info().readableRuleParameter.empty()) {
         VisitedView& best = result.visited[result.best];
         result.readable = loosestReadable(evaluator.scene(), best.camera, best.method,

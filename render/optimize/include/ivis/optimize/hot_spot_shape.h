@@ -8,6 +8,8 @@
 #include <ivis/core/image.h>
 #include <ivis/optimize/reveal.h>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <vector>
 
@@ -24,5 +26,8 @@ struct HotSpotShape {
 ///        ("region", "P.X", "P.Y", "P.Z", "scalar"): a pixel shows a region when it shows the
 ///        surface, its scalar is important and its surface point lies in one of the region's voxels.
 std::vector<HotSpotShape> hotSpotShapes(const RevealMeasure& reveal, const core::ImageLayers& layers);
+
+/// @brief The shapes as the measures report them: [{"pixels", "largest_share", "outline_ratio"}, ...].
+nlohmann::json hotSpotShapesJson(const std::vector<HotSpotShape>& shapes);
 
 }  // namespace ivis::optimize

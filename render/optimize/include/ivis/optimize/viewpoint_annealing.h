@@ -11,6 +11,7 @@
 /// @note Deterministic for a seed (std::mt19937_64 and fixed-order reductions).
 #pragma once
 
+#include <ivis/optimize/hot_spot_rule.h>
 #include <ivis/optimize/parameter_optimizer.h>
 #include <ivis/optimize/readable_rule.h>
 
@@ -38,6 +39,7 @@ struct AnnealingOptions {
     int polishRounds = 3;    ///< the compass search's rounds (4 views each)
     int readableResolution = 0;  ///< pixels per side of the picture the readable rule keeps coherent (loosestReadable); 0: no readable rule
     double minCoherence = kDefaultMinCoherence;  ///< the coherence that step keeps
+    int hotSpotViews = 0;  ///< with the scalar energy: the hot-spot rule judges at most this many views (chooseHotSpotView); 0: no rule
 };
 
 /// @brief The six views along the coordinate axes, (theta, phi) in degrees: from +y, -y, +z, +x, -z, -x.
@@ -65,6 +67,7 @@ struct VisitedView {
 struct AnnealingResult {
     std::vector<VisitedView> visited;
     std::size_t best = 0;  ///< index into visited
+    std::optional<HotSpotChoice> hotSpots;    ///< the hot-spot rule's choice (when it ran)
     std::optional<ReadableSetting> readable;  ///< the readable rule's choice for the best view (when it ran)
     double seconds = 0.0;
     int evaluations = 0;
@@ -94,6 +97,9 @@ bool acceptsProposal(double gain, double temperature, double acceptanceScale, do
 /// @param finalistEvaluator when given (typically more rays) and AnnealingOptions::finalists > 1,
 ///        the best view is the one of the finalists (the visited views of highest energy) with the
 ///        highest energy on it: an energy measured on few rays ranks close views only roughly.
+///        With AnnealingOptions::hotSpotViews and the scalar energy, the best view is then the
+///        hot-spot rule's choice where it makes one (chooseHotSpotView, its hot spots counted on the
+///        200^3 grid of the reported measures).
 ///        Last, with AnnealingOptions::readableResolution, the best view's method gets its loosest
 ///        readable setting (loosestReadable), and the view is framed and measured again with it.
 /// @throw Cancelled when interrupted

@@ -1,0 +1,61 @@
+/// @file hot_spot_rule.h
+/// @brief The optimisation's hot-spot rule (beyond the paper, docs/optimisation.md, "The hot-spot
+///        rule"): with the scalar energy, the best view is the best of the few best distinct visited
+///        views whose every hot spot is seen and reads as one place in its picture (docs/measures.md,
+///        3 and 4), where one of them does; else the best view stays.
+#pragma once
+
+#include <ivis/core/interrupter.h>
+#include <ivis/optimize/energy.h>
+#include <ivis/optimize/hot_spot_shape.h>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace ivis::optimize {
+
+struct VisitedView;
+
+/// @brief A hot spot counts as seen from this share of its area on (RevealValue::perRegion).
+inline constexpr double kMinHotSpotSeen = 0.9;
+/// @brief It reads as one place from this share in its largest region (HotSpotShape::largestShare) ...
+inline constexpr double kMinHotSpotShare = 0.9;
+/// @brief ... up to this outline ratio (HotSpotShape::outlineRatio).
+inline constexpr double kMaxHotSpotOutline = 1.6;
+/// @brief Views closer than this to one already judged are not judged (the search's neighbours of
+///        one view read alike).
+inline constexpr double kHotSpotViewSeparationDeg = 20.0;
+/// @brief Pixels per side of the pictures the rule judges.
+inline constexpr int kHotSpotPictureSize = 500;
+
+/// @brief What the hot-spot rule chose.
+struct HotSpotChoice {
+    int judged = 0;                     ///< views whose pictures were judged
+    std::optional<std::size_t> chosen;  ///< the visited view whose hot spots read (none: no judged view's did)
+    std::vector<HotSpotShape> shapes;   ///< the chosen view's hot spots in its judged picture
+    double energyRatio = 1.0;           ///< the chosen view's energy over the search's best view's
+};
+
+/// @brief True when every region of @a seen (RevealValue::perRegion) is at least kMinHotSpotSeen seen
+///        and every one of @a shapes has a largest share of at least kMinHotSpotShare and an outline
+///        ratio of at most kMaxHotSpotOutline (false without any region).
+bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes);
+
+/// @brief The hot-spot rule over @a visited: the search's best view (@a best) first, then the others
+///        by energy, at most @a views views, each at least kHotSpotViewSeparationDeg from those
+///        judged before it, judged on a kHotSpotPictureSize picture from its camera with its method
+///        (its hot spots counted as @a measure, an evaluator with the reveal, counts them), up to
+///        the first whose hot spots read.
+/// @param interrupter optional cancel, asked before each picture
+/// @throw ValueError when @a measure does not measure the reveal; Cancelled when interrupted
+HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
+                                int views, core::Interrupter* interrupter = nullptr);
+
+/// @brief What the rule chose, as optimize --json reports it: {"judged", "chosen_view" (the index in
+///        "visited", null for none), "energy_ratio", "shapes"}.
+nlohmann::json hotSpotChoiceJson(const HotSpotChoice& choice);
+
+}  // namespace ivis::optimize

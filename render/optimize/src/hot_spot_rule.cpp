@@ -1,0 +1,88 @@
+#include <ivis/optimize/hot_spot_rule.h>
+
+#include <ivis/core/errors.h>
+#include <ivis/optimize/picture_measure.h>
+#include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/renderer.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace ivis::optimize {
+namespace {
+
+/// The degrees between the directions of two views.
+double degreesBetween(const VisitedView& a, const VisitedView& b)
+{
+    auto direction = [](const VisitedView& v) {
+        const double theta = glm::radians(v.thetaDeg), phi = glm::radians(v.phiDeg);
+        return glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+    };
+    return glm::degrees(std::acos(std::clamp(glm::dot(direction(a), direction(b)), -1.0, 1.0)));
+}
+
+}  // namespace
+
+bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes)
+{
+    if (seen.empty() || seen.size() != shapes.size()) return false;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+        if (!(seen[i] >= kMinHotSpotSeen && shapes[i].largestShare >= kMinHotSpotShare &&
+              shapes[i].outlineRatio <= kMaxHotSpotOutline))
+            return false;
+    return true;
+}
+
+HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
+                                int views, core::Interrupter* interrupter)
+{
+    if (!measure.revealMeasure())
+        throw ValueError("the hot-spot rule needs a measure of the hot-spot reveal (a scalar with important regions)");
+    IVIS_CHECK(best < visited.size());
+    std::vector<std::size_t> order(visited.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return (a == best) != (b == best) ? a == best : visited[a].value.energy > visited[b].value.energy;
+    });
+    HotSpotChoice choice;
+    std::vector<std::size_t> judged;
+    for (const std::size_t index : order) {
+        if (choice.judged >= views) break;
+        const VisitedView& view = visited[index];
+        if (std::any_of(judged.begin(), judged.end(), [&](std::size_t j) {
+                return degreesBetween(view, visited[j]) < kHotSpotViewSeparationDeg;
+            }))
+            continue;
+        if (interrupter && interrupter->wasInterrupted()) throw Cancelled("hot-spot rule cancelled");
+        judged.push_back(index);
+        ++choice.judged;
+        render::RenderOptions options;
+        options.width = options.height = kHotSpotPictureSize;
+        options.method = view.method;
+        const render::RenderResult picture = render::renderImage(measure.scene(), view.camera, options);
+        const EnergyValue value = measurePicture(measure, picture.layers);
+        std::vector<HotSpotShape> shapes = hotSpotShapes(*measure.revealMeasure(), picture.layers);
+        if (!hotSpotsReadAsOnePlace(value.reveal.perRegion, shapes)) continue;
+        choice.chosen = index;
+        choice.shapes = std::move(shapes);
+        const double bestEnergy = visited[best].value.energy;
+        choice.energyRatio = bestEnergy > 0.0 ? view.value.energy / bestEnergy : 1.0;
+        break;
+    }
+    return choice;
+}
+
+nlohmann::json hotSpotChoiceJson(const HotSpotChoice& choice)
+{
+    return {{"judged", choice.judged},
+            {"chosen_view", choice.chosen ? nlohmann::json(*choice.chosen) : nlohmann::json()},
+            {"energy_ratio", choice.energyRatio},
+            {"shapes", hotSpotShapesJson(choice.shapes)}};
+}
+
+}  // namespace ivis::optimize
