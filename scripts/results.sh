@@ -154,8 +154,9 @@ HEADER
   report_table views
   printf '\n# Hot spots at the scalar energy'"'"'s optimum (the default method)\n\n'
   printf 'Two generated hot spots at the ends of each mesh'"'"'s thinnest axis (`--hotspots 2`, the artery and\n'
-  printf 'the tree too), the view and rule `optimize --energy scalar` chooses, measured on its 1000 x 1000\n'
-  printf 'picture (docs/measures.md, 3): how much of each hot spot is seen, and how each reads in the picture.\n\n'
+  printf 'the tree too), the view `optimize --energy scalar` chooses (its hot-spot rule included:\n'
+  printf 'docs/optimisation.md) with its readable rule, measured on its 1000 x 1000 picture\n'
+  printf '(docs/measures.md, 3 and 4): how much of each hot spot is seen, and how each reads in the picture.\n\n'
   report_table hot-spots
   printf '\n# Pictures of the shared meshes at each method'"'"'s optimum (240 x 240)\n\n'
   picture_table
