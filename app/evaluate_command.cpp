@@ -23,10 +23,7 @@
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/volume_cache.h>
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -38,17 +35,6 @@
 
 namespace ivis::app {
 namespace {
-
-/// Great-circle angle in degrees between two camera directions given by their angles.
-double angleBetweenViews(double theta1, double phi1, double theta2, double phi2)
-{
-    auto direction = [](double theta, double phi) {
-        const double t = theta * M_PI / 180.0, p = phi * M_PI / 180.0;
-        return glm::dvec3(std::sin(t) * std::sin(p), std::cos(t), std::sin(t) * std::cos(p));
-    };
-    const double c = glm::dot(direction(theta1, phi1), direction(theta2, phi2));
-    return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
-}
 
 /// The mesh-and-method pairs of --only ("STEM:METHOD"), checked against the meshes and methods of
 /// the command line; empty when --only was not given (every pair).
@@ -305,7 +291,7 @@ Command addEvaluateCommand(CLI::App& app)
                         }
                     } else {
                         entry["optimum_shift_deg"][std::to_string(resolution)] =
-                            angleBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
+                            optimize::degreesBetweenViews(best.thetaDeg, best.phiDeg, optimum.thetaDeg, optimum.phiDeg);
                     }
                 }
                 // Square pictures: the view as the annealing framed and measured it.

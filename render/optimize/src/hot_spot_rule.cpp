@@ -5,28 +5,12 @@
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/renderer.h>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 namespace ivis::optimize {
-namespace {
-
-/// The degrees between the directions of two views.
-double degreesBetween(const VisitedView& a, const VisitedView& b)
-{
-    auto direction = [](const VisitedView& v) {
-        const double theta = glm::radians(v.thetaDeg), phi = glm::radians(v.phiDeg);
-        return glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-    };
-    return glm::degrees(std::acos(std::clamp(glm::dot(direction(a), direction(b)), -1.0, 1.0)));
-}
-
-}  // namespace
 
 bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes)
 {
@@ -52,15 +36,15 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
     HotSpotChoice choice;
     std::vector<std::size_t> judged;
     for (const std::size_t index : order) {
-        if (choice.judged >= views) break;
+        if (int(judged.size()) >= views) break;
         const VisitedView& view = visited[index];
         if (std::any_of(judged.begin(), judged.end(), [&](std::size_t j) {
-                return degreesBetween(view, visited[j]) < kHotSpotViewSeparationDeg;
+                return degreesBetweenViews(view.thetaDeg, view.phiDeg, visited[j].thetaDeg, visited[j].phiDeg) <
+                       kHotSpotViewSeparationDeg;
             }))
             continue;
         if (interrupter && interrupter->wasInterrupted()) throw Cancelled("hot-spot rule cancelled");
         judged.push_back(index);
-        ++choice.judged;
         render::RenderOptions options;
         options.width = options.height = kHotSpotPictureSize;
         options.method = view.method;
@@ -74,6 +58,7 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
         choice.energyRatio = bestEnergy > 0.0 ? view.value.energy / bestEnergy : 1.0;
         break;
     }
+    choice.judged = int(judged.size());
     return choice;
 }
 

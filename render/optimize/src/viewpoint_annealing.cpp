@@ -3,6 +3,8 @@
 #include <ivis/core/errors.h>
 #include <ivis/render/framing.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -52,6 +54,16 @@ void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvalua
 }
 
 }  // namespace
+
+double degreesBetweenViews(double theta1, double phi1, double theta2, double phi2)
+{
+    auto direction = [](double theta, double phi) {
+        const double t = theta * M_PI / 180.0, p = phi * M_PI / 180.0;
+        return glm::dvec3(std::sin(t) * std::sin(p), std::cos(t), std::sin(t) * std::cos(p));
+    };
+    const double c = glm::dot(direction(theta1, phi1), direction(theta2, phi2));
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
+}
 
 std::vector<std::array<double, 2>> cubeViews()
 {
