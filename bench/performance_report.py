@@ -57,7 +57,7 @@ measured = datetime.datetime.fromtimestamp(max(f.stat().st_mtime for f in result
 
 print(f"""# Performance
 
-Measured on {measured.date().isoformat()} (UTC) by `scripts/bench.sh` (this run: {minutes} minutes) on a
+Measured on {measured.date().isoformat()} (UTC) by `scripts/bench.sh` (this run: {minutes} minute{"" if minutes == "1" else "s"}) on a
 machine with {os.cpu_count()} cores ({cpu_model()}), Release build:
 
 ```sh
@@ -143,6 +143,10 @@ as fast as they are:
   eight (phi, gradient) corners summed four components at a time, read where they lie, with the
   bits of the formula summed one component at a time
   ([decisions/simd-blend.md](decisions/simd-blend.md)).
+- **phi along a view ray from quartics** (`render/include/ivis/render/line_sampler.h`): the seed
+  search's samples of one far cell after its first come from the quartic the blend is along the
+  ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200;
+  [decisions/line-quartics.md](decisions/line-quartics.md)).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far

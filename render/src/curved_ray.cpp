@@ -1,5 +1,7 @@
 #include <ivis/render/curved_ray.h>
 
+#include <ivis/render/line_sampler.h>
+
 #include <ivis/core/ray_box.h>
 #include <ivis/vdb/surface_volume.h>
 
@@ -124,53 +126,53 @@ void findHullExits(DistanceField::Sampler& sampler, const glm::vec3* origins, co
 
 namespace {
 
-/// The golden-section search for the least phi along origin + t direction within [lo, hi]: the
-/// parameter of a local minimum there (to 1e-5).
-float goldenMinimum(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction, float lo,
-                    float hi)
+/// The golden-section search for the least phi along @a line within [lo, hi]: the parameter of a
+/// local minimum there (to 1e-5).
+float goldenMinimum(LineSampler& line, float lo, float hi)
 {
     // Each step keeps one inner point of the last (it lies at the golden ratio of the new interval).
     const float ratio = kGoldenSectionRatio;
     float a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-    float phiA = sampler.phi(origin + a * direction), phiB = sampler.phi(origin + b * direction);
+    float phiA = line.phi(a), phiB = line.phi(b);
     for (int k = 0; k < 64 && hi - lo > 1e-5f; ++k) {  // far from the origin a float step exceeds 1e-5
         if (phiA < phiB) {
             hi = b, b = a, phiB = phiA;
             a = hi - ratio * (hi - lo);
-            phiA = sampler.phi(origin + a * direction);
+            phiA = line.phi(a);
         } else {
             lo = a, a = b, phiA = phiB;
             b = lo + ratio * (hi - lo);
-            phiB = sampler.phi(origin + b * direction);
+            phiB = line.phi(b);
         }
     }
     return 0.5f * (lo + hi);
 }
 
-/// The seed of findClosestApproach from the valley's bottom @a tMin within [tEnter, tExit]: the
-/// centre of the valley round it.
-bool valleyCentre(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction, float hullOffset,
-                  float tEnter, float tExit, float tMin, glm::vec3& seed, float& distance)
+/// The seed of findClosestApproach from the valley's bottom @a tMin of @a line within [tEnter,
+/// tExit]: the centre of the valley round it.
+bool valleyCentre(LineSampler& line, float hullOffset, float tEnter, float tExit, float tMin, glm::vec3& seed,
+                  float& distance)
 {
+    DistanceField::Sampler& sampler = line.sampler();
     // The seed: the centre of the valley round that minimum, where phi stays within a voxel of it
     // (each sample weighted by how far below that it lies). Where a view ray skims a surface (a
     // concave crease, a flat face) phi barely rises along it, and its lowest point jumps from
     // pixel to pixel between the voxel-sized bumps of the trilinear field: the rings there showed
     // flames of the surface behind. The valley's centre moves continuously with the ray.
     const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
-    const float phiMin = sampler.phi(origin + tMin * direction);
+    const float phiMin = line.phi(tMin);
     const float depth = kClosestApproachValley * sampler.field().voxelSize();
     float weights = 0.0f, weighted = 0.0f;
     for (const float side : {-1.0f, 1.0f})
         for (float s = side > 0.0f ? tolerance : 0.0f;; s += tolerance) {
             const float t = tMin + side * s;
             if (t < tEnter || t > tExit) break;
-            const float below = depth - (sampler.phi(origin + t * direction) - phiMin);
+            const float below = depth - (line.phi(t) - phiMin);
             if (!(below > 0.0f)) break;
             weights += below;
             weighted += below * t;
         }
-    seed = origin + (weights > 0.0f ? weighted / weights : tMin) * direction;
+    seed = line.point(weights > 0.0f ? weighted / weights : tMin);
     distance = sampler.phi(seed);
     return distance < hullOffset;
 }
@@ -183,22 +185,23 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     float tEnter, tExit;
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
+    LineSampler line(sampler, origin, direction);
     float best = hullOffset, tBest = tEnter;
     // A coarse march first: its best sample bounds the minimum from above, so the fine march
     // skips by phi - best from the start instead of creeping down the slope toward it.
     for (float step : {kClosestApproachCoarseSteps * tolerance, tolerance})
         for (float t = tEnter; t < tExit;) {
-            const float phi = sampler.phi(origin + t * direction);
+            const float phi = line.phi(t);
             if (phi < best) best = phi, tBest = t;
             // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
             t += std::max(phi - best, step);
         }
     if (!(best < hullOffset)) return false;
     // Golden-section search for the minimum around the best sample.
-    const float tMin = goldenMinimum(sampler, origin, direction, std::max(tEnter, tBest - 2.0f * tolerance),
-                                     std::min(tExit, tBest + 2.0f * tolerance));
+    const float tMin =
+        goldenMinimum(line, std::max(tEnter, tBest - 2.0f * tolerance), std::min(tExit, tBest + 2.0f * tolerance));
     if (bottom) *bottom = tMin;
-    return valleyCentre(sampler, origin, direction, hullOffset, tEnter, tExit, tMin, seed, distance);
+    return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
 }
 
 bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
@@ -210,9 +213,10 @@ bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& o
     const float within = reach + 2.0f * kClosestApproachSpacing * sampler.field().voxelSize();
     const float lo = std::max(tEnter, bottomGuess - within), hi = std::min(tExit, bottomGuess + within);
     if (!(lo < hi)) return false;
-    const float tMin = goldenMinimum(sampler, origin, direction, lo, hi);
+    LineSampler line(sampler, origin, direction);
+    const float tMin = goldenMinimum(line, lo, hi);
     if (bottom) *bottom = tMin;
-    return valleyCentre(sampler, origin, direction, hullOffset, tEnter, tExit, tMin, seed, distance);
+    return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
 }
 
 glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirection, float alpha)

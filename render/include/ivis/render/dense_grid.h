@@ -11,7 +11,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -21,6 +23,8 @@ namespace ivis::render {
 
 /// @brief Dense box of voxels (phi, exact gradient); outside the box every sample is the
 ///        background value with a zero gradient.
+struct LineQuartic;
+
 class DenseGrid {
 public:
     DenseGrid() = default;
@@ -31,6 +35,12 @@ public:
     /// @brief detail::blend's phi and gradient at world point p (background and a zero gradient
     ///        outside the box).
     float valueAndGradient(const glm::vec3& p, glm::vec3& gradient) const;
+    /// @brief The quartic phi of the cell holding origin + s direction along that line (phi as
+    ///        valueAndGradient gives it, up to rounding), into @a quartic; false outside the box.
+    bool lineQuartic(const glm::vec3& origin, const glm::vec3& direction, float s, LineQuartic& quartic) const;
+    /// @brief Index of the cell holding world point p (-1 outside the box): equal for two points
+    ///        exactly when one lineQuartic serves both.
+    std::ptrdiff_t cellIndex(const glm::vec3& p) const;
     /// @brief World-space voxel size.
     float voxelSize() const { return mVoxelSize; }
 
@@ -107,7 +117,62 @@ inline glm::vec4 blend(const glm::vec4 c[8], const glm::vec3& t, float voxelSize
     return blendCorners([v, sy, sz](int i) -> const glm::vec4& { return v[(i & 1) + (i & 2 ? sy : 0) + (i & 4 ? sz : 0)]; },
                         t, voxelSize);
 }
+
+/// @brief blendCorners's phi along the line of cell fractions a + e s through a cell whose corners
+///        are corner(i): the quartic sum_i w_i (phi_i + h g_i . (a + e s - d_i)) in s, its
+///        coefficients of s^0 .. s^4 into @a c (the trilinear weights' three linear factors times
+///        each corner's linear extrapolation, reduced along x, then y, then z).
+template <typename Corner>
+inline void blendQuartic(Corner corner, const glm::vec3& a, const glm::vec3& e, float voxelSize, float c[5])
+{
+    float base[8], slope[8];  // each corner's extrapolation along the line: base + slope s
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4& v = corner(i);
+        const glm::vec3 g(v.y, v.z, v.w), d(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1));
+        base[i] = v.x + voxelSize * (g.x * (a.x - d.x) + g.y * (a.y - d.y) + g.z * (a.z - d.z));
+        slope[i] = voxelSize * (g.x * e.x + g.y * e.y + g.z * e.z);
+    }
+    float x[4][3];  // along x: lo + (a.x + e.x s)(hi - lo), one quadratic per (dy, dz)
+    for (int j = 0; j < 4; ++j) {
+        const float d0 = base[2 * j + 1] - base[2 * j], d1 = slope[2 * j + 1] - slope[2 * j];
+        x[j][0] = base[2 * j] + a.x * d0;
+        x[j][1] = slope[2 * j] + a.x * d1 + e.x * d0;
+        x[j][2] = e.x * d1;
+    }
+    float y[2][4];  // along y: one cubic per dz
+    for (int k = 0; k < 2; ++k) {
+        const float* lo = x[2 * k];
+        const float* hi = x[2 * k + 1];
+        const float d0 = hi[0] - lo[0], d1 = hi[1] - lo[1], d2 = hi[2] - lo[2];
+        y[k][0] = lo[0] + a.y * d0;
+        y[k][1] = lo[1] + a.y * d1 + e.y * d0;
+        y[k][2] = lo[2] + a.y * d2 + e.y * d1;
+        y[k][3] = e.y * d2;
+    }
+    float d[4];  // along z: the quartic
+    for (int m = 0; m < 4; ++m) d[m] = y[1][m] - y[0][m];
+    c[0] = y[0][0] + a.z * d[0];
+    for (int m = 1; m < 4; ++m) c[m] = y[0][m] + a.z * d[m] + e.z * d[m - 1];
+    c[4] = e.z * d[3];
+}
 }  // namespace detail
+
+/// @brief phi along the straight line origin + s direction where it crosses one cell of a
+///        DenseGrid: the quartic that detail::blend's phi is there (DenseGrid::lineQuartic).
+struct LineQuartic {
+    float lo = 1.0f, hi = 0.0f;  ///< the parameters s of the line within the cell (empty: lo > hi)
+    float s0 = 0.0f;             ///< the quartic's variable is s - s0
+    float c[5] = {};             ///< its coefficients of (s - s0)^0 .. ^4
+
+    /// @brief Whether parameter @a s lies within the cell.
+    bool covers(float s) const { return s >= lo && s <= hi; }
+    /// @brief phi at parameter @a s (within the cell).
+    float at(float s) const
+    {
+        const float u = s - s0;
+        return (((c[4] * u + c[3]) * u + c[2]) * u + c[1]) * u + c[0];
+    }
+};
 
 // The samplers below are inline: curved rays call them at every step.
 
@@ -135,6 +200,37 @@ inline float DenseGrid::valueAndGradient(const glm::vec3& p, glm::vec3& gradient
     const glm::vec4 sample = detail::blendCell(mVoxels.get() + base, sy, sz, t, mVoxelSize);
     gradient = glm::vec3(sample.y, sample.z, sample.w);
     return sample.x;
+}
+
+inline std::ptrdiff_t DenseGrid::cellIndex(const glm::vec3& p) const
+{
+    std::size_t base;
+    glm::vec3 t;
+    return locate(p, base, t) ? std::ptrdiff_t(base) : -1;
+}
+
+inline bool DenseGrid::lineQuartic(const glm::vec3& origin, const glm::vec3& direction, float s,
+                                   LineQuartic& quartic) const
+{
+    std::size_t base;
+    glm::vec3 a;
+    if (!locate(origin + s * direction, base, a)) return false;
+    const glm::vec3 e = direction * mInvVoxelSize;  // the fractions' change per unit of s
+    float lo = -std::numeric_limits<float>::infinity(), hi = std::numeric_limits<float>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        if (e[k] == 0.0f) continue;
+        const float enter = -a[k] / e[k], leave = (1.0f - a[k]) / e[k];
+        lo = std::max(lo, std::min(enter, leave));
+        hi = std::min(hi, std::max(enter, leave));
+    }
+    quartic.lo = s + lo;
+    quartic.hi = s + hi;
+    quartic.s0 = s;
+    const std::size_t sy = std::size_t(mDims[0]), sz = sy * mDims[1];
+    const glm::vec4* v = mVoxels.get() + base;
+    detail::blendQuartic([v, sy, sz](int i) -> const glm::vec4& { return v[(i & 1) + (i & 2 ? sy : 0) + (i & 4 ? sz : 0)]; },
+                         a, e, mVoxelSize, quartic.c);
+    return true;
 }
 
 }  // namespace ivis::render

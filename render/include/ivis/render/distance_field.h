@@ -73,6 +73,11 @@ public:
     /// @brief Far-field values above this never use the fine band; between fineFrom() and this the
     ///        two are blended (detail::fineWeight).
     float fineUntil() const { return mFineUntil; }
+    /// @brief The dense grid every sample reads first: the far field, or the fine grid itself
+    ///        when the volume has no separate far field.
+    const DenseGrid& farGrid() const { return mFar; }
+    /// @brief Whether the fine band is separate from farGrid() (and serves below fineUntil()).
+    bool hasFineBand() const { return mHasFineBand; }
     /// @brief Voxel size of the grid that serves a sample whose value is @a phi (fine band or far field).
     float servingVoxelSize(float phi) const { return mHasFineBand && phi <= mFineUntil ? mVoxelSize : mFar.voxelSize(); }
     /// @brief Whether phi is an unsigned distance (open mesh).

@@ -1,0 +1,65 @@
+/// @file line_sampler.h
+/// @brief phi along one straight line, sampled many times a cell: the seed searches' marches,
+///        golden sections and valleys (curved_ray.cpp) sample a view ray every quarter voxel, many
+///        times in each cell of a far field several fine voxels wide.
+#pragma once
+
+#include <ivis/render/dense_grid.h>
+#include <ivis/render/distance_field.h>
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+
+namespace ivis::render {
+
+/// @brief DistanceField::Sampler::phi at the points origin + s direction of one line. Where a
+///        separate far field (coarser than the fine band) alone serves phi, the second and later
+///        samples in one far cell come from the quartic phi is along the line there (LineQuartic),
+///        a few multiply-adds instead of a blend of eight corners; they differ from the sampler's
+///        by rounding only.
+class LineSampler {
+public:
+    /// @brief Samples phi along origin + s direction with @a sampler (which must outlive this).
+    LineSampler(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction)
+        : mSampler(sampler), mOrigin(origin), mDirection(direction),
+          // Without a separate band the dense grid is the fine grid itself: a line crosses its cells
+          // with a few samples each, which a quartic does not repay.
+          mQuartics(sampler.field().hasFineBand())
+    {
+    }
+
+    /// @brief phi at origin + s direction.
+    float phi(float s);
+    /// @brief The point of the line at parameter @a s.
+    glm::vec3 point(float s) const { return mOrigin + s * mDirection; }
+    /// @brief The sampler it reads (for samples off the line).
+    DistanceField::Sampler& sampler() { return mSampler; }
+
+private:
+    DistanceField::Sampler& mSampler;
+    glm::vec3 mOrigin, mDirection;
+    LineQuartic mQuartic;               ///< the far cell sampled twice most recently
+    std::ptrdiff_t mLastCell = -1;      ///< the far cell of the last sample the sampler served
+    bool mQuartics;                     ///< whether the far cells are coarse enough for quartics
+};
+
+inline float LineSampler::phi(float s)
+{
+    const DistanceField& field = mSampler.field();
+    if (!mQuartic.covers(s)) {
+        const glm::vec3 p = point(s);
+        if (!mQuartics) return mSampler.phi(p);
+        const std::ptrdiff_t cell = field.farGrid().cellIndex(p);
+        // A cell's first sample (a march may cross it with one) is not worth its quartic.
+        if (cell < 0 || cell != mLastCell || !field.farGrid().lineQuartic(mOrigin, mDirection, s, mQuartic)) {
+            mLastCell = cell;
+            return mSampler.phi(p);
+        }
+    }
+    const float far = mQuartic.at(s);
+    if (far > field.fineUntil()) return far;
+    return mSampler.phi(point(s));  // the band serves: the sampler blends it in
+}
+
+}  // namespace ivis::render

@@ -1,0 +1,86 @@
+// LineQuartic and LineSampler on the unit sphere (fine band at resolution 100, far field at 40):
+// the quartic of a far cell against DenseGrid::valueAndGradient at points along the line inside
+// it, its parameter range against the cells the points fall in, and LineSampler against
+// DistanceField::Sampler::phi along lines through the band and the far field.
+#include "render/scene_fixture.h"
+
+#include <ivis/render/distance_field.h>
+#include <ivis/render/line_sampler.h>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace ivis::render {
+namespace {
+
+/// A random unit direction.
+glm::vec3 randomDirection(std::mt19937& random)
+{
+    std::normal_distribution<float> normal;
+    return glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+}
+
+TEST(LineQuartic, IsTheBlendAlongTheLineWithinItsCell)
+{
+    const DistanceField field(test::sphereWithFarField().volume);
+    const DenseGrid& far = field.farGrid();
+    const float voxel = far.voxelSize();
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-1.6f, 1.6f);
+    int cells = 0;
+    for (int line = 0; line < 2000; ++line) {
+        const glm::vec3 origin(coordinate(random), coordinate(random), coordinate(random));
+        const glm::vec3 direction = randomDirection(random);
+        LineQuartic quartic;
+        if (!far.lineQuartic(origin, direction, 0.0f, quartic)) continue;
+        ++cells;
+        ASSERT_TRUE(quartic.covers(0.0f));
+        ASSERT_LE(quartic.hi - quartic.lo, std::sqrt(3.0f) * voxel * 1.0001f) << "no chord of a cell is longer";
+        const std::ptrdiff_t cell = far.cellIndex(origin);
+        for (int k = 0; k <= 20; ++k) {
+            const float s = quartic.lo + (quartic.hi - quartic.lo) * float(k) / 20.0f;
+            glm::vec3 gradient;
+            const float blended = far.valueAndGradient(origin + s * direction, gradient);
+            EXPECT_NEAR(quartic.at(s), blended, 2e-6f * (1.0f + std::abs(blended))) << "line " << line << " s " << s;
+        }
+        // Just inside its range the line is in the cell; just beyond it, in a neighbouring one.
+        const float inside = 1e-3f * voxel;
+        EXPECT_EQ(far.cellIndex(origin + (quartic.lo + inside) * direction), cell);
+        EXPECT_EQ(far.cellIndex(origin + (quartic.hi - inside) * direction), cell);
+        EXPECT_NE(far.cellIndex(origin + (quartic.lo - inside) * direction), cell);
+        EXPECT_NE(far.cellIndex(origin + (quartic.hi + inside) * direction), cell);
+    }
+    EXPECT_GT(cells, 1500) << "most lines start inside the far field's box";
+}
+
+TEST(LineSampler, GivesTheSamplersPhiAlongALine)
+{
+    const DistanceField field(test::sphereWithFarField().volume);
+    ASSERT_TRUE(field.hasFineBand()) << "the quartics serve only a separate far field";
+    auto sampler = field.sampler();
+    std::mt19937 random(11);
+    const float spacing = 0.25f * field.voxelSize();
+    int inBand = 0, inFarField = 0;
+    for (int line = 0; line < 200; ++line) {
+        // Lines from outside the hull passing the sphere at 0 to 0.6 from its surface.
+        const glm::vec3 direction = randomDirection(random);
+        glm::vec3 side = glm::normalize(glm::cross(direction, randomDirection(random)));
+        const float pass = 1.0f + 0.6f * float(line) / 200.0f;
+        const glm::vec3 origin = pass * side - 2.0f * direction;
+        LineSampler samples(sampler, origin, direction);
+        for (float s = 0.0f; s < 4.0f; s += spacing) {
+            const float expected = sampler.phi(origin + s * direction);
+            EXPECT_NEAR(samples.phi(s), expected, 2e-6f * (1.0f + std::abs(expected))) << "line " << line << " s " << s;
+            (expected > field.fineUntil() ? inFarField : inBand) += 1;
+        }
+    }
+    EXPECT_GT(inBand, 1000);
+    EXPECT_GT(inFarField, 50000);
+}
+
+}  // namespace
+}  // namespace ivis::render
