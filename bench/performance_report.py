@@ -134,7 +134,8 @@ centre of its view ray's valley, sought near the bottom interpolated from the la
 its neighbours do not show it stable, the stability rule traces two probes. What makes the frames
 as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
-  lattice's valley bottoms, background blocks skipped, the stability rule's probes only where needed.
+  lattice's valley bottoms, the lattice's own searches started from their blocks' corners' bottoms
+  (volumes above 200), background blocks skipped, the stability rule's probes only where needed.
 - **Four rays in lockstep** (`CurvedRayMap::traceMany`): a ray's steps are a chain of dependent
   memory reads; four rays stepping in turn overlap them (more lanes, a brick cache per lane and
   prefetching did not help: [decisions/lockstep-lanes.md](decisions/lockstep-lanes.md)). The
@@ -145,8 +146,9 @@ as fast as they are:
   ([decisions/simd-blend.md](decisions/simd-blend.md)).
 - **phi along a view ray from quartics** (`render/include/ivis/render/line_sampler.h`): the seed
   search's samples of one far cell after its first come from the quartic the blend is along the
-  ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200;
-  [decisions/line-quartics.md](decisions/line-quartics.md)).
+  ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200).
+  What the seed search costs and what these two change:
+  [decisions/seed-search-cost.md](decisions/seed-search-cost.md).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far

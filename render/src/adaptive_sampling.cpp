@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -41,6 +42,15 @@ struct Block {
     int x, y, size;
 };
 
+/// A lattice point to sample and, where its block's corners were seeded, a valley bottom to
+/// start its seed search from (CurvedRayMap::aimedStartHinted).
+struct LatticePoint {
+    glm::ivec2 at;
+    bool hinted = false;
+    float hint = 0.0f;   ///< the bilinear map of the corners' bottoms there
+    float reach = 0.0f;  ///< how far from it to seek: the corners' spread about it and the tolerance
+};
+
 /// The Lagrange weights of the three lattice points 0, 1/2 and 1 of a block side at fraction u.
 std::array<float, 3> quadraticWeights(float u)
 {
@@ -55,7 +65,11 @@ public:
                  PixelMapping* mappings, TileCounts& counts)
         : mScreen(screen), mRays(rays), mOptions(options), mTile(tile), mOffset(offset), mSampler(sampler),
           mMappings(mappings), mCounts(counts), mStability(rays.method().stabilityScale()),
-          mBottomTolerance(options.bottomTolerance * sampler.field().voxelSize())
+          mBottomTolerance(options.bottomTolerance * sampler.field().voxelSize()),
+          // Where the far field is the fine grid itself (volume 200) a view ray's coarse march is a
+          // few dozen samples, which a hint does not measurably spare: there every lattice point
+          // marches its whole view ray as the full trace does.
+          mHintSeeds(sampler.field().hasFineBand())
     {
     }
 
@@ -114,35 +128,55 @@ private:
         return directBelow(x1, y1) - directBelow(x0, y1) - directBelow(x1, y0) + directBelow(x0, y0) > 0;
     }
 
-    /// The points of the blocks' 3 x 3 lattices not yet sampled, each once.
-    std::vector<glm::ivec2> latticeOf(const std::vector<Block>& blocks)
+    /// The points of the blocks' 3 x 3 lattices not yet sampled, each once, hinted by the bottoms of
+    /// their block's corners where all four were seeded (the corners of a split block's quarters).
+    std::vector<LatticePoint> latticeOf(const std::vector<Block>& blocks)
     {
-        std::vector<glm::ivec2> points;
+        std::vector<LatticePoint> points;
         for (const Block& block : blocks) {
             const int half = block.size / 2;
+            const PixelRay* corners[4] = {&ray(block.x, block.y), &ray(block.x + block.size, block.y),
+                                          &ray(block.x, block.y + block.size),
+                                          &ray(block.x + block.size, block.y + block.size)};
+            bool hinted = mHintSeeds;
+            for (const PixelRay* c : corners) hinted = hinted && c->seeded;
+            const auto bottom = [&corners](int k) { return corners[k]->start.valleyBottom; };
             for (int j = 0; j <= 2; ++j)
                 for (int i = 0; i <= 2; ++i) {
                     const int x = block.x + i * half, y = block.y + j * half;
                     if (ray(x, y).state != PointState::Unknown || mQueued[std::size_t(y) * kSide + x]) continue;
                     mQueued[std::size_t(y) * kSide + x] = true;
-                    points.push_back({x, y});
+                    LatticePoint point{{x, y}};
+                    if (hinted) {
+                        const float u = 0.5f * float(i), v = 0.5f * float(j);
+                        point.hinted = true;
+                        point.hint =
+                            (1.0f - v) * ((1.0f - u) * bottom(0) + u * bottom(1)) + v * ((1.0f - u) * bottom(2) + u * bottom(3));
+                        for (int k = 0; k < 4; ++k) point.reach = std::max(point.reach, std::abs(bottom(k) - point.hint));
+                        point.reach += mBottomTolerance;
+                    }
+                    points.push_back(point);
                 }
         }
         return points;
     }
 
-    /// Seeds, aims and traces the rays of @a points (lattice points: their own seeds), the rays together.
-    void sample(const std::vector<glm::ivec2>& points)
+    /// Seeds, aims and traces the rays of @a points (lattice points: their own seeds, sought from
+    /// their hints where they have one), the rays together.
+    void sample(const std::vector<LatticePoint>& points)
     {
         std::vector<PixelRay*> launched;
-        for (const glm::ivec2& q : points) {
-            PixelRay& r = ray(q.x, q.y);
-            const glm::dvec2 at = position(q.x, q.y);
-            if (!inTile(q.x, q.y) && mScreen.directHit(at.x, at.y).region == Region::Direct) {
+        for (const LatticePoint& q : points) {
+            PixelRay& r = ray(q.at.x, q.at.y);
+            const glm::dvec2 at = position(q.at.x, q.at.y);
+            if (!inTile(q.at.x, q.at.y) && mScreen.directHit(at.x, at.y).region == Region::Direct) {
                 r.state = PointState::Direct;
                 continue;
             }
-            aimed(r, mRays.aimedStart(at.x, at.y, mSampler, r.start), launched);
+            aimed(r,
+                  q.hinted ? mRays.aimedStartHinted(at.x, at.y, q.hint, q.reach, mSampler, r.start)
+                           : mRays.aimedStart(at.x, at.y, mSampler, r.start),
+                  launched);
         }
         trace(launched);
     }
@@ -344,6 +378,7 @@ private:
     TileCounts& mCounts;
     std::optional<StabilityScale> mStability;
     float mBottomTolerance;  ///< normalised units along the view ray
+    bool mHintSeeds;         ///< whether lattice points start their seed search from their corners' bottoms
     std::array<PixelRay, kSide * kSide> mRays_{};
     std::array<bool, kSide * kSide> mQueued{};
     std::array<int, kSide * kSide> mDirectBelow{};  ///< direct pixels above and left of each lattice point

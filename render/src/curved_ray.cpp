@@ -177,6 +177,32 @@ bool valleyCentre(LineSampler& line, float hullOffset, float tEnter, float tExit
     return distance < hullOffset;
 }
 
+/// A march along @a line within [tEnter, tExit] every @a step or farther, from the least phi
+/// @a best seen so far (at @a tBest), which it lowers: phi is 1-Lipschitz, so nothing before
+/// t + (phi - best) comes below best (or below the hull, while best is the hull offset).
+void marchForLeast(LineSampler& line, float tEnter, float tExit, float step, float& best, float& tBest)
+{
+    for (float t = tEnter; t < tExit;) {
+        const float phi = line.phi(t);
+        if (phi < best) best = phi, tBest = t;
+        t += std::max(phi - best, step);
+    }
+}
+
+/// findClosestApproach from the fine march on, @a best (at @a tBest) bounding the least phi from above.
+bool closestApproachFrom(LineSampler& line, float hullOffset, float tEnter, float tExit, float best, float tBest,
+                         glm::vec3& seed, float& distance, float* bottom)
+{
+    const float tolerance = kClosestApproachSpacing * line.sampler().field().voxelSize();
+    marchForLeast(line, tEnter, tExit, tolerance, best, tBest);
+    if (!(best < hullOffset)) return false;
+    // Golden-section search for the minimum around the best sample.
+    const float tMin =
+        goldenMinimum(line, std::max(tEnter, tBest - 2.0f * tolerance), std::min(tExit, tBest + 2.0f * tolerance));
+    if (bottom) *bottom = tMin;
+    return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
+}
+
 }  // namespace
 
 bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
@@ -186,22 +212,32 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
     LineSampler line(sampler, origin, direction);
-    float best = hullOffset, tBest = tEnter;
     // A coarse march first: its best sample bounds the minimum from above, so the fine march
     // skips by phi - best from the start instead of creeping down the slope toward it.
-    for (float step : {kClosestApproachCoarseSteps * tolerance, tolerance})
-        for (float t = tEnter; t < tExit;) {
-            const float phi = line.phi(t);
-            if (phi < best) best = phi, tBest = t;
-            // phi is 1-Lipschitz: nothing before t + (phi - best) comes below best (or below the hull).
-            t += std::max(phi - best, step);
-        }
-    if (!(best < hullOffset)) return false;
-    // Golden-section search for the minimum around the best sample.
-    const float tMin =
-        goldenMinimum(line, std::max(tEnter, tBest - 2.0f * tolerance), std::min(tExit, tBest + 2.0f * tolerance));
-    if (bottom) *bottom = tMin;
-    return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
+    float best = hullOffset, tBest = tEnter;
+    marchForLeast(line, tEnter, tExit, kClosestApproachCoarseSteps * tolerance, best, tBest);
+    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, seed, distance, bottom);
+}
+
+bool findClosestApproachHinted(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                               float hullOffset, const core::Bounds3& hullBox, float bottomHint, float reach,
+                               glm::vec3& seed, float& distance, float* bottom)
+{
+    float tEnter, tExit;
+    if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
+    LineSampler line(sampler, origin, direction);
+    const float lo = std::max(tEnter, bottomHint - reach), hi = std::min(tExit, bottomHint + reach);
+    float best = hullOffset, tBest = tEnter;
+    if (lo < hi) {
+        const float tHint = goldenMinimum(line, lo, hi);
+        const float phiHint = line.phi(tHint);
+        if (phiHint < best) best = phiHint, tBest = tHint;
+    }
+    if (!(best < hullOffset)) {  // nothing near the hint: the coarse march after all
+        const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
+        marchForLeast(line, tEnter, tExit, kClosestApproachCoarseSteps * tolerance, best, tBest);
+    }
+    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, seed, distance, bottom);
 }
 
 bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,

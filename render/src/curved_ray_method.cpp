@@ -89,8 +89,29 @@ bool CurvedRayMap::aimedStartNear(double x, double y, float bottomGuess, float r
 {
     const core::CameraRay ray = mFrame.ray(x, y);
     const glm::vec3 origin(ray.origin), direction(ray.direction);
-    if (!findClosestApproachNear(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomGuess,
-                                 reach, start.seed, start.seedDistance, &start.valleyBottom)) {
+    return aimFromClosestApproach(
+        origin, direction,
+        findClosestApproachNear(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomGuess,
+                                reach, start.seed, start.seedDistance, &start.valleyBottom),
+        sampler, start);
+}
+
+bool CurvedRayMap::aimedStartHinted(double x, double y, float bottomHint, float reach, DistanceField::Sampler& sampler,
+                                    CurvedRayStart& start) const
+{
+    const core::CameraRay ray = mFrame.ray(x, y);
+    const glm::vec3 origin(ray.origin), direction(ray.direction);
+    return aimFromClosestApproach(
+        origin, direction,
+        findClosestApproachHinted(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomHint,
+                                  reach, start.seed, start.seedDistance, &start.valleyBottom),
+        sampler, start);
+}
+
+bool CurvedRayMap::aimFromClosestApproach(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
+                                          DistanceField::Sampler& sampler, CurvedRayStart& start) const
+{
+    if (!seeded) {
         start.refusal = Refusal::NoSeed;
         return false;
     }

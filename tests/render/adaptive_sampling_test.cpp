@@ -1,9 +1,11 @@
 // Adaptive image sampling against the full trace: the same regions and the same landings (the
-// criteria of docs/rendering.md, "Adaptive image sampling"), on the generated vessel tree and a
-// real artery, and the bracketed valley search against the whole-ray one.
+// criteria of docs/rendering.md, "Adaptive image sampling"), on the generated vessel tree (its far
+// field the fine grid, and one four times coarser) and a real artery, and the bracketed valley
+// search against the whole-ray one.
 #include "render/scene_fixture.h"
 #include "test_support.h"
 
+#include <ivis/core/procedural_scenes.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/curved_ray.h>
 #include <ivis/render/method_registry.h>
@@ -78,6 +80,19 @@ TEST(AdaptiveSampling, TheWrapsPictureIsTheFullTracesOnTheVesselTree)
         EXPECT_GT(d.adaptive.seedsInterpolated, d.indirectInBoth / 10);
         EXPECT_GT(d.adaptive.pixelsSkipped, d.pixels / 10);
     }
+}
+
+TEST(AdaptiveSampling, TheWrapsPictureIsTheFullTracesWhereTheFarFieldIsCoarser)
+{
+    // A far field four times coarser than the band, as at volume 800 (200): the lattice's seeds
+    // start from their block's corners' bottoms and the view rays' samples come from far cells'
+    // quartics (docs/rendering.md, "Adaptive image sampling" and "phi along a view ray").
+    const test::SceneFixture fixture(core::makeVesselTree(), 160, 40);
+    ASSERT_TRUE(fixture.scene->distance().hasFineBand());
+    const PictureDifference d =
+        compareWithFullTrace(*fixture.scene, core::Camera::fromAngles(70.0, 30.0), "inversevis-wrap", 400);
+    expectSamePicture(d, "vessel tree, far field 40");
+    EXPECT_GT(d.adaptive.seedsInterpolated, d.indirectInBoth / 10);
 }
 
 TEST(AdaptiveSampling, TheWrapsPictureIsTheFullTracesOnARealArtery)

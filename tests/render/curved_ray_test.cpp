@@ -168,6 +168,46 @@ TEST(CurvedRay, ClosestApproachIsTheLeastDistanceAlongTheRay)
 // A view ray that skims a flat face at a constant height meets no single closest point: phi is the
 // same all along the face. The seed is the face's middle for every such ray, so that neighbouring
 // pixels' seeds stay together (the lowest sample alone fell anywhere along the face).
+TEST(CurvedRay, HintedClosestApproachFindsTheRaysLowestValleyFromAnyHint)
+{
+    // On the vessel tree a view ray passes several branches: a hint at its own bottom, a few voxels
+    // off it, or at the middle of its interval (often another branch's valley) must lead to the
+    // valley findClosestApproach finds, its seed within a hundredth of a voxel. (Its bottom may be
+    // another of a flat valley's voxel-sized bumps, the valley's centre not.)
+    const auto& fixture = test::vesselScene();
+    auto sampler = fixture.scene->distance().sampler();
+    const float voxel = fixture.scene->distance().voxelSize();
+    const core::Bounds3 box = hullBounds(fixture.field.mesh, 0.4f, voxel);
+    const core::CameraFrame frame(core::Camera::fromAngles(60.0, 30.0), 50, 50);
+    int approached = 0, hintedElsewhere = 0;
+    for (int y = 0; y < 50; ++y)
+        for (int x = 0; x < 50; ++x) {
+            const core::CameraRay ray = frame.ray(x + 0.5, y + 0.5);
+            const glm::vec3 origin(ray.origin), direction(ray.direction);
+            if (fixture.scene->bvh().intersect(origin, direction).hit()) continue;
+            glm::vec3 seed;
+            float distance, bottom = 0.0f;
+            const bool found = findClosestApproach(sampler, origin, direction, 0.4f, box, seed, distance, &bottom);
+            float tEnter, tExit;
+            if (!core::rayBoxInterval(origin, direction, box, tEnter, tExit)) continue;
+            approached += found;
+            const float middle = 0.5f * (tEnter + tExit);
+            for (const float hint : {bottom, bottom + 3.0f * voxel, bottom - 3.0f * voxel, middle}) {
+                glm::vec3 hintedSeed;
+                float hintedDistance;
+                const bool hintedFound = findClosestApproachHinted(sampler, origin, direction, 0.4f, box, hint, voxel,
+                                                                   hintedSeed, hintedDistance);
+                ASSERT_EQ(hintedFound, found) << x << ", " << y << " hint " << hint;
+                if (!found) continue;
+                hintedElsewhere += std::abs(hint - bottom) > 10.0f * voxel;
+                EXPECT_LT(glm::length(hintedSeed - seed), 0.01f * voxel) << x << ", " << y << " hint " << hint;
+                EXPECT_NEAR(hintedDistance, distance, 0.01f * voxel) << x << ", " << y << " hint " << hint;
+            }
+        }
+    EXPECT_GT(approached, 300);
+    EXPECT_GT(hintedElsewhere, 50) << "some hints must lie far from the ray's lowest valley";
+}
+
 TEST(CurvedRay, ClosestApproachTakesTheMiddleOfAFlatValley)
 {
     // A box 2 long in z, 1 wide in x, 0.4 high in y, built as the volumes of the programs are.

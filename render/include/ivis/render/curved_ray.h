@@ -70,6 +70,15 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
                          float hullOffset, const core::Bounds3& hullBox, glm::vec3& seed, float& distance,
                          float* bottom = nullptr);
 
+/// @brief findClosestApproach with its coarse march replaced by a golden-section search within
+///        @a reach of @a bottomHint (a neighbouring view ray's bottom, or one interpolated from
+///        several): the phi found there bounds the fine march's least from the start, and the fine
+///        march still visits the whole ray, so the valley is the ray's lowest as findClosestApproach
+///        finds it. Without a phi below the hull near the hint, the coarse march runs after all.
+bool findClosestApproachHinted(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
+                               float hullOffset, const core::Bounds3& hullBox, float bottomHint, float reach,
+                               glm::vec3& seed, float& distance, float* bottom = nullptr);
+
 /// @brief findClosestApproach with the valley's bottom sought only near @a bottomGuess (one
 ///        interpolated from neighbouring view rays' bottoms): golden-section search within @a reach
 ///        and two fine samples of it, no march along the whole ray to find where phi is least.

@@ -185,6 +185,12 @@ public:
     /// @return false when the pixel gets no ray (start.refusal says why)
     bool aimedStartNear(double x, double y, float bottomGuess, float reach, DistanceField::Sampler& sampler,
                         CurvedRayStart& start) const;
+    /// @brief aimedStart() of a pixel whose seed search starts from a neighbouring bottom
+    ///        @a bottomHint (findClosestApproachHinted, within @a reach of it), for the
+    ///        closest-approach seed rule.
+    /// @return false when the pixel gets no ray (start.refusal says why)
+    bool aimedStartHinted(double x, double y, float bottomHint, float reach, DistanceField::Sampler& sampler,
+                          CurvedRayStart& start) const;
     /// @brief The distance (normalised) between the view rays of neighbouring pixels at point @a p.
     float pixelFootprint(const glm::vec3& p) const;
     /// @brief The method's stability rule on an aimed start: its own ray traced (unless
@@ -223,6 +229,10 @@ private:
     bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
     /// The rest of a start whose seed is set: gradient, tangent, alignment, the method's aim.
     bool aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// aimFromSeed() of the view ray origin + t direction when a closest approach @a seeded it;
+    /// else the refusal NoSeed.
+    bool aimFromClosestApproach(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
+                                DistanceField::Sampler& sampler, CurvedRayStart& start) const;
 
     const RenderScene& mScene;
     core::CameraFrame mFrame;
