@@ -22,7 +22,7 @@ class LineSampler {
 public:
     /// @brief Samples phi along origin + s direction with @a sampler (which must outlive this).
     LineSampler(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction)
-        : mSampler(sampler), mOrigin(origin), mDirection(direction),
+        : mSampler(sampler), mOrigin(origin), mDirection(direction), mFineUntil(sampler.field().fineUntil()),
           // Without a separate band the dense grid is the fine grid itself: a line crosses its cells
           // with a few samples each, which a quartic does not repay.
           mQuartics(sampler.field().hasFineBand())
@@ -30,36 +30,40 @@ public:
     }
 
     /// @brief phi at origin + s direction.
-    float phi(float s);
+    [[gnu::always_inline]] float phi(float s)
+    {
+        if (!mQuartic.covers(s)) return mQuartics ? phiBeyondQuartic(s) : mSampler.phi(point(s));
+        const float far = mQuartic.at(s);
+        return far > mFineUntil ? far : mSampler.phi(point(s));  // below fineUntil the band serves
+    }
     /// @brief The point of the line at parameter @a s.
     glm::vec3 point(float s) const { return mOrigin + s * mDirection; }
     /// @brief The sampler it reads (for samples off the line).
     DistanceField::Sampler& sampler() { return mSampler; }
 
 private:
+    /// phi at a parameter outside the quartic's cell, where quartics serve: the sampler's, or a new
+    /// cell's quartic at the cell's second sample.
+    [[gnu::noinline]] float phiBeyondQuartic(float s)
+    {
+        const glm::vec3 p = point(s);
+        const DenseGrid& far = mSampler.field().farGrid();
+        const std::ptrdiff_t cell = far.cellIndex(p);
+        // A cell's first sample (a march may cross it with one) is not worth its quartic.
+        if (cell < 0 || cell != mLastCell || !far.lineQuartic(mOrigin, mDirection, s, mQuartic)) {
+            mLastCell = cell;
+            return mSampler.phi(p);
+        }
+        const float value = mQuartic.at(s);
+        return value > mFineUntil ? value : mSampler.phi(p);
+    }
+
     DistanceField::Sampler& mSampler;
     glm::vec3 mOrigin, mDirection;
+    float mFineUntil;                   ///< the field's fineUntil()
     LineQuartic mQuartic;               ///< the far cell sampled twice most recently
     std::ptrdiff_t mLastCell = -1;      ///< the far cell of the last sample the sampler served
     bool mQuartics;                     ///< whether the far cells are coarse enough for quartics
 };
-
-inline float LineSampler::phi(float s)
-{
-    const DistanceField& field = mSampler.field();
-    if (!mQuartic.covers(s)) {
-        const glm::vec3 p = point(s);
-        if (!mQuartics) return mSampler.phi(p);
-        const std::ptrdiff_t cell = field.farGrid().cellIndex(p);
-        // A cell's first sample (a march may cross it with one) is not worth its quartic.
-        if (cell < 0 || cell != mLastCell || !field.farGrid().lineQuartic(mOrigin, mDirection, s, mQuartic)) {
-            mLastCell = cell;
-            return mSampler.phi(p);
-        }
-    }
-    const float far = mQuartic.at(s);
-    if (far > field.fineUntil()) return far;
-    return mSampler.phi(point(s));  // the band serves: the sampler blends it in
-}
 
 }  // namespace ivis::render
