@@ -100,7 +100,7 @@ private:
 
 // Inline: curved rays and shadow rays sample at every step.
 
-inline float DistanceField::Sampler::phi(const glm::vec3& p)
+[[gnu::always_inline]] inline float DistanceField::Sampler::phi(const glm::vec3& p)
 {
     glm::vec3 gradient;
     return phiAndGradient(p, gradient);
