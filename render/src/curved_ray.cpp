@@ -177,6 +177,16 @@ bool valleyCentre(LineSampler& line, float hullOffset, float tEnter, float tExit
     return distance < hullOffset;
 }
 
+/// The golden-section minimum of @a line within @a within of @a guess and within [tEnter, tExit]
+/// into @a tMin; false when that bracket is empty.
+bool goldenMinimumNear(LineSampler& line, float tEnter, float tExit, float guess, float within, float& tMin)
+{
+    const float lo = std::max(tEnter, guess - within), hi = std::min(tExit, guess + within);
+    if (!(lo < hi)) return false;
+    tMin = goldenMinimum(line, lo, hi);
+    return true;
+}
+
 /// A march along @a line within [tEnter, tExit] every @a step or farther, from the least phi
 /// @a best seen so far (at @a tBest), which it lowers: phi is 1-Lipschitz, so nothing before
 /// t + (phi - best) comes below best (or below the hull, while best is the hull offset).
@@ -226,10 +236,8 @@ bool findClosestApproachHinted(DistanceField::Sampler& sampler, const glm::vec3&
     float tEnter, tExit;
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     LineSampler line(sampler, origin, direction);
-    const float lo = std::max(tEnter, bottomHint - reach), hi = std::min(tExit, bottomHint + reach);
-    float best = hullOffset, tBest = tEnter;
-    if (lo < hi) {
-        const float tHint = goldenMinimum(line, lo, hi);
+    float best = hullOffset, tBest = tEnter, tHint;
+    if (goldenMinimumNear(line, tEnter, tExit, bottomHint, reach, tHint)) {
         const float phiHint = line.phi(tHint);
         if (phiHint < best) best = phiHint, tBest = tHint;
     }
@@ -247,10 +255,9 @@ bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& o
     float tEnter, tExit;
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     const float within = reach + 2.0f * kClosestApproachSpacing * sampler.field().voxelSize();
-    const float lo = std::max(tEnter, bottomGuess - within), hi = std::min(tExit, bottomGuess + within);
-    if (!(lo < hi)) return false;
     LineSampler line(sampler, origin, direction);
-    const float tMin = goldenMinimum(line, lo, hi);
+    float tMin;
+    if (!goldenMinimumNear(line, tEnter, tExit, bottomGuess, within, tMin)) return false;
     if (bottom) *bottom = tMin;
     return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
 }

@@ -76,12 +76,7 @@ bool CurvedRayMap::seedFromRay(const core::CameraRay& ray, DistanceField::Sample
             ? findClosestApproach(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed,
                                   start.seedDistance, &start.valleyBottom)
             : findHullExit(sampler, glm::vec3(ray.origin), direction, hullOffset, mHullBox, start.seed);
-    if (!seeded) {
-        start.refusal = Refusal::NoSeed;
-        return false;
-    }
-    start.rayParameter = glm::dot(start.seed - glm::vec3(ray.origin), direction);
-    return aimFromSeed(direction, sampler, start);
+    return aimFromFoundSeed(glm::vec3(ray.origin), direction, seeded, sampler, start);
 }
 
 bool CurvedRayMap::aimedStartNear(double x, double y, float bottomGuess, float reach, DistanceField::Sampler& sampler,
@@ -89,7 +84,7 @@ bool CurvedRayMap::aimedStartNear(double x, double y, float bottomGuess, float r
 {
     const core::CameraRay ray = mFrame.ray(x, y);
     const glm::vec3 origin(ray.origin), direction(ray.direction);
-    return aimFromClosestApproach(
+    return aimFromFoundSeed(
         origin, direction,
         findClosestApproachNear(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomGuess,
                                 reach, start.seed, start.seedDistance, &start.valleyBottom),
@@ -101,15 +96,15 @@ bool CurvedRayMap::aimedStartHinted(double x, double y, float bottomHint, float 
 {
     const core::CameraRay ray = mFrame.ray(x, y);
     const glm::vec3 origin(ray.origin), direction(ray.direction);
-    return aimFromClosestApproach(
+    return aimFromFoundSeed(
         origin, direction,
         findClosestApproachHinted(sampler, origin, direction, mMethod.rayParams().hullOffset, mHullBox, bottomHint,
                                   reach, start.seed, start.seedDistance, &start.valleyBottom),
         sampler, start);
 }
 
-bool CurvedRayMap::aimFromClosestApproach(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
-                                          DistanceField::Sampler& sampler, CurvedRayStart& start) const
+bool CurvedRayMap::aimFromFoundSeed(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
+                                    DistanceField::Sampler& sampler, CurvedRayStart& start) const
 {
     if (!seeded) {
         start.refusal = Refusal::NoSeed;

@@ -229,10 +229,10 @@ private:
     bool seedFromRay(const core::CameraRay& ray, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
     /// The rest of a start whose seed is set: gradient, tangent, alignment, the method's aim.
     bool aimFromSeed(const glm::vec3& direction, DistanceField::Sampler& sampler, CurvedRayStart& start) const;
-    /// aimFromSeed() of the view ray origin + t direction when a closest approach @a seeded it;
-    /// else the refusal NoSeed.
-    bool aimFromClosestApproach(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
-                                DistanceField::Sampler& sampler, CurvedRayStart& start) const;
+    /// aimFromSeed() of the view ray origin + t direction when its seed search @a seeded it (its
+    /// parameter along the ray set first); else the refusal NoSeed.
+    bool aimFromFoundSeed(const glm::vec3& origin, const glm::vec3& direction, bool seeded,
+                          DistanceField::Sampler& sampler, CurvedRayStart& start) const;
 
     const RenderScene& mScene;
     core::CameraFrame mFrame;
