@@ -34,16 +34,23 @@ render::RenderResult CpuTracer::renderMoving(const render::RenderScene& scene, c
 }
 
 void CpuTracer::startResting(const render::RenderScene& scene, const core::Camera& camera,
-                             const render::RenderOptions& options)
+                             const render::RenderOptions& options, void (*done)())
 {
     cancel();
-    mResting = std::async(std::launch::async,
-                          [&scene, camera, options, this] { return render::renderImage(scene, camera, options, &mCancel); });
+    std::packaged_task<render::RenderResult()> task(
+        [&scene, camera, options, this] { return render::renderImage(scene, camera, options, &mCancel); });
+    mResting = task.get_future();
+    // done() only once the picture is ready (or the render failed): a caller woken by it finds it.
+    mWorker = std::thread([task = std::move(task), done]() mutable {
+        task();
+        if (done) done();
+    });
 }
 
 std::optional<render::RenderResult> CpuTracer::takeResting()
 {
     if (!mResting.valid() || mResting.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    mWorker.join();
     try {
         return mResting.get();
     } catch (const Cancelled&) {
@@ -55,7 +62,7 @@ bool CpuTracer::cancel()
 {
     if (!mResting.valid()) return false;
     mCancel.raised = true;
-    mResting.wait();
+    mWorker.join();
     try {
         mResting.get();
     } catch (const Cancelled&) {

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <future>
 #include <optional>
+#include <thread>
 
 namespace ivis::app {
 
@@ -38,8 +39,10 @@ public:
     /// @throw what renderImage throws
     render::RenderResult renderMoving(const render::RenderScene& scene, const core::Camera& camera,
                                       render::RenderOptions options);
-    /// @brief Starts the full-size picture of @a options in the background (cancelling one running).
-    void startResting(const render::RenderScene& scene, const core::Camera& camera, const render::RenderOptions& options);
+    /// @brief Starts the full-size picture of @a options in the background (cancelling one running);
+    ///        the background thread calls @a done (if any) once the picture is ready or cancelled.
+    void startResting(const render::RenderScene& scene, const core::Camera& camera, const render::RenderOptions& options,
+                      void (*done)() = nullptr);
     /// @brief The resting picture once it is done (once); nothing while it runs or when none was started.
     /// @throw what its render threw (not Cancelled: a cancelled picture is dropped)
     std::optional<render::RenderResult> takeResting();
@@ -63,7 +66,8 @@ private:
     std::chrono::steady_clock::time_point mLastMoving;  ///< when the last moving frame started
     double mLastSeconds = 0.0;                          ///< the last moving frame's render time
     CancelFlag mCancel;
-    std::future<render::RenderResult> mResting;
+    std::future<render::RenderResult> mResting;  ///< the resting picture, while it is not taken
+    std::thread mWorker;                         ///< the thread rendering it (joined once it is done)
 };
 
 }  // namespace ivis::app

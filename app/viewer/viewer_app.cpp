@@ -196,9 +196,9 @@ int ViewerApp::runInteractive()
     int lastWidth = 0, lastHeight = 0, settledFrames = 0;
     while (!glfwWindowShouldClose(mWindow)) {
         const bool busy = mDirty || mLoader || jobRunning() || mAnimation.started() ||
-                          (mRestWanted && !mInteraction.moving(now()));
+                          (mRestWanted && !cameraMovesForCpu());
         if (busy) glfwPollEvents();
-        else if (mCpuTracer.resting()) glfwWaitEventsTimeout(0.05);  // the CPU's picture takes both cores
+        else if (mCpuTracer.resting()) glfwWaitEvents();  // until an input or the CPU's picture is done
         else glfwWaitEventsTimeout(mPlaying ? std::clamp(mNextStepTime - now(), 0.001, 0.25) : 0.25);
         pollLoader();
         const double time = now();
@@ -246,7 +246,7 @@ int ViewerApp::runInteractive()
             const int width = std::max(16, int(std::lround(picture.width * scale)));
             const int height = std::max(16, int(std::lround(picture.height * scale)));
             if (tracesOnCpu()) {
-                traceOnCpu(width, height, mInteraction.moving(now()) || mAnimation.started());
+                traceOnCpu(width, height, cameraMovesForCpu());
             } else if (mDirty || width != lastWidth || height != lastHeight) {
                 renderFrame(width, height);
                 lastWidth = width;

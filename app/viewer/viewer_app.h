@@ -85,6 +85,9 @@ private:
     /// is stale, the full picture in the background once the camera rests (@a moving false), shown
     /// when it is done; true when the full picture was shown this call.
     bool traceOnCpu(int width, int height, bool moving);
+    /// Whether the camera moves for the CPU's picture: during a drag, a wheel click's rest time or
+    /// an eased camera; a released drag rests at once (its full picture is cancelled by a move).
+    bool cameraMovesForCpu() const;
     /// Stops the CPU's resting picture before what it reads changes; the next rest draws it again.
     void stopCpuPicture();
     /// Fits the orbit's field of view to the picture of a width x height frame (the object alone

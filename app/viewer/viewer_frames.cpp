@@ -80,7 +80,7 @@ bool ViewerApp::traceOnCpu(int width, int height, bool moving)
         mRestWanted = true;
     }
     if (mRestWanted && !moving) {
-        mCpuTracer.startResting(*mLoaded->scene, mOrbit.camera(), cpuOptions(width, height));
+        mCpuTracer.startResting(*mLoaded->scene, mOrbit.camera(), cpuOptions(width, height), glfwPostEmptyEvent);
         mRestStart = now();
         mRestWanted = false;
     }
@@ -90,6 +90,11 @@ bool ViewerApp::traceOnCpu(int width, int height, bool moving)
         return true;
     }
     return false;
+}
+
+bool ViewerApp::cameraMovesForCpu() const
+{
+    return mInteraction.movingBeforeCancellableRest(now()) || mAnimation.started();
 }
 
 void ViewerApp::stopCpuPicture()

@@ -13,6 +13,8 @@
 #include <OpenEXR/ImfVecAttribute.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <png.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cctype>
@@ -47,16 +49,26 @@ std::uint8_t byteFromUnit(float v)
     return static_cast<std::uint8_t>(std::lround((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f));
 }
 
+/// The 8-bit sRGB bytes of @a image, rows in parallel.
 std::vector<std::uint8_t> pngBytes(const Image& image, bool withAlpha)
 {
-    std::vector<std::uint8_t> bytes;
-    bytes.reserve(image.pixels().size() * (withAlpha ? 4 : 3));
-    for (const glm::vec4& pixel : image.pixels()) {
-        const float alpha = std::clamp(pixel.a, 0.0f, 1.0f);
-        const glm::vec3 rgb = !withAlpha ? glm::vec3(pixel) : alpha > 0.0f ? glm::vec3(pixel) / alpha : glm::vec3(0.0f);
-        for (int c = 0; c < 3; ++c) bytes.push_back(byteFromUnit(srgbFromLinear(rgb[c])));
-        if (withAlpha) bytes.push_back(byteFromUnit(alpha));
-    }
+    const std::size_t channels = withAlpha ? 4 : 3;
+    const std::size_t width = std::size_t(image.width());
+    std::vector<std::uint8_t> bytes(image.pixels().size() * channels);
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height(), 16), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y != rows.end(); ++y) {
+            const glm::vec4* pixel = image.pixels().data() + std::size_t(y) * width;
+            std::uint8_t* out = bytes.data() + std::size_t(y) * width * channels;
+            for (std::size_t x = 0; x < width; ++x, ++pixel) {
+                const float alpha = std::clamp(pixel->a, 0.0f, 1.0f);
+                const glm::vec3 rgb = !withAlpha       ? glm::vec3(*pixel)
+                                      : alpha > 0.0f ? glm::vec3(*pixel) / alpha
+                                                     : glm::vec3(0.0f);
+                for (int c = 0; c < 3; ++c) *out++ = byteFromUnit(srgbFromLinear(rgb[c]));
+                if (withAlpha) *out++ = byteFromUnit(alpha);
+            }
+        }
+    });
     return bytes;
 }
 

@@ -52,3 +52,25 @@ TEST(InteractionScale, AReductionOfOneNeverLowersTheScale)
     EXPECT_TRUE(interaction.moving(1.0));
     EXPECT_FLOAT_EQ(interaction.scale(0.75f, 1.0), 0.75f);
 }
+
+TEST(InteractionScale, AReleasedDragRestsAtOnceForAPictureAMoveCancels)
+{
+    InteractionScale interaction;
+    const double rest = InteractionScale::kRestSeconds;
+    interaction.moved(5.0, true);
+    EXPECT_TRUE(interaction.movingBeforeCancellableRest(5.0));
+    EXPECT_TRUE(interaction.movingBeforeCancellableRest(9.0));  // held still: still a drag
+    interaction.released();
+    EXPECT_FALSE(interaction.movingBeforeCancellableRest(5.0));
+    EXPECT_TRUE(interaction.moving(5.0));  // a picture that blocks the window still waits the rest time
+
+    // A wheel click has no release: it rests after the rest time, as moving() says.
+    interaction.moved(6.0, false);
+    EXPECT_TRUE(interaction.movingBeforeCancellableRest(6.0 + 0.5 * rest));
+    EXPECT_FALSE(interaction.movingBeforeCancellableRest(6.0 + 1.5 * rest));
+    // A release after a wheel click (every button up, each frame) does not end its rest time.
+    interaction.released();
+    interaction.moved(7.0, false);
+    interaction.released();
+    EXPECT_TRUE(interaction.movingBeforeCancellableRest(7.0 + 0.5 * rest));
+}

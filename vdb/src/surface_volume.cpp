@@ -3,6 +3,7 @@
 #include <ivis/core/errors.h>
 
 #include <cmath>
+#include <malloc.h>
 #include <mutex>
 #include <string>
 
@@ -47,6 +48,11 @@ void SurfaceVolume::releaseSampledGrids()
     phi = empty;
     gradient.reset();
     barycentric.reset();
+#if defined(__GLIBC__)
+    // Their pages back to the system: grids read on several threads (readVolume) lie in several
+    // malloc arenas, whose free pages the caller's later allocations would not reuse.
+    malloc_trim(0);
+#endif
 }
 
 std::size_t SurfaceVolume::memoryBytes() const

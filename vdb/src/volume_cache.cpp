@@ -6,6 +6,9 @@
 #include <ivis/core/log.h>
 
 #include <openvdb/io/File.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +168,25 @@ typename GridT::Ptr findGrid(const openvdb::GridPtrVecPtr& grids, const std::str
     throw InputError(path + ": grid '" + name + "' missing or of the wrong type");
 }
 
+/// The grids named @a names of the OpenVDB file at @a path, each read and decompressed by a file
+/// handle of its own, in parallel (a volume is a few large grids).
+openvdb::GridPtrVecPtr readGridsInParallel(const std::string& path, const std::vector<std::string>& names)
+{
+    auto grids = std::make_shared<openvdb::GridPtrVec>(names.size());
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, names.size(), 1),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                openvdb::io::File own(path);
+                own.open(/*delayLoad=*/false);
+                (*grids)[i] = own.readGrid(names[i]);
+                own.close();
+            }
+        },
+        tbb::simple_partitioner());
+    return grids;
+}
+
 }  // namespace
 
 const char* toString(CacheOutcome outcome)
@@ -240,8 +262,10 @@ SurfaceVolume readCheckedVolume(const std::string& path)
         openvdb::io::File file(path);
         file.open(/*delayLoad=*/false);
         key = readKey(*file.getMetadata(), path);
-        const openvdb::GridPtrVecPtr grids = file.getGrids();
+        std::vector<std::string> names;
+        for (auto name = file.beginName(); name != file.endName(); ++name) names.push_back(name.gridName());
         file.close();
+        const openvdb::GridPtrVecPtr grids = readGridsInParallel(path, names);
         volume.phi = findGrid<openvdb::FloatGrid>(grids, "phi", path);
         volume.triangle = findGrid<openvdb::Int32Grid>(grids, "triangle", path);
         volume.barycentric = findGrid<openvdb::Vec3SGrid>(grids, "barycentric", path);
