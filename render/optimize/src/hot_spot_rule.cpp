@@ -7,7 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace ivis::optimize {
@@ -22,6 +26,41 @@ bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<H
     return true;
 }
 
+std::vector<HotSpotFacing> hotSpotFacings(const core::TriangleMesh& mesh, const RevealMeasure& reveal)
+{
+    std::vector<glm::dvec3> weighted(reveal.regionCount()), centroid(reveal.regionCount());
+    std::vector<double> area(reveal.regionCount(), 0.0);
+    for (const auto& t : mesh.triangles) {
+        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        const glm::dvec3 centre = (a + b + c) / 3.0;
+        const int region = reveal.regionAt(glm::vec3(centre));
+        if (region < 0) continue;
+        const glm::dvec3 normal = 0.5 * glm::cross(b - a, c - a);  // its length the triangle's area
+        weighted[std::size_t(region)] += normal;
+        const double triangleArea = glm::length(normal);
+        centroid[std::size_t(region)] += triangleArea * centre;
+        area[std::size_t(region)] += triangleArea;
+    }
+    std::vector<HotSpotFacing> facings(reveal.regionCount());
+    for (std::size_t r = 0; r < facings.size(); ++r) {
+        if (!(area[r] > 0.0)) continue;
+        facings[r].centroid = centroid[r] / area[r];
+        const double length = glm::length(weighted[r]);
+        if (length >= kMinHotSpotFacing * area[r]) facings[r].normal = weighted[r] / length;
+    }
+    return facings;
+}
+
+bool someHotSpotFacesAway(const std::vector<HotSpotFacing>& facings, const core::Camera& camera)
+{
+    const double cosine = std::cos(glm::radians(kHotSpotFacingAwayDeg));
+    return std::any_of(facings.begin(), facings.end(), [&](const HotSpotFacing& f) {
+        const glm::dvec3 toSpot = f.centroid - camera.eye;
+        const double length = glm::length(toSpot);
+        return length > 0.0 && glm::dot(f.normal, toSpot) > cosine * length;
+    });
+}
+
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
                                 int views, core::Interrupter* interrupter)
 {
@@ -33,11 +72,13 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return (a == best) != (b == best) ? a == best : visited[a].value.energy > visited[b].value.energy;
     });
+    const std::vector<HotSpotFacing> facings = hotSpotFacings(measure.scene().mesh(), *measure.revealMeasure());
     HotSpotChoice choice;
     std::vector<std::size_t> judged;
     for (const std::size_t index : order) {
         if (int(judged.size()) >= views) break;
         const VisitedView& view = visited[index];
+        if (someHotSpotFacesAway(facings, view.camera)) continue;
         if (std::any_of(judged.begin(), judged.end(), [&](std::size_t j) {
                 return degreesBetweenViews(view.thetaDeg, view.phiDeg, visited[j].thetaDeg, visited[j].phiDeg) <
                        kHotSpotViewSeparationDeg;

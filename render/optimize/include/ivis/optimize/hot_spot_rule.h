@@ -5,9 +5,14 @@
 ///        3 and 4), where one of them does; else the best view stays.
 #pragma once
 
+#include <ivis/core/camera.h>
 #include <ivis/core/interrupter.h>
+#include <ivis/core/triangle_mesh.h>
 #include <ivis/optimize/energy.h>
 #include <ivis/optimize/hot_spot_shape.h>
+#include <ivis/optimize/reveal.h>
+
+#include <glm/vec3.hpp>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -31,6 +36,27 @@ inline constexpr double kHotSpotViewSeparationDeg = 20.0;
 /// @brief Pixels per side of the pictures the rule judges.
 inline constexpr int kHotSpotPictureSize = 500;
 
+/// @brief A hot spot whose normals, summed by area, come to less than this share of its area faces
+///        no one way (it wraps round a tip or a thin part).
+inline constexpr double kMinHotSpotFacing = 0.5;
+/// @brief A hot spot facing away from the eye within this angle of straight away lies in the middle
+///        of the far side, which the wrap spreads along the rings' outer edges: not judged.
+inline constexpr double kHotSpotFacingAwayDeg = 60.0;
+
+/// @brief Where a hot spot lies and which way it faces.
+struct HotSpotFacing {
+    glm::dvec3 centroid{0.0};  ///< area-weighted centre of its triangles
+    glm::dvec3 normal{0.0};    ///< unit area-weighted mean normal; zero when it faces no one way
+};
+
+/// @brief Each hot spot of @a reveal (in region order) over the triangles of @a mesh whose centroid
+///        lies in it.
+std::vector<HotSpotFacing> hotSpotFacings(const core::TriangleMesh& mesh, const RevealMeasure& reveal);
+
+/// @brief True when some hot spot of @a facings faces away from the eye of @a camera within
+///        kHotSpotFacingAwayDeg of straight away (seen from the eye towards its centroid).
+bool someHotSpotFacesAway(const std::vector<HotSpotFacing>& facings, const core::Camera& camera);
+
 /// @brief What the hot-spot rule chose.
 struct HotSpotChoice {
     int judged = 0;                     ///< views whose pictures were judged
@@ -46,7 +72,8 @@ bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<H
 
 /// @brief The hot-spot rule over @a visited: the search's best view (@a best) first, then the others
 ///        by energy, at most @a views views, each at least kHotSpotViewSeparationDeg from those
-///        judged before it, judged on a kHotSpotPictureSize picture from its camera with its method
+///        judged before it and none with a hot spot facing away (someHotSpotFacesAway), judged on a
+///        kHotSpotPictureSize picture from its camera with its method
 ///        (its hot spots counted as @a measure, an evaluator with the reveal, counts them), up to
 ///        the first whose hot spots read.
 /// @param interrupter optional cancel, asked before each picture
