@@ -3,6 +3,8 @@
 ///        as ParaView renders at a reduced resolution while the mouse moves the camera.
 #pragma once
 
+#include <algorithm>
+
 namespace ivis::app {
 
 /// @brief While the user orbits, pans or zooms, the viewer traces only a fraction of its render
@@ -34,6 +36,12 @@ public:
     bool movingBeforeCancellableRest(double now) const
     {
         return mDragging || (!mLastMoveDragged && now - mLastMove < kRestSeconds);
+    }
+    /// @brief Seconds from @a now until the camera rests by the rest time (0 once it has; a drag
+    ///        held still rests only when released, so it has none).
+    double secondsUntilRest(double now) const
+    {
+        return mDragging ? kRestSeconds : std::max(0.0, kRestSeconds - (now - mLastMove));
     }
     /// @brief The fraction of the picture's pixels to trace at @a now, given the full @a renderScale.
     float scale(float renderScale, double now) const { return moving(now) ? renderScale * reduction : renderScale; }

@@ -199,7 +199,12 @@ int ViewerApp::runInteractive()
                           (mRestWanted && !cameraMovesForCpu());
         if (busy) glfwPollEvents();
         else if (mCpuTracer.resting()) glfwWaitEvents();  // until an input or the CPU's picture is done
-        else glfwWaitEventsTimeout(mPlaying ? std::clamp(mNextStepTime - now(), 0.001, 0.25) : 0.25);
+        else {
+            // Woken when a wheel click's rest time ends too, so the full picture follows it at once.
+            double idle = mPlaying ? std::clamp(mNextStepTime - now(), 0.001, 0.25) : 0.25;
+            if (const double rest = mInteraction.secondsUntilRest(now()); rest > 0.0) idle = std::min(idle, rest);
+            glfwWaitEventsTimeout(idle);
+        }
         pollLoader();
         const double time = now();
         pollOptimiser(time);

@@ -74,3 +74,17 @@ TEST(InteractionScale, AReleasedDragRestsAtOnceForAPictureAMoveCancels)
     interaction.released();
     EXPECT_TRUE(interaction.movingBeforeCancellableRest(7.0 + 0.5 * rest));
 }
+
+TEST(InteractionScale, SaysWhenTheRestTimeEnds)
+{
+    InteractionScale interaction;
+    const double rest = InteractionScale::kRestSeconds;
+    EXPECT_EQ(interaction.secondsUntilRest(0.0), 0.0) << "never moved: resting";
+    interaction.moved(2.0, false);  // a wheel click
+    EXPECT_DOUBLE_EQ(interaction.secondsUntilRest(2.0), rest);
+    EXPECT_NEAR(interaction.secondsUntilRest(2.0 + 0.25 * rest), 0.75 * rest, 1e-12);
+    EXPECT_EQ(interaction.secondsUntilRest(2.0 + 2.0 * rest), 0.0);
+    EXPECT_FALSE(interaction.moving(2.0 + rest + 1e-9)) << "moving() agrees once it is 0";
+    interaction.moved(5.0, true);
+    EXPECT_GT(interaction.secondsUntilRest(50.0), 0.0) << "a drag held still does not rest by the clock";
+}
