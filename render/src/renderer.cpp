@@ -2,6 +2,7 @@
 
 #include <ivis/core/color_bar.h>
 #include <ivis/core/errors.h>
+#include <ivis/render/outline.h>
 #include <ivis/render/screen_map.h>
 
 #include <tbb/blocked_range.h>
@@ -23,31 +24,6 @@ constexpr const char* kLayerNames[] = {"depth", "region", "triangle", "P.X", "P.
 glm::dvec2 sampleOffset(int k)
 {
     return {std::fmod(0.5 + k * 0.7548776662466927, 1.0), std::fmod(0.5 + k * 0.5698402909980532, 1.0)};
-}
-
-/// Marks direct pixels next to a non-direct one within @a radius pixels and darkens them.
-void drawOutline(core::Image& image, const core::Channel& region, int radius)
-{
-    const int w = image.width(), h = image.height();
-    auto isDirect = [&](int x, int y) { return region[std::size_t(y) * w + x] == float(Region::Direct); };
-    std::vector<char> edge(std::size_t(w) * h, 0);
-    tbb::parallel_for(0, h, [&](int y) {
-        for (int x = 0; x < w; ++x) {
-            if (!isDirect(x, y)) continue;
-            for (int dy = -radius; dy <= radius && !edge[std::size_t(y) * w + x]; ++dy)
-                for (int dx = -radius; dx <= radius; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (dx * dx + dy * dy > radius * radius) continue;
-                    if (nx < 0 || ny < 0 || nx >= w || ny >= h || !isDirect(nx, ny)) {
-                        edge[std::size_t(y) * w + x] = 1;
-                        break;
-                    }
-                }
-        }
-    });
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            if (edge[std::size_t(y) * w + x]) image.blendOver(x, y, glm::vec3(0.05f), 0.85f);
 }
 
 }  // namespace
