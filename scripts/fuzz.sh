@@ -3,7 +3,8 @@
 # tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
 # seeds and runs each target for SECONDS (default 300) on one core.
 #   scripts/fuzz.sh [READER] [SECONDS]   READER: obj off ply stl scalar_file volume_cache vtk_xml
-#                                        vtk_legacy pvd, or all (default); findings are written to
+#                                        vtk_legacy pvd camera_json view_file, or all (default);
+#                                        findings are written to
 #                                        build-fuzz/findings/<reader>/
 #   IVIS_FUZZ_JOBS=2 scripts/fuzz.sh ...  builds with 2 jobs (default 1)
 set -euo pipefail
