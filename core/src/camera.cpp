@@ -1,6 +1,7 @@
 #include <ivis/core/camera.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/number_text.h>
 
 #include <glm/geometric.hpp>
 
@@ -39,7 +40,7 @@ void Camera::validate() const
     if (!(glm::length(glm::cross(view, up)) > 1e-9 * glm::length(view) * glm::length(up)))
         throw ValueError("camera up vector is parallel to the view direction");
     if (!orthographic && !(fovYDeg > 0.0 && fovYDeg < 180.0))
-        throw ValueError("field of view " + std::to_string(fovYDeg) + " is out of range (0 to 180 degrees)");
+        throw ValueError("field of view " + shortNumber(fovYDeg) + " is out of range (0 to 180 degrees)");
     if (orthographic && !(orthoHalfHeight > 0.0 && std::isfinite(orthoHalfHeight)))
         throw ValueError("orthographic half height must be positive");
     if (!(std::isfinite(windowCentre.x) && std::isfinite(windowCentre.y)))

@@ -175,6 +175,7 @@ TEST_F(Cli, MethodParameterOutOfItsBounds)
     expectRejected(render(mesh, "--method inversevis --alpha 7"), {"inversevis --alpha 7 is out of range (0 to 4)"});
     expectRejected(render(mesh, "--method mirror --mirror-w 0.3 0.3 0 0 30"), {"mirror --mirror-w 30 is out of range"});
     expectRejected(render(mesh, "--max-steps 2.5"), {"--max-steps 2.5 is not a whole number"});
+    expectRejected(render(mesh, "--fov 180"), {"field of view 180 is out of range (0 to 180 degrees)"});
 }
 
 TEST_F(Cli, ParameterOfAnotherMethodIsRejected)
