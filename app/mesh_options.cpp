@@ -7,6 +7,7 @@
 #include <ivis/render/method_registry.h>
 
 #include <cstdio>
+#include <filesystem>
 
 
 namespace ivis::app {
@@ -60,14 +61,20 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
         ->capture_default_str();
 }
 
-void MeshOptions::useViewScalar(const std::string& scalarName, const std::string& scalarFile, bool cellToPoint,
+bool MeshOptions::useViewScalar(const std::string& scalarName, const std::string& scalarFile, bool cellToPoint,
                                 int hotSpots)
 {
-    if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.hotSpots > 0) return;
+    if (!load.read.scalarName.empty() || !load.read.scalarFile.empty() || load.hotSpots > 0) {
+        // The view file keeps --scalar-file as an absolute path.
+        const std::string file =
+            load.read.scalarFile.empty() ? "" : std::filesystem::absolute(load.read.scalarFile).string();
+        return load.read.scalarName == scalarName && file == scalarFile && load.hotSpots == hotSpots;
+    }
     load.read.scalarName = scalarName;
     load.read.scalarFile = scalarFile;
     load.read.cellToPoint = load.read.cellToPoint || cellToPoint;  // --cell-to-point alone averages the view's array
     load.hotSpots = hotSpots;
+    return true;
 }
 
 nlohmann::json MeshOptions::settingsJson() const

@@ -30,7 +30,8 @@ struct MeshOptions {
                const std::string& sourcesNote = "one or more");
     /// @brief Shows the scalar a view file chose (--scalar NAME, --scalar-file FILE or --hotspots N,
     ///        and --cell-to-point) unless this command line chose one itself.
-    void useViewScalar(const std::string& scalarName, const std::string& scalarFile, bool cellToPoint, int hotSpots);
+    /// @return whether the picture shows the view file's scalar (false: the command line chose another)
+    bool useViewScalar(const std::string& scalarName, const std::string& scalarFile, bool cellToPoint, int hotSpots);
     /// @brief The loading and volume settings keyed by their flags ({"--volume-res": 200, ...});
     ///        --reach null unless given (each method's own, raiseReachFor's).
     nlohmann::json settingsJson() const;

@@ -107,7 +107,8 @@ Command addOptimizeCommand(CLI::App& app)
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
         if (const ViewFile* view = options->view.view())
-            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+            options->view.showsViewScalar =
+                options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         options->mesh.fitReachTo({options->view.renderOptions().method});
         options->optimization.checkUsedBy({options->view.renderOptions().method}, {options->optResolution});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();

@@ -343,7 +343,8 @@ Command addRenderCommand(CLI::App& app)
         plan.chooseRule =
             options->minCoherence > 0.0 && !readableRuleKey.empty() && !options->view.givesParameter(readableRuleKey);
         if (const ViewFile* view = options->view.view())
-            options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+            options->view.showsViewScalar =
+                options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         if (!options->frames.empty()) {

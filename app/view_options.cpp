@@ -127,7 +127,8 @@ core::ColorScaleRequest ViewOptions::colorScaleRequest() const
     request.log = logScale;
     request.invert = invert;
     if (const ViewFile* v = view()) {  // the view's scale, but for what the command line says
-        if (!given("--range") && !given("--range-percentile") && !given("--symmetric") && !rangeOfEachPicture)
+        if (!given("--range") && !given("--range-percentile") && !given("--symmetric") && !rangeOfEachPicture &&
+            showsViewScalar)
             request.range = v->scale.range;
         if (!given("--log")) request.log = v->scale.log;
         if (!given("--invert")) request.invert = v->scale.invert;

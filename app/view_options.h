@@ -49,6 +49,9 @@ struct ViewOptions {
     bool unshadedIndirect = false;
     bool transparent = false;
     bool rangeOfEachPicture = false;  ///< each picture's range from its data, never the view file's (--range-per-frame)
+    /// Whether the picture shows the --view file's scalar (MeshOptions::useViewScalar): the file's
+    /// range is that scalar's, so another one takes its range from its own data.
+    bool showsViewScalar = true;
     bool viewIsStart = false;  ///< the --view file's camera is a search's start (optimize): each view is framed
 
 
@@ -72,7 +75,7 @@ struct ViewOptions {
     std::string describeFraming(const core::Camera& camera) const;
     /// @brief The colour-scale flags (--range, --range-percentile, --symmetric, --log, --invert);
     ///        with --view, the file's range, log and invert for those the flags do not give (its
-    ///        range not with rangeOfEachPicture).
+    ///        range neither with rangeOfEachPicture nor unless showsViewScalar).
     /// @throw ValueError when they contradict each other
     core::ColorScaleRequest colorScaleRequest() const;
     /// @brief Render options from the flags alone, every value checked, so that a bad flag fails

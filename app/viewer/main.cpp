@@ -37,7 +37,8 @@ int main(int argc, char** argv)
         // Headless, Ctrl-C ends the run between frames and leaves no screenshot (a window closes).
         if (options.headless()) ivis::core::installInterruptHandler();
         if (const ivis::app::ViewFile* view = options.view.view())
-            options.mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+            options.view.showsViewScalar =
+                options.mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
             if (options.play)
                 throw ivis::InputError("--play: " + options.mesh.source + " is one surface, not a time series (a .pvd, "

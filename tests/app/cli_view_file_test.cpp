@@ -155,6 +155,37 @@ TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
     expectBadInput(test::runCli(render(mesh, "--legend left --no-legend")), {"--legend excludes --no-legend"});
 }
 
+// A view file's range is its scalar's. Another scalar given beside it takes its own data's range
+// (the VaMPy artery's pressure at t600 came out in the range of the file's t200: one colour), the
+// file's inversion still kept; the file's scalar, named or not, keeps the file's range.
+TEST_F(Cli, AnotherScalarGivenWithAViewTakesItsOwnRange)
+{
+    const std::string mesh = test::sharedMesh("vampy_artery_cfd_pressure.ply");
+    const std::string view = quoted(output("v.json"));
+    auto scaleOf = [&](const std::string& arguments) {
+        const test::CliResult result = test::runCli(render(mesh, arguments + " --view-out " + quoted(output("w.json"))));
+        EXPECT_EQ(result.status, 0) << arguments << ": " << result.err;
+        return nlohmann::json::parse(std::ifstream(output("w.json"))).at("scale");
+    };
+    const nlohmann::json own = scaleOf("--method front --scalar pressure_t600");  // its data's range
+    ASSERT_EQ(test::runCli(render(mesh, "--method front --scalar pressure_t200 --range 0.3 0.7 --invert --view-out " +
+                                            view))
+                  .status,
+              0);
+    const nlohmann::json file = nlohmann::json::parse(std::ifstream(output("v.json"))).at("scale");
+    ASSERT_NE(file.at("range"), own.at("range"));
+
+    nlohmann::json scale = scaleOf("--view " + view + " --scalar pressure_t600");
+    EXPECT_EQ(scale.at("range"), own.at("range"));
+    EXPECT_EQ(scale.at("invert"), true);
+    EXPECT_EQ(scaleOf("--view " + view).at("range"), file.at("range"));
+    EXPECT_EQ(scaleOf("--view " + view + " --scalar pressure_t200").at("range"), file.at("range"));
+    // A range given beside the other scalar is its range.
+    scale = scaleOf("--view " + view + " --scalar pressure_t600 --range 0 0.1");
+    EXPECT_EQ(scale.at("range")[0].get<double>(), 0.0);
+    EXPECT_NEAR(scale.at("range")[1].get<double>(), 0.1, 1e-7);
+}
+
 TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
 {
     const std::string bad = input("bad.view.json");
