@@ -75,7 +75,7 @@ struct ViewOptions {
     std::string describeFraming(const core::Camera& camera) const;
     /// @brief The colour-scale flags (--range, --range-percentile, --symmetric, --log, --invert);
     ///        with --view, the file's range, log and invert for those the flags do not give (its
-    ///        range neither with rangeOfEachPicture nor unless showsViewScalar).
+    ///        range only while showsViewScalar, and not with rangeOfEachPicture).
     /// @throw ValueError when they contradict each other
     core::ColorScaleRequest colorScaleRequest() const;
     /// @brief Render options from the flags alone, every value checked, so that a bad flag fails
