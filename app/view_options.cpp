@@ -183,7 +183,7 @@ render::RenderOptions ViewOptions::renderOptions() const
             options.height = v->height;
         }
         if (!given("--colormap")) options.shading.colormap = v->colormap;
-        if (!given("--units")) options.units = v->units;
+        if (!given("--units") && showsViewScalar) options.units = v->units;  // the file's scalar's units
         if (!given("--legend")) options.legendSide = v->legendSide;
         if (!given("--no-legend") && !given("--legend")) options.legend = v->legend;  // a side given shows it
         if (!given("--no-outline")) options.outline = v->outline;

@@ -50,7 +50,8 @@ struct ViewOptions {
     bool transparent = false;
     bool rangeOfEachPicture = false;  ///< each picture's range from its data, never the view file's (--range-per-frame)
     /// Whether the picture shows the --view file's scalar (MeshOptions::useViewScalar): the file's
-    /// range is that scalar's, so another one takes its range from its own data.
+    /// range and units are that scalar's, so another one takes its range from its own data and
+    /// shows no units (as the viewer's other arrays).
     bool showsViewScalar = true;
     bool viewIsStart = false;  ///< the --view file's camera is a search's start (optimize): each view is framed
 

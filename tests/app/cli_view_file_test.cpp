@@ -155,35 +155,41 @@ TEST_F(Cli, AScaleOrLegendFlagGivenWithAViewOverridesOnlyItsPart)
     expectBadInput(test::runCli(render(mesh, "--legend left --no-legend")), {"--legend excludes --no-legend"});
 }
 
-// A view file's range is its scalar's. Another scalar given beside it takes its own data's range
-// (the VaMPy artery's pressure at t600 came out in the range of the file's t200: one colour), the
-// file's inversion still kept; the file's scalar, named or not, keeps the file's range.
+// A view file's range and units are its scalar's. Another scalar given beside it takes its own
+// data's range and shows no units (the VaMPy artery's pressure at t600 came out in the range of the
+// file's t200: one colour), the file's inversion still kept; the file's scalar, named or not, keeps
+// the file's range and units.
 TEST_F(Cli, AnotherScalarGivenWithAViewTakesItsOwnRange)
 {
     const std::string mesh = test::sharedMesh("vampy_artery_cfd_pressure.ply");
     const std::string view = quoted(output("v.json"));
-    auto scaleOf = [&](const std::string& arguments) {
+    auto viewOf = [&](const std::string& arguments) {
         const test::CliResult result = test::runCli(render(mesh, arguments + " --view-out " + quoted(output("w.json"))));
         EXPECT_EQ(result.status, 0) << arguments << ": " << result.err;
-        return nlohmann::json::parse(std::ifstream(output("w.json"))).at("scale");
+        return nlohmann::json::parse(std::ifstream(output("w.json")));
     };
-    const nlohmann::json own = scaleOf("--method front --scalar pressure_t600");  // its data's range
-    ASSERT_EQ(test::runCli(render(mesh, "--method front --scalar pressure_t200 --range 0.3 0.7 --invert --view-out " +
-                                            view))
+    const nlohmann::json own = viewOf("--method front --scalar pressure_t600").at("scale");  // its data's range
+    ASSERT_EQ(test::runCli(render(mesh, "--method front --scalar pressure_t200 --range 0.3 0.7 --invert --units kPa "
+                                        "--view-out " + view))
                   .status,
               0);
     const nlohmann::json file = nlohmann::json::parse(std::ifstream(output("v.json"))).at("scale");
     ASSERT_NE(file.at("range"), own.at("range"));
 
-    nlohmann::json scale = scaleOf("--view " + view + " --scalar pressure_t600");
-    EXPECT_EQ(scale.at("range"), own.at("range"));
-    EXPECT_EQ(scale.at("invert"), true);
-    EXPECT_EQ(scaleOf("--view " + view).at("range"), file.at("range"));
-    EXPECT_EQ(scaleOf("--view " + view + " --scalar pressure_t200").at("range"), file.at("range"));
-    // A range given beside the other scalar is its range.
-    scale = scaleOf("--view " + view + " --scalar pressure_t600 --range 0 0.1");
-    EXPECT_EQ(scale.at("range")[0].get<double>(), 0.0);
-    EXPECT_NEAR(scale.at("range")[1].get<double>(), 0.1, 1e-7);
+    nlohmann::json other = viewOf("--view " + view + " --scalar pressure_t600");
+    EXPECT_EQ(other.at("scale").at("range"), own.at("range"));
+    EXPECT_EQ(other.at("scale").at("invert"), true);
+    EXPECT_EQ(other.at("units"), "");
+    for (const char* same : {"", " --scalar pressure_t200"}) {
+        const nlohmann::json again = viewOf("--view " + view + same);
+        EXPECT_EQ(again.at("scale").at("range"), file.at("range")) << same;
+        EXPECT_EQ(again.at("units"), "kPa") << same;
+    }
+    // A range and units given beside the other scalar are its own.
+    other = viewOf("--view " + view + " --scalar pressure_t600 --range 0 0.1 --units Pa");
+    EXPECT_EQ(other.at("scale").at("range")[0].get<double>(), 0.0);
+    EXPECT_NEAR(other.at("scale").at("range")[1].get<double>(), 0.1, 1e-7);
+    EXPECT_EQ(other.at("units"), "Pa");
 }
 
 TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
