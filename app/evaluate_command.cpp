@@ -89,6 +89,22 @@ bool finished(const nlohmann::json& results, const std::string& stem, const std:
     return true;
 }
 
+/// Refuses a mesh that is no file but a method's name or a number: the rest of a list given to
+/// --methods or --opt-res with spaces instead of commas, which the command line took for meshes.
+void rejectListsGivenWithSpaces(const std::vector<std::string>& meshes)
+{
+    const std::vector<std::string> methods = render::methodNames();
+    for (const std::string& mesh : meshes) {
+        if (mesh.rfind(core::kScenePrefix, 0) == 0 || std::filesystem::exists(mesh)) continue;
+        if (std::find(methods.begin(), methods.end(), mesh) != methods.end())
+            throw InputError(mesh + ": file not found, and a method's name: --methods takes them comma-separated "
+                             "(--methods neugebauer,mirror)");
+        if (!mesh.empty() && mesh.find_first_not_of("0123456789") == std::string::npos)
+            throw InputError(mesh + ": file not found, and a number: --opt-res takes them comma-separated "
+                             "(--opt-res 100,1000)");
+    }
+}
+
 }  // namespace
 
 Command addEvaluateCommand(CLI::App& app)
@@ -150,6 +166,7 @@ Command addEvaluateCommand(CLI::App& app)
 
     return {command, [options] {
         for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
+        rejectListsGivenWithSpaces(options->meshes);
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
         for (auto r = options->optResolutions.begin(); r != options->optResolutions.end(); ++r)
             if (std::find(r + 1, options->optResolutions.end(), *r) != options->optResolutions.end())

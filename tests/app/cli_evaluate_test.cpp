@@ -119,8 +119,12 @@ TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
     EXPECT_EQ(report.at("sphere").size(), 1u);
     EXPECT_TRUE(report.at("sphere").contains("front"));
     EXPECT_TRUE(report.at("torus").contains("inversevis"));
-    // A space-separated list now names a mesh, which is one line and status 2, not a method.
-    expectBadInput(runCli("evaluate --methods front inversevis scene:sphere --volume-res 48"), {"inversevis"});
+    // A space-separated list now names a mesh, which is one line and status 2, not a method; the
+    // line says how to give the list (it said only "inversevis: file not found").
+    expectBadInput(runCli("evaluate --methods front inversevis scene:sphere --volume-res 48"),
+                   {"inversevis: file not found, and a method's name: --methods takes them comma-separated"});
+    expectBadInput(runCli("evaluate --opt-res 16 100 scene:sphere --volume-res 48"),
+                   {"100: file not found, and a number: --opt-res takes them comma-separated"});
 }
 
 TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
