@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -15,34 +16,90 @@
 namespace ivis::app {
 namespace {
 
-/// The time steps of a .pvd, as JSON or text.
+/// A series' arrays: each (name, association) of any step, its range over the steps that have it.
+struct SeriesArray {
+    core::ArrayInfo info;  ///< min, max and NaN count over the steps
+    std::size_t steps = 0;  ///< how many steps carry it
+};
+
+/// The arrays of every step of a series, in the first step's order (then any later step's).
+std::vector<SeriesArray> seriesArrays(const std::vector<core::TimeStep>& steps)
+{
+    std::vector<SeriesArray> arrays;
+    for (const core::TimeStep& step : steps)
+        for (const core::ArrayInfo& a : core::describeMesh(step.path).arrays) {
+            auto same = std::find_if(arrays.begin(), arrays.end(), [&](const SeriesArray& s) {
+                return s.info.name == a.name && s.info.association == a.association;
+            });
+            if (same == arrays.end()) {
+                arrays.push_back({a, 1});
+                continue;
+            }
+            same->info.min = std::min(same->info.min, a.min);
+            same->info.max = std::max(same->info.max, a.max);
+            same->info.nanCount += a.nanCount;
+            ++same->steps;
+        }
+    return arrays;
+}
+
+/// One array as `info --json` lists it.
+nlohmann::json arrayJson(const core::ArrayInfo& a)
+{
+    return {{"name", a.name},
+            {"association", core::associationName(a.association)},
+            {"type", core::valueTypeName(a.type)},
+            {"components", a.components},
+            {"min", a.min},
+            {"max", a.max},
+            {"nan_count", a.nanCount},
+            {"shown_by_default", a.shownByDefault}};
+}
+
+/// One array as `info` prints it, on a line of its own.
+void printArray(const core::ArrayInfo& a)
+{
+    std::cout << "    " << std::left << std::setw(20) << a.name << "  " << std::setw(5)
+              << core::associationName(a.association) << "  " << std::setw(7) << core::valueTypeName(a.type)
+              << std::right << "  " << a.components << (a.components == 1 ? " component " : " components")
+              << "  " << (a.components == 1 ? "" : "magnitude ") << "min " << a.min << "  max " << a.max;
+    if (a.nanCount > 0) std::cout << "  (" << a.nanCount << " NaN)";
+    if (a.shownByDefault) std::cout << "  (shown by default)";
+}
+
+/// The time steps of a .pvd and their arrays (each one's range over every step), as JSON or text.
 void printTimeSeries(const std::string& path, bool json)
 {
     const std::vector<core::TimeStep> steps = core::readPvd(path);
+    const std::vector<SeriesArray> arrays = seriesArrays(steps);
     if (json) {
-        nlohmann::json list = nlohmann::json::array();
+        nlohmann::json list = nlohmann::json::array(), arrayList = nlohmann::json::array();
         for (const core::TimeStep& s : steps)
             list.push_back({{"time", s.timed ? nlohmann::json(s.time) : nlohmann::json()}, {"file", s.path}});
-        std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}}.dump(2) << "\n";
+        for (const SeriesArray& a : arrays) {
+            nlohmann::json entry = arrayJson(a.info);
+            entry["steps"] = a.steps;
+            arrayList.push_back(entry);
+        }
+        std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}, {"arrays", arrayList}}.dump(2)
+                  << "\n";
         return;
     }
     std::cout << path << " (pvd, " << steps.size() << (steps.size() == 1 ? " time step)\n" : " time steps)\n");
     for (const core::TimeStep& s : steps)
         std::cout << "  " << (s.timed ? "t = " : "step ") << s.time << "  " << s.path << "\n";
+    std::cout << "  arrays (range over the steps)" << (arrays.empty() ? "  none" : "") << "\n";
+    for (const SeriesArray& a : arrays) {
+        printArray(a.info);
+        if (a.steps < steps.size()) std::cout << "  (in " << a.steps << " of " << steps.size() << " steps)";
+        std::cout << "\n";
+    }
 }
 
 void printJson(const core::MeshInfo& info)
 {
     nlohmann::json arrays = nlohmann::json::array();
-    for (const core::ArrayInfo& a : info.arrays)
-        arrays.push_back({{"name", a.name},
-                          {"association", core::associationName(a.association)},
-                          {"type", core::valueTypeName(a.type)},
-                          {"components", a.components},
-                          {"min", a.min},
-                          {"max", a.max},
-                          {"nan_count", a.nanCount},
-                          {"shown_by_default", a.shownByDefault}});
+    for (const core::ArrayInfo& a : info.arrays) arrays.push_back(arrayJson(a));
     const nlohmann::json out = {{"path", info.path},
                                 {"format", info.format},
                                 {"vertices", info.vertices},
@@ -78,12 +135,7 @@ void printText(const core::MeshInfo& info)
     if (info.arrays.empty()) std::cout << "none";
     std::cout << "\n";
     for (const core::ArrayInfo& a : info.arrays) {
-        std::cout << "    " << std::left << std::setw(20) << a.name << "  " << std::setw(5)
-                  << core::associationName(a.association) << "  " << std::setw(7) << core::valueTypeName(a.type)
-                  << std::right << "  " << a.components << (a.components == 1 ? " component " : " components")
-                  << "  " << (a.components == 1 ? "" : "magnitude ") << "min " << a.min << "  max " << a.max;
-        if (a.nanCount > 0) std::cout << "  (" << a.nanCount << " NaN)";
-        if (a.shownByDefault) std::cout << "  (shown by default)";
+        printArray(a);
         std::cout << "\n";
     }
     for (const std::string& note : info.report.notes) std::cout << "  note: " << note << "\n";

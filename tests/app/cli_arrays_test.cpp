@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -57,6 +59,26 @@ TEST_F(Cli, InfoListsTheStepsOfASeriesAndSdfTakesOneStep)
     const nlohmann::json steps = nlohmann::json::parse(result.out).at("time_steps");
     ASSERT_EQ(steps.size(), 5u);
     for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(steps[i].at("time"), 200.0 * double(i + 1));
+    // Its arrays, each with its range over every step: the least and greatest of the steps' own.
+    const nlohmann::json arrays = nlohmann::json::parse(result.out).at("arrays");
+    ASSERT_EQ(arrays.size(), 2u) << arrays.dump();
+    for (const nlohmann::json& array : arrays) {
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const nlohmann::json& step : steps) {
+            const CliResult one = runCli("info " + quoted(step.at("file").get<std::string>()) + " --json");
+            ASSERT_EQ(one.status, 0) << one.err;
+            const nlohmann::json stepInfo = nlohmann::json::parse(one.out);
+            for (const nlohmann::json& own : stepInfo.at("arrays"))
+                if (own.at("name") == array.at("name") && own.at("association") == array.at("association"))
+                    lo = std::min(lo, own.at("min").get<double>()), hi = std::max(hi, own.at("max").get<double>());
+        }
+        EXPECT_EQ(array.at("min").get<double>(), lo) << array.dump();
+        EXPECT_EQ(array.at("max").get<double>(), hi) << array.dump();
+        EXPECT_EQ(array.at("steps"), 5);
+        EXPECT_LT(lo, hi);
+    }
+    EXPECT_EQ(arrays[0].at("name"), "pressure");
+    EXPECT_EQ(arrays[1].at("name"), "pressure_cell");
     expectRejected(sdf(pvd), {pvd + ": a time series of 5 steps; this command takes one step's file",
                               "artery_t0200.vtp", "(render, optimize and the viewer take series)"});
 }

@@ -166,6 +166,30 @@ TEST_F(CliSeries, EachGeometryGetsItsOwnVolumeAndCache)
     EXPECT_EQ(caches, 2);
 }
 
+// `info` of a series counts the steps that carry each array: the tetrahedron has no cell array, so
+// the artery's pressure_cell is in 2 of 3 steps, and the tetrahedron's pressure (0.3 to 0.6) lies
+// inside the artery's range, which the series' range stays.
+TEST_F(CliSeries, InfoCountsTheStepsThatCarryEachArray)
+{
+    const std::string tet = input("tet.vtp"), series = input("mixed.pvd");
+    test::writeFile(tet, tetrahedron("pressure"));
+    test::writeFile(series, collection({arteryStep("0200"), tet, arteryStep("0400")}));
+    const CliResult json = runCli("info " + quoted(series) + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const nlohmann::json arrays = nlohmann::json::parse(json.out).at("arrays");
+    ASSERT_EQ(arrays.size(), 2u) << arrays.dump();
+    EXPECT_EQ(arrays[0].at("name"), "pressure");
+    EXPECT_EQ(arrays[0].at("steps"), 3);
+    EXPECT_EQ(arrays[1].at("name"), "pressure_cell");
+    EXPECT_EQ(arrays[1].at("steps"), 2);
+    const CliResult text = runCli("info " + quoted(series));
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("(in 2 of 3 steps)"), std::string::npos) << text.out;
+    // A step that cannot be read is one line naming it, as every command says it.
+    test::writeFile(tet, "not a vtp");
+    expectBadInput(runCli("info " + quoted(series)), {tet + ":"});
+}
+
 /// (scalar value, PNG colour) of every unshaded indirect pixel of frame @a k of the render in @a folder.
 std::vector<std::pair<float, std::array<int, 3>>> indirectColours(const std::string& folder, int k)
 {
