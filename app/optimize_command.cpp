@@ -106,9 +106,7 @@ Command addOptimizeCommand(CLI::App& app)
         const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
-        if (const ViewFile* view = options->view.view())
-            options->view.showsViewScalar =
-                options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+        options->view.showViewScalar(options->mesh);
         options->mesh.fitReachTo({options->view.renderOptions().method});
         options->optimization.checkUsedBy({options->view.renderOptions().method}, {options->optResolution});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();

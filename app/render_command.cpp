@@ -342,9 +342,7 @@ Command addRenderCommand(CLI::App& app)
                              " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
         plan.chooseRule =
             options->minCoherence > 0.0 && !readableRuleKey.empty() && !options->view.givesParameter(readableRuleKey);
-        if (const ViewFile* view = options->view.view())
-            options->view.showsViewScalar =
-                options->mesh.useViewScalar(view->scalar, view->scalarFile, view->cellToPoint, view->hotSpots);
+        options->view.showViewScalar(options->mesh);
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         if (!options->frames.empty()) {

@@ -83,6 +83,12 @@ bool ViewOptions::given(const char* name) const
     return option && option->count() > 0;
 }
 
+void ViewOptions::showViewScalar(MeshOptions& mesh)
+{
+    if (const ViewFile* v = view())
+        showsViewScalar = mesh.useViewScalar(v->scalar, v->scalarFile, v->cellToPoint, v->hotSpots);
+}
+
 const ViewFile* ViewOptions::view() const
 {
     if (viewFile.empty()) return nullptr;

@@ -5,6 +5,7 @@
 #include <ivis/core/camera.h>
 #include <ivis/core/color_scale.h>
 #include <ivis/core/surface_field.h>
+#include "mesh_options.h"
 #include "method_options.h"
 #include "view_file.h"
 
@@ -49,15 +50,18 @@ struct ViewOptions {
     bool unshadedIndirect = false;
     bool transparent = false;
     bool rangeOfEachPicture = false;  ///< each picture's range from its data, never the view file's (--range-per-frame)
-    /// Whether the picture shows the --view file's scalar (MeshOptions::useViewScalar): the file's
-    /// range and units are that scalar's, so another one takes its range from its own data and
-    /// shows no units (as the viewer's other arrays).
+    /// Whether the picture shows the --view file's scalar (showViewScalar): the file's range and
+    /// units are that scalar's, so another one takes its range from its own data and shows no
+    /// units (as the viewer's other arrays).
     bool showsViewScalar = true;
     bool viewIsStart = false;  ///< the --view file's camera is a search's start (optimize): each view is framed
 
 
     /// @brief Registers every option on @a command (which must outlive this object's use).
     void addTo(CLI::App& command);
+    /// @brief With --view, has @a mesh show the file's scalar unless the command line chose one
+    ///        (MeshOptions::useViewScalar), and records in showsViewScalar whether it shows it.
+    void showViewScalar(MeshOptions& mesh);
     /// @brief The view file of --view (read once), or null.
     /// @throw InputError naming the file when it is bad
     const ViewFile* view() const;
