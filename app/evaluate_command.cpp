@@ -189,6 +189,12 @@ Command addEvaluateCommand(CLI::App& app)
             checkOutputFolder(options->pictures);
             if (std::filesystem::exists(options->pictures) && !std::filesystem::is_directory(options->pictures))
                 throw InputError(options->pictures + ": --pictures names a file, not a folder");
+            const auto canonical = [](const std::string& path) { return std::filesystem::weakly_canonical(path); };
+            for (const auto& [path, option] :
+                 {std::pair{options->json, "--json"}, std::pair{options->markdown, "--markdown"}})
+                if (!path.empty() && canonical(path) == canonical(options->pictures))
+                    throw InputError(options->pictures + ": --pictures and " + option +
+                                     " name the same path (one is a folder of pictures, the other a file)");
         }
         nlohmann::json results = nlohmann::json::object();
         if (options->resume && std::filesystem::exists(options->json)) {

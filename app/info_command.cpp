@@ -22,16 +22,18 @@ struct SeriesArray {
     std::size_t steps = 0;  ///< how many steps carry it
 };
 
-/// The arrays of every step of a series, in the first step's order (then any later step's).
+/// The arrays of every step of a series, in the first step's order (then any later step's); shown
+/// by default is the first step's default, which a series' pictures show.
 std::vector<SeriesArray> seriesArrays(const std::vector<core::TimeStep>& steps)
 {
     std::vector<SeriesArray> arrays;
     for (const core::TimeStep& step : steps)
-        for (const core::ArrayInfo& a : core::describeMesh(step.path).arrays) {
+        for (core::ArrayInfo a : core::describeMesh(step.path).arrays) {
             auto same = std::find_if(arrays.begin(), arrays.end(), [&](const SeriesArray& s) {
                 return s.info.name == a.name && s.info.association == a.association;
             });
             if (same == arrays.end()) {
+                a.shownByDefault = a.shownByDefault && &step == &steps.front();
                 arrays.push_back({a, 1});
                 continue;
             }
@@ -106,6 +108,7 @@ void printJson(const core::MeshInfo& info)
                                 {"cells", info.cells},
                                 {"triangles", info.triangles},
                                 {"degenerate_dropped", info.report.degenerateDropped},
+                                {"unused_points", info.report.unusedPointsDropped},
                                 {"boundary_edges", info.boundaryEdges},
                                 {"open_mesh", info.boundaryEdges > 0},
                                 {"components", info.components},
@@ -120,8 +123,10 @@ void printJson(const core::MeshInfo& info)
 void printText(const core::MeshInfo& info)
 {
     std::cout << info.path << " (" << info.format << ")\n"
-              << "  vertices        " << info.vertices << "\n"
-              << "  cells           " << info.cells << "\n"
+              << "  vertices        " << info.vertices;
+    if (info.report.unusedPointsDropped > 0)
+        std::cout << " (" << info.report.unusedPointsDropped << " used by no triangle, left out)";
+    std::cout << "\n  cells           " << info.cells << "\n"
               << "  triangles       " << info.triangles;
     if (info.report.degenerateDropped > 0) std::cout << " (" << info.report.degenerateDropped << " degenerate dropped)";
     std::cout << "\n  boundary edges  " << info.boundaryEdges << (info.boundaryEdges > 0 ? " (open)" : " (closed)")

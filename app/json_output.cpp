@@ -1,6 +1,7 @@
 #include "json_output.h"
 
 #include <ivis/core/atomic_file.h>
+#include <ivis/optimize/hot_spot_rule.h>
 #include <ivis/optimize/sampling_bound.h>
 #include <ivis/optimize/unseen_map.h>
 #include <ivis/render/method_json.h>
@@ -40,8 +41,8 @@ std::string hotSpotChoiceLine(const optimize::HotSpotChoice& choice)
 {
     char text[200];
     if (!choice.chosen) {
-        std::snprintf(text, sizeof text, "hot-spot rule: no hot spot reads as one place in the %d views judged; the "
-                      "best view stays", choice.judged);
+        std::snprintf(text, sizeof text, "hot-spot rule: none of the %d views judged shows every hot spot %.0f%% seen "
+                      "and as one place; the best view stays", choice.judged, 100.0 * optimize::kMinHotSpotSeen);
         return text;
     }
     std::snprintf(text, sizeof text, "hot-spot rule: judged view %d is the best whose every hot spot reads as one place "

@@ -6,6 +6,7 @@
 #include <ivis/core/interrupt_signal.h>
 #include <ivis/core/log.h>
 
+#include <algorithm>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -33,7 +34,13 @@ int main(int argc, char** argv)
             if (command.parser->parsed()) command.run();
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
-        std::cerr << "inversevis: error: " << e.what() << "\n";
+        std::string message = e.what();
+        const auto word = std::find_if(argv + 1, argv + argc, [](const char* a) { return a[0] != '-'; });
+        if (app.get_subcommands().empty() && word != argv + argc) {  // CLI11 says only "A subcommand is required"
+            message = std::string("'") + *word + "' is not a command; the commands are";
+            for (const auto& command : commands) message += " " + command.parser->get_name();
+        }
+        std::cerr << "inversevis: error: " << message << "\n";
         return 2;
     } catch (const ivis::UserError& e) {
         std::cerr << "inversevis: error: " << e.what() << "\n";

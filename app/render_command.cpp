@@ -292,8 +292,8 @@ Command addRenderCommand(CLI::App& app)
                                            "Write only the colour bar, to FILE.svg (vector) or FILE.png, sized as "
                                            "beside a --res picture (of a series: its one colour scale)");
     // Nothing else is written beside the bar alone (these were accepted, and nothing written).
-    for (const char* output : {"--exr", "--stats-json", "--measure", "--tear-map", "--unseen-map", "--camera-out",
-                               "--view-out"})
+    for (const char* output : {"--output", "--exr", "--stats-json", "--measure", "--tear-map", "--unseen-map",
+                               "--camera-out", "--view-out"})
         legendOnly->excludes(command->get_option(output));
     legendOnly->excludes(probe);
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
@@ -315,6 +315,7 @@ Command addRenderCommand(CLI::App& app)
         command->add_flag("--no-video", options->noVideo,
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")
             ->excludes("--fps")};
+    legendOnly->excludes("--range-per-frame");  // the bar alone has one scale: the series' (no frame's own)
 
     return {command, [options, command] {
         options->view.rangeOfEachPicture = options->rangePerFrame;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -83,6 +84,21 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.shadeIndirect = json.at("shade_indirect").get<bool>();
     view.samplesPerPixel = json.contains("spp") ? wholeNumber(json.at("spp"), "spp", 1, 1024) : 1;
     view.transparent = json.value("transparent", false);
+    if (json.contains("mesh_units")) {
+        const nlohmann::json& units = json.at("mesh_units");
+        const nlohmann::json& centre = units.at("center");
+        if (!centre.is_array() || centre.size() != 3)
+            throw std::invalid_argument("'mesh_units.center' must be [x, y, z]");
+        for (int k = 0; k < 3; ++k) {
+            if (!centre[k].is_number() || !std::isfinite(centre[k].get<double>()))
+                throw std::invalid_argument("'mesh_units.center' must be finite numbers");
+            view.meshUnits.center[k] = centre[k].get<double>();
+        }
+        const nlohmann::json& scale = units.at("scale");
+        if (!scale.is_number() || !(scale.get<double>() > 0.0) || !std::isfinite(scale.get<double>()))
+            throw std::invalid_argument("'mesh_units.scale' must be a positive number");
+        view.meshUnits.scale = scale.get<double>();
+    }
     return view;
 }
 

@@ -37,7 +37,7 @@ struct ViewFile {
     bool shadeIndirect = true;
     int samplesPerPixel = 1;    ///< --spp
     bool transparent = false;   ///< --transparent
-    core::Similarity meshUnits;  ///< the mesh's normalising transform (written for reference; never read)
+    core::Similarity meshUnits;  ///< the mesh's normalising transform (for reference: a picture does not use it)
 };
 
 /// @brief Version written as "inversevis_view"; readers reject newer ones.

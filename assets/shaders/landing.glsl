@@ -65,7 +65,8 @@ vec3 shadeIndirect(int triangle, vec3 barycentric, vec3 arrival)
                   barycentric.z * vertexPosition[v.z].w;
     vec3 position = barycentric.x * vertexPosition[v.x].xyz + barycentric.y * vertexPosition[v.y].xyz +
                     barycentric.z * vertexPosition[v.z].xyz;
-    float light = uShadeIndirect ? lighting(position, normal, toLightAlong(arrival), uShadows && uIndirectShadows) : 1.0;
+    if (!uShadeIndirect) return albedo(triangle, value);  // flat: the colour bar's own colour
+    float light = lighting(position, normal, toLightAlong(arrival), uShadows && uIndirectShadows);
     return albedo(triangle, value) * uIndirectBrightness * light;
 }
 

@@ -45,6 +45,17 @@ void Camera::validate() const
         throw ValueError("orthographic half height must be positive");
     if (!(std::isfinite(windowCentre.x) && std::isfinite(windowCentre.y)))
         throw ValueError("camera window centre must be finite");
+    const auto within = [](double value) { return std::abs(value) <= kMaxCameraCoordinate; };
+    const std::string limit = " is out of range (at most " + shortNumber(kMaxCameraCoordinate) + ")";
+    const std::string fromCentre = " normalised units from the object's centre" + limit;
+    if (!within(glm::length(eye))) throw ValueError("camera eye at " + shortNumber(glm::length(eye)) + fromCentre);
+    if (!within(glm::length(target)))
+        throw ValueError("camera target at " + shortNumber(glm::length(target)) + fromCentre);
+    if (orthographic && !within(orthoHalfHeight))
+        throw ValueError("orthographic half height " + shortNumber(orthoHalfHeight) + limit);
+    if (!within(windowCentre.x) || !within(windowCentre.y))
+        throw ValueError("camera window centre " +
+                         shortNumber(std::max(std::abs(windowCentre.x), std::abs(windowCentre.y))) + limit);
 }
 
 CameraFrame::CameraFrame(const Camera& camera, int width, int height) : mCamera(camera), mWidth(width), mHeight(height)

@@ -24,9 +24,45 @@ using detail::RawMesh;
 struct LoadedMesh {
     const char* format = "";
     SurfaceField field;
+    std::size_t points = 0;  ///< the file's points, used or not
     std::size_t cells = 0;
+    std::vector<std::uint32_t> keptPoints;  ///< file point of each mesh vertex; empty when every point is kept
     MeshReadReport report;
 };
+
+/// The tuples @a kept (ascending) of @a values, @a components values each.
+template <typename T>
+void keepTuples(std::vector<T>& values, const std::vector<std::uint32_t>& kept, int components)
+{
+    const std::size_t k = std::size_t(components);
+    for (std::size_t i = 0; i < kept.size(); ++i)
+        std::copy_n(values.begin() + std::ptrdiff_t(kept[i] * k), k, values.begin() + std::ptrdiff_t(i * k));
+    values.resize(kept.size() * k);
+}
+
+/// Drops the points no triangle of @a loaded uses, with their point data, as vtkCleanPolyData does
+/// (VTK files often carry them: a clipped model's, a centreline's): they would widen the bounds the
+/// picture is framed and normalised by, and the colour range.
+void dropUnusedPoints(LoadedMesh& loaded)
+{
+    TriangleMesh& mesh = loaded.field.mesh;
+    std::vector<char> used(mesh.positions.size(), 0);
+    for (const auto& t : mesh.triangles)
+        for (const std::uint32_t v : t) used[v] = 1;
+    std::vector<std::uint32_t> index(used.size(), 0);
+    for (std::size_t v = 0; v < used.size(); ++v)
+        if (used[v]) index[v] = std::uint32_t(loaded.keptPoints.size()), loaded.keptPoints.push_back(std::uint32_t(v));
+    if (loaded.keptPoints.size() == mesh.positions.size()) {
+        loaded.keptPoints.clear();
+        return;
+    }
+    for (auto& t : mesh.triangles)
+        for (std::uint32_t& v : t) v = index[v];
+    keepTuples(mesh.positions, loaded.keptPoints, 1);
+    for (DataArray& array : loaded.field.arrays)
+        if (array.association == Association::Point) keepTuples(array.values, loaded.keptPoints, array.components);
+    loaded.report.unusedPointsDropped = loaded.points - loaded.keptPoints.size();
+}
 
 bool isDegenerate(const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& t)
 {
@@ -43,12 +79,6 @@ LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
     LoadedMesh out;
     const std::size_t vertexCount = raw.positions.size();
     if (vertexCount >= std::size_t(UINT32_MAX)) failInput(path, "has more points than can be indexed (2^32 - 1)");
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        const glm::vec3& p = raw.positions[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            failInput(path, "vertex " + std::to_string(i + oneBased) + " has a non-finite coordinate");
-        }
-    }
     TriangleMesh& mesh = out.field.mesh;
     mesh.positions = std::move(raw.positions);
 
@@ -79,13 +109,21 @@ LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
     }
     if (mesh.triangles.empty()) failInput(path, "mesh has no triangles");
     mesh.dataTriangleCount = mesh.triangles.size();
+    for (const auto& t : mesh.triangles)
+        for (const std::uint32_t v : t) {
+            const glm::vec3& p = mesh.positions[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                failInput(path, "vertex " + std::to_string(v + oneBased) + " has a non-finite coordinate");
+        }
 
     for (const DataArray& array : raw.arrays) {
         IVIS_CHECK(array.tuples() == (array.association == Association::Point ? vertexCount : raw.cellCount));
     }
     out.field.arrays = std::move(raw.arrays);
+    out.points = vertexCount;
     out.cells = raw.cellCount;
     out.report.notes = std::move(raw.notes);
+    dropUnusedPoints(out);
     return out;
 }
 
@@ -115,7 +153,8 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options, M
     if (!options.scalarName.empty()) {
         showArray(field, options.scalarName, options.cellToPoint);
     } else if (!options.scalarFile.empty()) {
-        field.values = readScalarFile(options.scalarFile, field.mesh.positions.size());
+        field.values = readScalarFile(options.scalarFile, loaded.points);
+        if (!loaded.keptPoints.empty()) keepTuples(field.values, loaded.keptPoints, 1);
         field.name = std::filesystem::path(options.scalarFile).stem().string();
     }
     if (report != nullptr) *report = std::move(loaded.report);
@@ -153,7 +192,7 @@ MeshInfo describeMesh(const std::string& path)
     MeshInfo info;
     info.path = path;
     info.format = loaded.format;
-    info.vertices = mesh.positions.size();
+    info.vertices = loaded.points;
     info.cells = loaded.cells;
     info.triangles = mesh.triangles.size();
     info.bounds = bounds(mesh);
@@ -187,9 +226,17 @@ std::vector<float> detail::parseScalarFile(const std::string& path, const std::s
     std::vector<float> values;
     detail::TextCursor in(data);
     for (std::string_view token = in.token(); !token.empty(); token = in.token()) {
-        const std::string where = "value " + std::to_string(values.size()) + " '" + std::string(token) + "'";
+        // A token is quoted in full up to 40 characters (a comma-separated file's line is one token).
+        const std::string quoted = token.size() <= 40 ? std::string(token) : std::string(token.substr(0, 37)) + "...";
+        const std::string where = "value " + std::to_string(values.size()) + " '" + quoted + "'";
         const detail::FloatToken number = detail::parseFloatToken(token);
-        if (number.kind == detail::FloatToken::NotANumber) failInput(path, where + " is not a number");
+        if (number.kind == detail::FloatToken::NotANumber)
+            failInput(path, where + " is not a number" +
+                                (token.find(',') != std::string_view::npos
+                                     ? " (values are separated by spaces or lines, not commas)"
+                                     : ""));
+        if (number.kind == detail::FloatToken::NonFinite && std::isfinite(number.value))
+            failInput(path, where + " is beyond the largest a 32-bit float holds (3.4e38)");
         if (number.kind == detail::FloatToken::NonFinite && !std::isnan(number.value)) {
             failInput(path, where + " is not finite (only nan is allowed)");
         }

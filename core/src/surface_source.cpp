@@ -79,6 +79,11 @@ SurfaceField loadReadSurface(const std::string& source, SurfaceField field, cons
     for (const std::string& note : report.notes) say(source + ": " + note, notes);
     if (report.degenerateDropped > 0)
         say(source + ": dropped " + std::to_string(report.degenerateDropped) + " degenerate triangles", notes);
+    if (report.unusedPointsDropped > 0)
+        say(source + ": left out " + std::to_string(report.unusedPointsDropped) +
+                (report.unusedPointsDropped == 1 ? " point" : " points") +
+                " that no triangle uses (they would widen the framing and the colour range)",
+            notes);
     if (options.defaultArray && !field.hasScalar() && options.hotSpots == 0 &&
         (!field.arrays.empty() || options.read.cellToPoint)) {
         const DataArray& shown = defaultArray(field, options.read.cellToPoint);

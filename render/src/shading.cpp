@@ -65,11 +65,11 @@ glm::vec4 Shader::shade(const PixelMapping& mapping, DistanceField::Sampler& sam
 
     if (mapping.region == Region::Indirect) {
         // Lit as a camera looking along the arriving ray would light it, so the back side's
-        // folds and ridges show; dimmed so that it reads as behind.
-        const float light = mOptions.shadeIndirect
-                                ? lighting(mapping.point.position, normal, toLightAlong(mapping.arrival),
-                                           mIndirectShadows, sampler)
-                                : 1.0f;
+        // folds and ridges show; dimmed so that it reads as behind. Unshaded, the colour bar's own
+        // colour, to be read against it.
+        if (!mOptions.shadeIndirect) return glm::vec4(base, 1.0f);
+        const float light =
+            lighting(mapping.point.position, normal, toLightAlong(mapping.arrival), mIndirectShadows, sampler);
         return glm::vec4(base * mOptions.indirectBrightness * light, 1.0f);
     }
     return glm::vec4(base * lighting(mapping.point.position, normal, mToLight, mOptions.shadows, sampler), 1.0f);

@@ -80,6 +80,13 @@ protected:
                quoted(output("x.png")) + " " + extra;
     }
 
+    /// `render` of @a mesh writing only its colour bar to @a bar (no -o: the picture is not written).
+    std::string renderLegendOnly(const std::string& mesh, const std::string& bar, const std::string& extra = "") const
+    {
+        return "render " + quoted(mesh) + " --volume-res 48 --res 32x32 --cache-dir " + quoted(output("")) +
+               " --legend-only " + quoted(bar) + " " + extra;
+    }
+
     /// Runs @a arguments, expects the bad-input contract and an untouched output folder.
     void expectRejected(const std::string& arguments, const std::vector<std::string>& parts) const
     {

@@ -30,13 +30,13 @@ TEST_F(Cli, ContradictoryScaleFlagsAreRejectedBeforeTheMeshIsRead)
     expectRejected(render(artery(), "--range-percentile 99 1"), {"--range-percentile [99, 1]"});
     expectRejected(render(artery(), "--log --range 0 1"), {"--log needs a positive range"});
     expectRejected(render(artery(), "--legend top"), {"unknown colour-bar side 'top'"});
-    expectRejected(render(artery(), "--legend-only " + quoted(output("bar.pdf"))), {"bar.pdf", ".svg or .png"});
+    expectRejected(renderLegendOnly(artery(), output("bar.pdf")), {"bar.pdf", ".svg or .png"});
 }
 
 TEST_F(Cli, LegendOnlyWritesTheBarAloneAsSvgOrPng)
 {
     const std::string svg = output("bar.svg");
-    const test::CliResult vector = test::runCli(render(artery(), "--units 'dyn/cm²' --legend-only " + quoted(svg)));
+    const test::CliResult vector = test::runCli(renderLegendOnly(artery(), svg, "--units 'dyn/cm²'"));
     ASSERT_EQ(vector.status, 0) << vector.err;
     const std::string text = fileText(svg);
     EXPECT_NE(text.find("<linearGradient"), std::string::npos);
@@ -50,7 +50,7 @@ TEST_F(Cli, LegendOnlyWritesTheBarAloneAsSvgOrPng)
     EXPECT_LT(bar.height(), 150);
     EXPECT_EQ(contents(mOutputs.path()), (std::vector<std::string>{"bar.png", "bar.svg"}));  // nothing else, no volume
     // The extension in any case, as the mesh readers take it (.SVG was accepted, then refused after the read).
-    const test::CliResult upper = test::runCli(render(artery(), "--legend-only " + quoted(output("BAR.SVG"))));
+    const test::CliResult upper = test::runCli(renderLegendOnly(artery(), output("BAR.SVG")));
     ASSERT_EQ(upper.status, 0) << upper.err;
     EXPECT_NE(fileText(output("BAR.SVG")).find("<linearGradient"), std::string::npos);
 }

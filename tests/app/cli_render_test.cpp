@@ -235,6 +235,26 @@ TEST_F(Cli, RenderProbeTellsWhatAPixelShowsAndAViewThatShowsItDirectly)
     EXPECT_LT(std::abs(frame.camera().angles().x - farReport.at("view").at("theta").get<double>()), 1e-3);
 }
 
+// The ring map's rays start inside the object and see a wall from within; a view from outside sees
+// its other side (every ring pixel of a sphere said that no view did).
+TEST_F(Cli, RenderProbeOfTheRingMapNamesAViewFromOutside)
+{
+    std::string probes;
+    for (int x = 0; x < 64; ++x) probes += " --probe " + std::to_string(x) + ",32";
+    const CliResult result = runCli("render scene:sphere --method neugebauer --volume-res 64 --hotspots 2 --res 64x64 "
+                                    "--cache-dir " + quoted(output("")) + probes + " -o " + quoted(output("p.png")) +
+                                    " --stats-json " + quoted(output("p.json")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    int indirect = 0;
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(output("p.json")));
+    for (const nlohmann::json& report : stats.at("probes")) {
+        if (!report.contains("position")) continue;
+        EXPECT_TRUE(report.at("view").is_object()) << report.dump();
+        indirect += report.at("region") == "indirect";
+    }
+    EXPECT_GT(indirect, 4);
+}
+
 // render --measure measures a picture as optimize measures its best view: rendering optimize's view
 // file gives the very figures optimize reported, and the even-spread bound of as many points.
 TEST_F(Cli, RenderMeasuresThePictureAsOptimizeMeasuresItsBestView)

@@ -185,6 +185,16 @@ TEST_F(CliSeries, InfoCountsTheStepsThatCarryEachArray)
     const CliResult text = runCli("info " + quoted(series));
     ASSERT_EQ(text.status, 0) << text.err;
     EXPECT_NE(text.out.find("(in 2 of 3 steps)"), std::string::npos) << text.out;
+    // An array only a later step carries, shown by default there, is not the series' default: the
+    // first step's is, which the series' pictures show (both were marked).
+    test::writeFile(tet, tetrahedron("other"));
+    const CliResult later = runCli("info " + quoted(series) + " --json");
+    ASSERT_EQ(later.status, 0) << later.err;
+    std::vector<std::string> shown;
+    const nlohmann::json laterInfo = nlohmann::json::parse(later.out);
+    for (const nlohmann::json& a : laterInfo.at("arrays"))
+        if (a.at("shown_by_default").get<bool>()) shown.push_back(a.at("name"));
+    EXPECT_EQ(shown, std::vector<std::string>{"pressure"});
     // A step that cannot be read is one line naming it, as every command says it.
     test::writeFile(tet, "not a vtp");
     expectBadInput(runCli("info " + quoted(series)), {tet + ":"});

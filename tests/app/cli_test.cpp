@@ -285,8 +285,7 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
                                                                                    {"--units Pa", "--units"},
                                                                                    {"--legend bottom", "--legend"}})
         expectRejected(render(mesh, flag), {mesh + ": " + name + " colours a scalar, and the mesh shows none"});
-    expectRejected(render("scene:sphere", "--legend-only " + quoted(output("bar.svg")) + " --exr " +
-                                              quoted(output("x.exr"))),
+    expectRejected(renderLegendOnly("scene:sphere", output("bar.svg"), "--exr " + quoted(output("x.exr"))),
                    {"--exr excludes --legend-only"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--no-video --fps 3"),
                    {"--fps excludes --no-video"});
@@ -296,11 +295,21 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
         expectRejected(render("scene:sphere", std::string("--probe ") + pixel), {"expected X,Y"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--probe 3,3"),
                    {"--probe: a series has one picture per step"});
-    expectRejected(render("scene:sphere", "--probe 3,3 --legend-only " + quoted(output("bar.svg"))),
+    expectRejected(renderLegendOnly("scene:sphere", output("bar.svg"), "--probe 3,3"),
                    {"--probe excludes --legend-only"});
     expectRejected(render(sharedMesh("vtk/artery_series/artery.pvd"), "--fps 0.05"),
                    {"--fps: Value 0.05 not in range [0.1 - 240]"});
+    expectRejected("rendr scene:sphere", {"'rendr' is not a command; the commands are info sdf render optimize"});
     expectRejected("evaluate scene:sphere --volume-res 48 --picture-res 32", {"--picture-res requires --pictures"});
+    expectRejected(renderLegendOnly("scene:sphere", output("bar.svg"), "-o " + quoted(output("x.png"))),
+                   {"--output excludes --legend-only"});
+    expectRejected(renderLegendOnly(sharedMesh("vtk/artery_series/artery.pvd"), output("bar.svg"), "--range-per-frame"),
+                   {"--legend-only excludes --range-per-frame"});
+    // --pictures is a folder: naming the same path as a table is refused before the evaluation (it
+    // ran, wrote the pictures, then failed to write the table).
+    expectRejected("evaluate scene:sphere --volume-res 48 --pictures " + quoted(output("p")) + " --markdown " +
+                       quoted(output("p")),
+                   {output("p") + ": --pictures and --markdown name the same path"});
     expectRejected("evaluate scene:sphere --volume-res 48 --opt-res 16,24,16", {"--opt-res: 16 is given twice"});
     expectRejected("merge " + quoted(input("missing.json")), {input("missing.json") + ": file not found"});
     // sdf shows no scalar, and says nothing of one (it named the array a picture would show).
@@ -314,7 +323,7 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
     test::writeFile(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet file=\"m.obj\"/><DataSet file=\"m.obj\"/>"
                          "</Collection></VTKFile>");
     expectRejected(render(pvd, "--colormap inferno"), {pvd + ": --colormap colours a scalar"});
-    expectRejected(render(pvd, "--legend-only " + quoted(output("bar.svg"))), {pvd + ": no scalar to draw a colour bar"});
+    expectRejected(renderLegendOnly(pvd, output("bar.svg")), {pvd + ": no scalar to draw a colour bar"});
 }
 
 // NaN passed CLI11's range checks (every comparison with it is false): "--gamma nan" optimised a

@@ -66,6 +66,21 @@ TEST(Viewer, InverseVisMatchesCpuRenderer)
 #endif
 }
 
+// --unshaded-indirect draws the indirect part in the colour bar's own colours in the shaders too (it
+// was dimmed to 0.75 of them in both).
+TEST(Viewer, UnshadedIndirectMatchesCpuRenderer)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    const Agreement flat = compareWithCpu("inversevis-wrap", 200, "", nullptr, "scene:vessel-tree", {}, false);
+    EXPECT_GE(flat.regionAgreement, 0.97);
+    EXPECT_GT(flat.bothIndirect, std::size_t(5000));
+    EXPECT_LT(flat.indirectMeanDiff, 1.0);
+#endif
+}
+
 TEST(Viewer, MirrorAndRingMatchCpuRenderer)
 {
 #ifndef IVIS_VIEW_PATH

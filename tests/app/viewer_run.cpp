@@ -110,7 +110,8 @@ Agreement agreement(const core::Image& cpu, const std::vector<float>& cpuRegion,
 
 #ifdef IVIS_VIEW_PATH
 Agreement compareWithCpu(const std::string& method, int volumeResolution, const std::string& viewerArguments,
-                         std::string* viewerOutput, const std::string& source, const core::SurfaceLoadOptions& load)
+                         std::string* viewerOutput, const std::string& source, const core::SurfaceLoadOptions& load,
+                         bool shadeIndirect)
 {
     TempDir dir;
     const core::SurfaceField field = core::loadSurface(source, load);
@@ -130,6 +131,7 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution, const 
     options.shading.scale.range = core::scalarRangeFromData(field.values);
     options.legend = false;
     options.outline = true;  // the viewer's outline pass draws the same
+    options.shading.shadeIndirect = shadeIndirect;
     // The viewer frames the view as the CLI does: the same field of view on the CPU and the GPU.
     const core::Camera camera = render::frameView(scene, core::Camera::fromAngles(90.0, 0.0), *options.method, 1.0);
     const render::RenderResult cpu = render::renderImage(scene, camera, options);
@@ -140,7 +142,8 @@ Agreement compareWithCpu(const std::string& method, int volumeResolution, const 
     const RunResult run = runViewer("'" + source + "' --theta 90 --phi 0 --method " + method + " --width 512 --height 512" +
                                         " --volume-res " + std::to_string(volumeResolution) +
                                         " --frames 3 --no-legend --screenshot '" + shot + "' --region-png '" + region +
-                                        "' --cache-dir '" + dir.path() + "' " + viewerArguments,
+                                        "' --cache-dir '" + dir.path() + "' " + viewerArguments +
+                                        (shadeIndirect ? "" : " --unshaded-indirect"),
                                     true, dir);
     if (viewerOutput) *viewerOutput = run.output;
     EXPECT_EQ(run.status, 0) << run.output;

@@ -63,9 +63,10 @@ Agreement agreement(const core::Image& cpu, const std::vector<float>& cpuRegion,
 /// @param viewerOutput optional output: what the viewer printed
 /// @param source the mesh of both
 /// @param load how the CPU side loads it
+/// @param shadeIndirect false: both draw the indirect part in the bar's flat colour (--unshaded-indirect)
 Agreement compareWithCpu(const std::string& method, int volumeResolution = 200, const std::string& viewerArguments = "",
                          std::string* viewerOutput = nullptr, const std::string& source = "scene:vessel-tree",
-                         const core::SurfaceLoadOptions& load = {});
+                         const core::SurfaceLoadOptions& load = {}, bool shadeIndirect = true);
 
 /// The parameters of the viewer's "inversevis-view: drawing {...}" line (the last one), or null.
 nlohmann::json drawnParameters(const std::string& output);

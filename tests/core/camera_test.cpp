@@ -213,6 +213,16 @@ void expectBadCameraFile(const std::string& path)
     }
 }
 
+TEST(Camera, FarButRepresentableCamerasAreValid)
+{
+    Camera camera;
+    camera.eye = {kMaxCameraCoordinate, 0.0, 0.0};
+    camera.fovYDeg = 1e-4;
+    EXPECT_NO_THROW(camera.validate());
+    camera.eye.x = std::nextafter(kMaxCameraCoordinate, 2.0 * kMaxCameraCoordinate);
+    EXPECT_THROW(camera.validate(), ValueError);
+}
+
 TEST(Camera, BadJsonThrowsInputErrorNamingThePath)
 {
     test::TempDir dir;
@@ -229,7 +239,12 @@ TEST(Camera, BadJsonThrowsInputErrorNamingThePath)
         {"bad_fov.json", "{\"fov_y_deg\": 180}"},
         {"short_window.json", "{\"window_centre\": [0.1]}"},
         {"text_window.json", "{\"window_centre\": [\"left\", 0]}"},
-        {"huge_window.json", "{\"window_centre\": [1e400, 0]}"}};
+        {"huge_window.json", "{\"window_centre\": [1e400, 0]}"},
+        // Beyond what single-precision rays represent (Embree asserted on an eye at 1e20).
+        {"far_eye.json", "{\"eye\": [1e20, 0, 0], \"fov_y_deg\": 30}"},
+        {"far_target.json", "{\"eye\": [0, 0, 2.5], \"target\": [0, 2e6, 0]}"},
+        {"wide_ortho.json", "{\"eye\": [0, 0, 2.5], \"orthographic\": true, \"ortho_half_height\": 1e30}"},
+        {"far_window.json", "{\"eye\": [0, 0, 2.5], \"window_centre\": [0, -3e6]}"}};
     for (const auto& [name, text] : files) {
         test::writeFile(dir.file(name), text);
         expectBadCameraFile(dir.file(name));

@@ -65,6 +65,17 @@ TEST(MeshReader, SidecarErrors)
     expectScalarError("1 2 3 abc 5 6 7 8\n", "value 3 'abc' is not a number");
     expectScalarError("1 2 3 0x10 5 6 7 8\n", "value 3 '0x10' is not a number");
     expectScalarError("1 2 3 inf 5 6 7 8\n", "value 3 'inf' is not finite");
+    expectScalarError("1 2 3 1e+300 5 6 7 8\n", "value 3 '1e+300' is beyond the largest a 32-bit float holds");
+    // A comma-separated file: its line is one token, quoted in part, and the separators named.
+    std::string commas = "1";
+    for (int k = 0; k < 2000; ++k) commas += ",1";
+    writeFile(w, commas);
+    const std::string message = inputError([&] { readScalarFile(w, 8); });
+    EXPECT_NE(message.find("value 0 '1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1...' is not a number (values are separated by "
+                           "spaces or lines, not commas)"),
+              std::string::npos)
+        << message;
+    EXPECT_LT(message.size(), 200u);
     const std::string missing = dir.file("missing.txt");
     EXPECT_EQ(inputError([&] { readScalarFile(missing, 8); }), missing + ": file not found");
     writeFile(w, "NaN -nan 1e-3");

@@ -283,6 +283,43 @@ TEST(MeshReader, DegenerateTrianglesAreDroppedAndCounted)
     EXPECT_EQ(report.degenerateDropped, 1u);
 }
 
+TEST(MeshReader, PointsNoTriangleUsesAreLeftOutWithTheirData)
+{
+    // A unit square (points 0, 1, 3, 4) and, between them in the file, point 2 far away (and one
+    // at the end), which no face uses, as VTK files often carry them.
+    TempDir dir;
+    writeFile(dir.file("u.ply"), "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                                 "property float z\nproperty float p\nelement face 2\nproperty list uchar int "
+                                 "vertex_indices\nend_header\n0 0 0 10\n1 0 0 11\n1000 1000 1000 99\n1 1 0 13\n"
+                                 "0 1 0 14\n0 0 500 -99\n3 0 1 3\n3 0 3 4\n");
+    writeFile(dir.file("u.txt"), "20 21 -500 23 24 500\n");
+    MeshReadReport report;
+    SurfaceField field = readMesh(dir.file("u.ply"), {}, &report);
+    EXPECT_EQ(report.unusedPointsDropped, 2u);
+    ASSERT_EQ(field.mesh.positions.size(), 4u);
+    const Bounds3 box = bounds(field.mesh);
+    EXPECT_EQ(box.hi, glm::dvec3(1.0, 1.0, 0.0));
+    ASSERT_EQ(field.arrays.size(), 1u);
+    EXPECT_EQ(field.arrays[0].values, (std::vector<double>{10, 11, 13, 14}));
+    // Each triangle still joins the same points, and each point keeps its own value.
+    const std::vector<std::array<glm::vec3, 3>> corners = {{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 1, 0)},
+                                                           {glm::vec3(0, 0, 0), glm::vec3(1, 1, 0), glm::vec3(0, 1, 0)}};
+    ASSERT_EQ(field.mesh.triangles.size(), 2u);
+    for (std::size_t t = 0; t < 2; ++t)
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(field.mesh.positions[field.mesh.triangles[t][k]], corners[t][k]);
+
+    // A scalar file gives one value per point of the file; the same points' values are kept.
+    field = readMesh(dir.file("u.ply"), {"", dir.file("u.txt"), false}, &report);
+    EXPECT_EQ(field.values, (std::vector<float>{20, 21, 23, 24}));
+
+    // info counts the file's points and bounds the ones drawn.
+    const MeshInfo info = describeMesh(dir.file("u.ply"));
+    EXPECT_EQ(info.vertices, 6u);
+    EXPECT_EQ(info.report.unusedPointsDropped, 2u);
+    EXPECT_EQ(info.bounds.hi, glm::dvec3(1.0, 1.0, 0.0));
+    EXPECT_EQ(info.arrays.at(0).max, 14.0);
+}
+
 // ----------------------------------------------------------------------------------------------
 // Scalars
 // ----------------------------------------------------------------------------------------------

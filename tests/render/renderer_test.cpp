@@ -179,6 +179,35 @@ TEST(Renderer, InverseVisRingSurroundsTheSphere)
     }
 }
 
+TEST(Renderer, UnshadedIndirectPixelsAreTheColourBarsColour)
+{
+    // --unshaded-indirect is for reading the back side's values against the bar: each indirect
+    // pixel is exactly the bar's colour of the scalar it shows (it was dimmed to 0.75 of it), while
+    // the shaded picture's are dimmed and lit.
+    const auto& fixture = test::sphereScene();
+    RenderOptions options = testOptions(fixture.field, "inversevis", 64, 1);
+    options.shading.shadeIndirect = false;
+    const RenderResult flat = renderImage(*fixture.scene, core::Camera(), options);
+    options.shading.shadeIndirect = true;
+    const RenderResult lit = renderImage(*fixture.scene, core::Camera(), options);
+    const core::Colormap& colours = core::colormap(options.shading.colormap);
+    const core::Channel& region = flat.layers.channel("region");
+    const core::Channel& scalar = flat.layers.channel("scalar");
+    std::size_t checked = 0, darker = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const std::size_t i = std::size_t(y) * 64 + x;
+            if (region[i] != float(Region::Indirect) || std::isnan(scalar[i])) continue;
+            const glm::vec3 bar = colours.at(options.shading.scale.position(scalar[i]));
+            const glm::vec4 pixel = flat.image.at(x, y);
+            EXPECT_LE(glm::length(glm::vec3(pixel) - bar), 1e-5f) << x << "," << y;
+            darker += glm::length(glm::vec3(lit.image.at(x, y))) < 0.76f * glm::length(bar) + 1e-6f;
+            ++checked;
+        }
+    EXPECT_GT(checked, 300u);
+    EXPECT_EQ(darker, checked);
+}
+
 // On an open mesh (unsigned distance) the trilinear phi near a wall stays around 0.5..1 voxel at
 // the samples, so a shadow ray could step across a thin wall; shadowFactor detects the crossing.
 TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)

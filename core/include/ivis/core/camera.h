@@ -20,6 +20,12 @@ inline constexpr double kCameraDistance = 2.5;
 ///        asin(1.4 / 2.5) = 34 degrees, with a margin.
 inline constexpr double kDefaultFovYDeg = 75.0;
 
+/// @brief How far from the origin (the normalised object's centre, the object within about 1 of
+///        it) a camera's eye and target may lie, and how large its orthographic half height and
+///        window centre may be: beyond, a ray's origin or direction leaves what single-precision
+///        ray tracing represents.
+inline constexpr double kMaxCameraCoordinate = 1e6;
+
 /// @brief A camera: where it is, what it looks at, and how it projects.
 struct Camera {
     glm::dvec3 eye{0.0, 0.0, kCameraDistance};
@@ -39,7 +45,8 @@ struct Camera {
     /// @brief Polar and azimuth angles (degrees) of the eye around the target.
     glm::dvec2 angles() const;
     /// @brief Throws ValueError unless eye != target, up is not parallel to the view, 0 < fov < 180,
-    ///        the window centre is finite.
+    ///        and the eye, the target, the orthographic half height and the window centre lie
+    ///        within kMaxCameraCoordinate.
     void validate() const;
 };
 

@@ -34,6 +34,7 @@ struct MeshReadOptions {
 /// @brief What reading a file left out or repaired, for the user to hear about.
 struct MeshReadReport {
     std::size_t degenerateDropped = 0;  ///< triangles dropped (repeated index or zero area)
+    std::size_t unusedPointsDropped = 0;  ///< points no triangle uses, dropped with their point data
     std::vector<std::string> notes;     ///< what the file holds that is not shown ("left out 3 line cells")
 };
 
@@ -53,10 +54,10 @@ struct ArrayInfo {
 struct MeshInfo {
     std::string path;
     std::string format;  ///< "obj", "off", "ply", "stl", "vtk", "vtp", "vtu"
-    std::size_t vertices = 0;
+    std::size_t vertices = 0;  ///< points in the file, used by a triangle or not
     std::size_t cells = 0;  ///< faces or cells in the file (the tuples of a cell array)
     std::size_t triangles = 0;
-    Bounds3 bounds;  ///< in the file's own units
+    Bounds3 bounds;  ///< of the points some triangle uses, in the file's own units
     std::size_t boundaryEdges = 0;
     std::size_t components = 0;
     MeshReadReport report;

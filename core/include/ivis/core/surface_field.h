@@ -28,7 +28,8 @@ struct SurfaceField {
     std::string name;                           ///< the shown scalar's name ("" when there is none)
     std::string sourcePath;                     ///< file it came from, or "generated:<scene>"
     Similarity normalization;                   ///< identity until normalize() is called
-    std::vector<DataArray> arrays;              ///< the file's arrays: a tuple per file point or per file cell
+    std::vector<DataArray> arrays;              ///< the file's arrays: a tuple per vertex (the file's points
+                                                ///< some triangle uses) or per file cell
     std::vector<std::uint32_t> triangleCells;   ///< file cell of each data triangle (empty when generated)
 
     /// @brief True when a scalar is shown.

@@ -26,8 +26,8 @@ struct ShadingOptions {
     std::string colormap = "viridis";
     core::ColorScale scale;               ///< scalar values to colour-map positions
     float ambient = 0.3f;                 ///< light reaching every direct pixel
-    float indirectBrightness = 0.75f;     ///< indirect pixels: colour x this, so they read as behind
-    bool shadeIndirect = true;            ///< light indirect pixels from their arriving ray (else flat colour)
+    float indirectBrightness = 0.75f;     ///< lit indirect pixels: colour x this, so they read as behind
+    bool shadeIndirect = true;            ///< light indirect pixels from their arriving ray (else the bar's colour)
     bool shadows = true;                  ///< shadow rays sphere-traced through the level set
     bool transparentBackground = false;
     glm::vec3 background{1.0f};
