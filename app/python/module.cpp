@@ -26,7 +26,7 @@ namespace {
 py::dict arrayDict(const core::ArrayInfo& a)
 {
     py::dict d;
-    d["name"] = a.name;
+    d["name"] = python::decodedText(a.name);
     d["association"] = core::associationName(a.association);
     d["type"] = core::valueTypeName(a.type);
     d["components"] = a.components;
@@ -35,6 +35,17 @@ py::dict arrayDict(const core::ArrayInfo& a)
     d["nan_count"] = a.nanCount;
     d["shown_by_default"] = a.shownByDefault;
     return d;
+}
+
+/// The array named by scalar= (None: the file's default); a TypeError for anything but a name.
+std::string scalarName(const py::object& scalar)
+{
+    if (scalar.is_none()) return {};
+    if (!py::isinstance<py::str>(scalar))
+        throw py::type_error("scalar must be an array's name ('NAME', 'NAME:0', 'cell:NAME'), got " +
+                             py::str(scalar.get_type().attr("__name__")).cast<std::string>() +
+                             "; to colour by your own values give them to Mesh(..., point_data={'NAME': values})");
+    return scalar.cast<std::string>();
 }
 
 }  // namespace
@@ -79,7 +90,9 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             "The point and cell arrays, as `inversevis info` lists them: dicts with name, association, type, "
             "components, min, max, nan_count, shown_by_default.")
         .def("__repr__", [](const python::Mesh& mesh) {
-            return "<inversevis.Mesh " + mesh.source() + ": " + std::to_string(mesh.arrays().size()) + " arrays>";
+            return python::decodedText("<inversevis.Mesh " + mesh.source() + ": " + std::to_string(mesh.vertexCount()) +
+                                       " vertices, " + std::to_string(mesh.triangleCount()) + " triangles, " +
+                                       std::to_string(mesh.arrays().size()) + " arrays>");
         });
 
     py::class_<python::Picture, std::shared_ptr<python::Picture>>(m, "Picture", "A rendered picture (render()).")
@@ -124,17 +137,21 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
 
     m.def(
         "render",
-        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, double theta, double phi,
-           const std::optional<double>& fov, const std::optional<py::dict>& camera, const std::pair<int, int>& size,
+        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::optional<double>& theta,
+           const std::optional<double>& phi, const std::optional<double>& fov, const std::optional<py::dict>& camera,
+           const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range, bool log, bool invert,
            const std::string& units, int volumeResolution, double minCoherence, bool fullTrace, bool legend,
            const std::string& legendSide, bool outline, bool shadows, bool shadeIndirect, bool transparent, int spp,
            bool measure, const py::object& progress, const py::kwargs& parameters) {
             python::RenderRequest request;
             request.method = method;
-            if (!scalar.is_none()) request.scalar = scalar.cast<std::string>();
-            request.theta = theta;
-            request.phi = phi;
+            request.scalar = scalarName(scalar);
+            if (camera && (theta || phi || fov))
+                throw ValueError("camera= is the whole view; theta, phi and fov beside it would be ignored (as "
+                                 "`render --camera` refuses --theta, --phi and --fov)");
+            request.theta = theta.value_or(90.0);
+            request.phi = phi.value_or(0.0);
             request.fov = fov;
             request.camera = camera;
             request.size = size;
@@ -158,7 +175,8 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             return python::renderMesh(mesh, request, progress);
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
-        py::arg("scalar") = py::none(), py::arg("theta") = 90.0, py::arg("phi") = 0.0, py::arg("fov") = py::none(),
+        py::arg("scalar") = py::none(), py::arg("theta") = py::none(), py::arg("phi") = py::none(),
+        py::arg("fov") = py::none(),
         py::arg("camera") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
         py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("log") = false,
         py::arg("invert") = false, py::arg("units") = "", py::arg("volume_resolution") = 200,
@@ -171,8 +189,9 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
 method: a method's name (methods() lists them); its parameters as keywords by their keys
 (stable_shift=0.2, alpha=0.5, mirror_w=[0.3, 0.3, 0, 0, 0]). scalar: the array to colour by
 ('NAME', 'NAME:0' for a component, 'cell:NAME'; None: the file's default). theta, phi: the
-camera on the sphere of radius 2.5, the field of view framed to the picture unless fov (degrees)
-or camera (a Picture.camera) fixes it. size: (width, height). range: (lo, hi) of the colour scale
+camera on the sphere of radius 2.5 (None: 90 and 0), the field of view framed to the picture unless
+fov (degrees) fixes it; or camera (a Picture.camera) fixes the whole view instead. size: (width,
+height). range: (lo, hi) of the colour scale
 (None: the data's); log, invert, units, legend, legend_side ('right', 'left', 'bottom'),
 outline, shadows, shade_indirect, transparent, spp: render's --log, --invert, --units,
 --no-legend, --legend, --no-outline, --no-shadows, --unshaded-indirect, --transparent, --spp.
@@ -193,7 +212,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
            const py::kwargs& parameters) {
             python::OptimizeRequest request;
             request.look.method = method;
-            if (!scalar.is_none()) request.look.scalar = scalar.cast<std::string>();
+            request.look.scalar = scalarName(scalar);
             request.look.size = size;
             request.look.colormap = colormap;
             request.look.range = range;
@@ -203,6 +222,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
             request.look.shadows = shadows;
             request.look.transparent = transparent;
             request.look.parameters = parameters;
+            request.look.function = "optimize";
             request.energy = energy;
             request.gamma = gamma;
             request.optResolution = optRes;
@@ -236,7 +256,8 @@ gamma weighting the direct part, 1 by default). opt_res: rays per side while sea
 proposals after the start; seed: the search's seed (the same seed, the same result); finalists:
 best views measured again at 200 rays per side (0: none); hot_spot_views: with the scalar energy, the
 hot-spot rule's views (as `optimize --hot-spot-views`, 0: none); start: (theta, phi) to start from (None:
-the best of the six axis views); views: with N > 1, also the visited views that show the most surface
+the best of 26 views from a cube's faces, edges and corners, as `optimize` starts); views: with N > 1,
+also the visited views that show the most surface
 with the best one (as `optimize --views N`: Picture.views, save_views(), optimization['several_views']
 with their union's visibility; the visibility energy). The method's parameters as keywords start its ascent (a readable
 rule given, e.g. stable_shift=0.1, is kept; otherwise the rule keeping min_coherence is chosen).

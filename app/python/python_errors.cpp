@@ -4,6 +4,12 @@
 
 namespace ivis::python {
 
+pybind11::str decodedText(const std::string& text)
+{
+    return pybind11::reinterpret_steal<pybind11::str>(
+        PyUnicode_DecodeUTF8(text.data(), pybind11::ssize_t(text.size()), "replace"));
+}
+
 void registerErrors(pybind11::module_& module)
 {
     static pybind11::exception<InputError> inputError(module, "InputError", PyExc_ValueError);
@@ -12,9 +18,9 @@ void registerErrors(pybind11::module_& module)
         try {
             if (error) std::rethrow_exception(error);
         } catch (const InputError& e) {
-            inputError(e.what());
+            PyErr_SetObject(inputError.ptr(), decodedText(e.what()).ptr());
         } catch (const ValueError& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
+            PyErr_SetObject(PyExc_ValueError, decodedText(e.what()).ptr());
         } catch (const Cancelled&) {
             PyErr_SetNone(PyExc_KeyboardInterrupt);
         }

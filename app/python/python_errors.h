@@ -6,7 +6,13 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace ivis::python {
+
+/// @brief @a text (a message, a name read from a file) as a Python str, any bytes that are not
+///        UTF-8 replaced by U+FFFD: a file's Latin-1 name must not turn an error into an empty one.
+pybind11::str decodedText(const std::string& text);
 
 /// @brief Registers inversevis.InputError and the translation of the library's errors on @a module.
 void registerErrors(pybind11::module_& module);

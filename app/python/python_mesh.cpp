@@ -26,6 +26,14 @@ std::string described(const py::array& array)
     return text.str();
 }
 
+/// @a array in the machine's byte order (a copy where numpy holds it swapped, as '>f8'), which the
+/// copies below read.
+py::array nativeOrder(const py::array& array)
+{
+    if (array.dtype().attr("isnative").cast<bool>()) return array;
+    return array.attr("astype")(array.dtype().attr("newbyteorder")("="));
+}
+
 /// The value type of a numeric dtype; throws TypeError naming @a what for any other.
 core::ValueType valueType(const py::array& array, const std::string& what)
 {
@@ -100,8 +108,9 @@ std::vector<core::DataArray> dataArrays(const py::dict& data, core::Association 
         if (!py::isinstance<py::str>(key)) throw py::type_error(where + " keys must be array names (str)");
         const std::string name = key.cast<std::string>();
         if (name.empty()) throw py::value_error(where + ": an array needs a name");
-        const py::array array = py::array::ensure(value);
+        py::array array = py::array::ensure(value);
         if (!array) throw py::type_error(where + "['" + name + "'] must be a numpy array");
+        array = nativeOrder(array);
         core::DataArray data;
         data.name = name;
         data.association = association;
@@ -142,9 +151,10 @@ std::shared_ptr<Mesh> Mesh::read(const std::string& source)
     return mesh;
 }
 
-std::shared_ptr<Mesh> Mesh::fromArrays(const py::array& vertices, const py::array& faces, const py::dict& pointData,
-                                       const py::dict& cellData)
+std::shared_ptr<Mesh> Mesh::fromArrays(const py::array& givenVertices, const py::array& givenFaces,
+                                       const py::dict& pointData, const py::dict& cellData)
 {
+    const py::array vertices = nativeOrder(givenVertices), faces = nativeOrder(givenFaces);
     const char vertexKind = vertices.dtype().kind();
     if (vertices.ndim() != 2 || vertices.shape(1) != 3 || vertexKind != 'f' ||
         (vertices.itemsize() != 4 && vertices.itemsize() != 8))

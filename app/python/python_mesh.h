@@ -46,6 +46,9 @@ public:
     /// @brief Its vertices in its own units (n x 3 float32) and triangles (m x 3 int64), copied.
     pybind11::array vertices() const;
     pybind11::array faces() const;
+    /// @brief How many vertices (those some triangle uses) and triangles it has.
+    std::size_t vertexCount() const { return mRaw.mesh.positions.size(); }
+    std::size_t triangleCount() const { return mRaw.mesh.triangles.size(); }
     /// @brief Its arrays, as `inversevis info` lists them.
     std::vector<core::ArrayInfo> arrays() const { return core::describeArrays(mRaw); }
 

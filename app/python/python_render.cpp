@@ -20,11 +20,19 @@ namespace py = pybind11;
 
 namespace ivis::python {
 
-render::ParameterValues parameterValues(const py::dict& parameters)
+render::ParameterValues parameterValues(const py::dict& parameters, const std::string& method,
+                                        const std::string& function)
 {
+    const render::MethodInfo& info = render::methodInfo(method);  // an unknown name fails here
     render::ParameterValues values;
     for (const auto& [key, value] : parameters) {
         const std::string name = key.cast<std::string>();
+        if (!info.parameter(name)) {  // a mistyped option (colourmap=) is not a parameter of the method
+            std::string known;
+            for (const render::ParameterSpec& spec : info.parameters) known += (known.empty() ? "" : ", ") + spec.key;
+            throw py::type_error(function + "() got an unexpected keyword argument '" + name +
+                                 "' (neither one of its arguments nor a parameter of " + method + ": " + known + ")");
+        }
         if (py::isinstance<py::bool_>(value)) throw py::type_error(name + " must be a number or numbers, not a bool");
         if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
             values[name] = {value.cast<float>()};
@@ -74,7 +82,7 @@ PictureLook pictureLook(const RenderRequest& request)
 {
     // Every argument is checked before anything is read or built.
     PictureLook look;
-    look.values = parameterValues(request.parameters);
+    look.values = parameterValues(request.parameters, request.method, request.function);
     const render::MethodPtr method = methodWith(request.method, look.values);
     render::RenderOptions& options = look.options;
     std::tie(options.width, options.height) = request.size;

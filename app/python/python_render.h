@@ -45,11 +45,15 @@ struct RenderRequest {
     int samplesPerPixel = 1;
     bool measure = false;                    ///< also what `render --measure` measures
     pybind11::dict parameters;               ///< the method's parameters by key
+    std::string function = "render";         ///< the Python function asked (its name in messages)
 };
 
-/// @brief The method's parameters from Python values: a number, or a sequence of numbers per component.
-/// @throw TypeError (py::type_error) for anything else
-render::ParameterValues parameterValues(const pybind11::dict& parameters);
+/// @brief Method @a method's parameters from the keywords @a function was given beyond its own: each a
+///        number, or a sequence of numbers per component.
+/// @throw TypeError (py::type_error) for a keyword that names no parameter of the method, or a value
+///        of another kind
+render::ParameterValues parameterValues(const pybind11::dict& parameters, const std::string& method,
+                                        const std::string& function);
 
 /// @brief The method @a name with @a values (render::makeMethod), its errors naming the parameters
 ///        as keywords (stable_shift) instead of options (--stable-shift).

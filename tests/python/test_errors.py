@@ -48,7 +48,15 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
     mesh = inversevis.Mesh(*sphere[:2], point_data={"h": sphere[2]})
     cases = [
         (dict(method="nothing"), ValueError, "unknown method 'nothing'"),
-        (dict(alpha=0.5), ValueError, "alpha"),
+        (dict(alpha=0.5), TypeError, "render() got an unexpected keyword argument 'alpha' (neither one of its "
+                                     "arguments nor a parameter of inversevis-wrap: "),
+        (dict(colourmap="magma"), TypeError, "unexpected keyword argument 'colourmap'"),
+        (dict(scalar=3), TypeError, "scalar must be an array's name ('NAME', 'NAME:0', 'cell:NAME'), got int"),
+        (dict(scalar=np.zeros(86)), TypeError, "got ndarray; to colour by your own values give them to Mesh("),
+        (dict(camera={"eye": [0, 0, 2.5]}, theta=30), ValueError, "camera= is the whole view; theta, phi and fov"),
+        (dict(camera={"eye": [0, 0, 2.5]}, fov=10), ValueError, "camera= is the whole view"),
+        (dict(camera={"eye": [1e20, 0, 0]}), ValueError, "camera eye at 1e+20 normalised units from the object's centre "
+                                                         "is out of range"),
         (dict(stable_shift=-1.0), ValueError, "inversevis-wrap stable_shift -1 is out of range (0.0001 to 10)"),
         (dict(stable_shift="a"), TypeError, "stable_shift must be a number"),
         (dict(size=(0, 10)), ValueError, "width and height must be 1 to 32768"),
@@ -88,3 +96,35 @@ def test_save_refuses_other_formats_and_writes_nothing(tmp_path):
     with pytest.raises(inversevis.InputError):
         picture.save(str(tmp_path / "no" / "folder" / "p.png"))
     assert list(tmp_path.iterdir()) == []
+
+
+def test_points_no_face_uses_are_left_out_with_their_data(sphere):
+    """Unused points (as VTK files carry them) neither widen the framing nor the colour range."""
+    v, f, h = sphere
+    far = np.vstack([v, [[40.0, 40.0, 40.0]]])
+    mesh = inversevis.Mesh(far, f, point_data={"h": np.append(h, 5.0)})
+    assert np.array_equal(mesh.vertices, v.astype(np.float32))
+    assert mesh.arrays[0]["max"] == pytest.approx(h.max())
+    kept = inversevis.render(mesh, "front", size=(40, 40)).rgba
+    assert np.array_equal(kept, inversevis.render(inversevis.Mesh(v, f, point_data={"h": h}), "front", size=(40, 40)).rgba)
+    nan = inversevis.Mesh(np.vstack([v, [[np.nan, 0.0, 0.0]]]), f)  # refused only where a face uses it
+    assert len(nan.vertices) == len(v)
+
+
+def test_arrays_in_either_byte_order_are_the_same_mesh(sphere):
+    v, f, h = sphere
+    native = inversevis.Mesh(v, f, point_data={"h": h}, cell_data={"c": np.arange(len(f), dtype=np.int32)})
+    swapped = inversevis.Mesh(v.astype(">f8"), f.astype(">i8"), point_data={"h": h.astype(">f4")},
+                              cell_data={"c": np.arange(len(f), dtype=">i4")})
+    assert np.array_equal(native.vertices, swapped.vertices)
+    assert np.array_equal(native.faces, swapped.faces)
+    for a, b in zip(native.arrays, swapped.arrays):
+        assert (a["min"], a["max"]) == pytest.approx((b["min"], b["max"]), rel=1e-6)
+
+
+def test_a_message_holding_bytes_that_are_not_utf8_still_says_what_is_wrong(tmp_path):
+    bad = tmp_path / "view.json"
+    bad.write_bytes(b"\xff\xfe not json")
+    with pytest.raises(inversevis.InputError) as refused:
+        inversevis.read_view(str(bad))
+    assert str(refused.value).startswith(f"{bad}: ")

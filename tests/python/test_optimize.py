@@ -89,7 +89,6 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     (dict(min_coherence=1.5), "min_coherence"),
     (dict(start=(float("inf"), 0.0)), "start .inf, 0.*: theta and phi must be finite"),
     (dict(size=(4, 100)), "needs a wider picture"),
-    (dict(alpha=0.5), "alpha"),
     (dict(views=0), "views 0 is out of range"),
     (dict(views=2, energy="scalar"), "need energy='visibility'"),
 ])
@@ -97,6 +96,13 @@ def test_bad_settings_are_refused_with_a_clear_message(arguments, message):
     mesh = inversevis.Mesh.read("scene:vessel-tree")
     with pytest.raises(ValueError, match=message):
         inversevis.optimize(mesh, **{**SMALL, **arguments})
+
+
+def test_a_keyword_neither_argument_nor_parameter_is_a_type_error():
+    mesh = inversevis.Mesh.read("scene:vessel-tree")
+    for keyword in ("alpha", "units", "log"):  # a paper-model parameter, and render()'s own arguments
+        with pytest.raises(TypeError, match=f"optimize\\(\\) got an unexpected keyword argument '{keyword}'"):
+            inversevis.optimize(mesh, **{**SMALL, keyword: 0.5})
 
 
 def test_the_scalar_energy_needs_a_scalar():

@@ -18,6 +18,9 @@ def test_a_cli_view_draws_the_same_picture_from_python(tmp_path):
     arguments = inversevis.read_view(str(view))
     assert arguments["size"] == (240, 180) and arguments["log"] and arguments["invert"]
     assert arguments["legend_side"] == "left" and arguments["units"] == "Pa" and not arguments["outline"]
+    written = json.loads(view.read_text())["mesh_units"]  # the tree's own transform, not an identity
+    assert arguments["camera"]["mesh_units"]["scale"] == written["scale"] != 1.0
+    assert arguments["camera"]["mesh_units"]["center"] == written["center"]
     picture = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), volume_resolution=64, **arguments)
     picture.save(str(tmp_path / "py.png"))
     again = run_cli("render", "scene:vessel-tree", "--view", str(view), "--volume-res", "64", "-o",
