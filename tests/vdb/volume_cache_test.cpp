@@ -4,6 +4,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/file_bytes.h>
 #include <ivis/core/procedural_scenes.h>
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <gtest/gtest.h>
@@ -75,6 +76,33 @@ TEST(VolumeCache, ReusesMatchingCache)
     const SurfaceVolume reused = loadOrBuildVolume(mesh, smallOptions(), dir.file("v.vdb"), nullptr, &outcome);
     EXPECT_EQ(outcome, CacheOutcome::Reused);
     EXPECT_GT(reused.phi->activeVoxelCount(), 0u);
+}
+
+TEST(VolumeCache, OneGeometryReadFromTwoFilesSharesItsCache)
+{
+    // The steps of a series rendered one by one (a Python script's loop) each built and kept a
+    // volume of the same geometry under their own names.
+    test::TempDir dir;
+    const core::TriangleMesh mesh = core::makeSphere(2).mesh, other = core::makeSphere(3).mesh;
+    const std::string first = defaultVolumePath(dir.path(), "steps/a_t0200.vtp", mesh, smallOptions());
+    EXPECT_EQ(fs::path(first).filename().string().rfind("a_t0200.", 0), 0u) << first;
+    loadOrBuildVolume(mesh, smallOptions(), first);
+    const std::string second = defaultVolumePath(dir.path(), "steps/a_t0400.vtp", mesh, smallOptions());
+    EXPECT_EQ(second, first);
+    CacheOutcome outcome{};
+    loadOrBuildVolume(mesh, smallOptions(), second, nullptr, &outcome);
+    EXPECT_EQ(outcome, CacheOutcome::Reused);
+    // Another geometry, resolution or reach does not take it; a file's own cache comes first.
+    EXPECT_NE(defaultVolumePath(dir.path(), "steps/a_t0400.vtp", other, smallOptions()), first);
+    VolumeOptions finer = smallOptions();
+    finer.resolution = 64;
+    EXPECT_NE(defaultVolumePath(dir.path(), "steps/a_t0400.vtp", mesh, finer), first);
+    VolumeOptions nearer = smallOptions();
+    nearer.farFieldReach = 1.0;
+    EXPECT_NE(defaultVolumePath(dir.path(), "steps/a_t0400.vtp", mesh, nearer), first);
+    const std::string own = dir.file(fs::path(first).filename().string().replace(0, 7, "b_t0600"));
+    test::writeFile(own, "x");
+    EXPECT_EQ(defaultVolumePath(dir.path(), "b_t0600.ply", mesh, smallOptions()), own);
 }
 
 TEST(VolumeCache, OtherMeshOrResolutionIsStale)

@@ -67,9 +67,22 @@ std::string defaultVolumePath(const std::string& folder, const std::string& sour
     const char* sign = options.sign == DistanceSign::Signed     ? ".signed"
                        : options.sign == DistanceSign::Unsigned ? ".unsigned"
                                                                      : "";
-    const std::string name = core::sourceStem(source) + "." + core::toHex(core::meshHash(mesh)) + ".res" +
-                             std::to_string(options.resolution) + reach + band + sign + ".vdb";
-    return (std::filesystem::path(folder) / name).string();
+    namespace fs = std::filesystem;
+    const std::string suffix = "." + core::toHex(core::meshHash(mesh)) + ".res" + std::to_string(options.resolution) +
+                               reach + band + sign + ".vdb";
+    const fs::path own = fs::path(folder) / (core::sourceStem(source) + suffix);
+    std::error_code error;
+    if (fs::exists(own, error)) return own.string();
+    // The same geometry cached under another file's name (the other steps of a time series, a file
+    // converted or copied): its volume is this mesh's (the file's key is checked when it is read).
+    std::string other;
+    for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+            (other.empty() || it->path().string() < other))
+            other = it->path().string();
+    }
+    return other.empty() ? own.string() : other;
 }
 
 bool isVolumeCacheName(const std::string& fileName)

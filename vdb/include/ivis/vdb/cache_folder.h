@@ -32,7 +32,9 @@ std::string optionalCacheFolder(const std::string& cacheDir);
 ///        with ".band<B>" before ".vdb" for a band other than the default and ".signed" or
 ///        ".unsigned" for a distance sign asked for, so that every geometry of a time series (and
 ///        every mesh of one name) keeps a cache of its own, and so does each far-field reach (the
-///        curved-ray methods' volumes reach further than the others'), band and sign.
+///        curved-ray methods' volumes reach further than the others'), band and sign; where no such
+///        file exists but one of another stem with the same rest of the name does (the same
+///        geometry read from another file: the steps of a series), that one (the first by name).
 std::string defaultVolumePath(const std::string& folder, const std::string& source, const core::TriangleMesh& mesh,
                               const VolumeOptions& options);
 
