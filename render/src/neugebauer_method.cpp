@@ -57,8 +57,8 @@ const MethodInfo& neugebauerMethodInfo()
         i.name = "neugebauer";
         i.help = "ring map of Neugebauer et al. 2009 around the silhouette, with a back-side disc on the left";
         i.parameters = {{"ring_centre", "ring map centre x y z (normalised units)", {0.0f, 0.0f, 0.0f}, -2.5f, 2.5f},
-                        {"ring_width", "ring width r2 - r1 (fraction of the image half-height; at most 0.9, so that a framed "
-                         "picture keeps room for the object)", {0.3f}, 0.01f, 0.9f}};
+                        {"ring_width", "ring width r2 - r1 (fraction of the image half-height; at most 0.75, so that a "
+                         "framed picture keeps room for the object from every view)", {0.3f}, 0.01f, 0.75f}};
         i.viewValueKeys = {"ring_pixel_centre", "ring_inner", "back_centre", "back_radius"};
         i.create = [](const ParameterValues& v) {
             RingParams params;

@@ -8,6 +8,7 @@
 #include <ivis/render/curved_ray_method.h>
 #include <ivis/render/framing.h>
 #include <ivis/render/method_registry.h>
+#include <ivis/render/neugebauer_method.h>
 #include <ivis/render/renderer.h>
 
 #include <gtest/gtest.h>
@@ -134,6 +135,30 @@ int toBorder(int x, int y, int size) { return std::min({x, y, size - 1 - x, size
 // landings, so only their landings count). The picture is not small or off-centre either: what the
 // method may show (the object, the hull or the rings, the mirror's and the wrap rings' landings)
 // comes within 12 pixels of both borders of one axis (the margin is 5).
+TEST(Framing, TheWidestRingMapStillFitsTheFrame)
+{
+    // --ring-width allowed 0.9, which no framed picture fits, not even the sphere's; its largest
+    // value now fits the sphere's and the tree's pictures from every view.
+    const float widest = neugebauerMethodInfo().parameter("ring_width")->hi;
+    const MethodPtr rings = makeMethod("neugebauer", {{"ring_width", {widest}}});
+    RingParams beyond;
+    beyond.ringWidth = 0.85f;  // beyond the bound: made directly, as makeMethod refuses it
+    const NeugebauerMethod wider(beyond);
+    std::vector<core::Camera> views = randomViews();
+    views.push_back(core::Camera::fromAngles(90.0, 0.0));
+    for (const test::SceneFixture* fixture : {&test::sphereScene(), &test::vesselScene()}) {
+        int cut = 0;
+        for (const core::Camera& view : views) {
+            bool fits = false;
+            frameView(*fixture->scene, view, *rings, 1.0, &fits);
+            EXPECT_TRUE(fits) << "theta " << view.angles().x << " phi " << view.angles().y;
+            frameView(*fixture->scene, view, wider, 1.0, &fits);
+            cut += !fits;
+        }
+        EXPECT_GT(cut, 0) << "0.85 fits every view: the bound could be wider";
+    }
+}
+
 TEST(Framing, EveryMethodsPictureOfTheVesselTreeStaysInTheFrame)
 {
     const test::SceneFixture& tree = test::vesselScene();

@@ -1,6 +1,7 @@
 #include <ivis/optimize/picture.h>
 
 #include <ivis/core/log.h>
+#include <ivis/core/number_text.h>
 #include <ivis/render/framing.h>
 
 #include <string>
@@ -13,8 +14,8 @@ core::Camera framedCamera(const render::RenderScene& scene, const core::Camera& 
     bool fits = true;
     const core::Camera framed = render::frameView(scene, camera, method, double(width) / height, &fits);
     if (!fits)
-        core::logWarning(method.name() + "'s picture from theta " + std::to_string(camera.angles().x) + " phi " +
-                         std::to_string(camera.angles().y) + " does not fit the widest framed field of view; it is "
+        core::logWarning(method.name() + "'s picture from theta " + core::shortNumber(camera.angles().x) + " phi " +
+                         core::shortNumber(camera.angles().y) + " does not fit the widest framed field of view; it is "
                          "cut at the frame");
     return framed;
 }
