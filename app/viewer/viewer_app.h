@@ -76,6 +76,9 @@ private:
     void waitForScene();
     /// What the colour bar shows now: the look, the scalar's name (a series: with its step), --units.
     core::ColorBarContent legendContent() const;
+    /// The widest colour-bar margin of the series' steps beside a width x height picture (0 for one
+    /// mesh), so that a series' screenshots are one size whatever each step's title, as render's frames.
+    int seriesLegendMargin(int width, int height) const;
     GpuFrame frame(int width, int height) const;
     /// True when the CPU renderer traces the picture (--tracer; it needs the loaded scene).
     bool tracesOnCpu() const { return mCpuTracing && mLoaded; }
@@ -94,9 +97,11 @@ private:
     /// until the volume is loaded); a picture that cannot be framed ends the framing, with a status.
     void frameOrbit(int width, int height);
     void renderFrame(int width, int height);
-    /// Writes the picture shown (with its colour bar) to @a path and, unless empty, its regions to
-    /// @a regionPath, into @a files (renamed into place when the caller commits them).
-    void writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath);
+    /// Writes the picture shown (with its colour bar, in a margin at least @a legendMargin wide) to
+    /// @a path and, unless empty, its regions to @a regionPath, into @a files (renamed into place
+    /// when the caller commits them).
+    void writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath,
+                         int legendMargin = 0);
     /// Writes inversevis-view-<mesh>-<n>.png and reports it (or the error) in the panel.
     void takeNumberedScreenshot();
     /// Writes the view file of the picture shown (inversevis-view-<stem>-<n>.view.json).

@@ -50,13 +50,14 @@ void ViewerApp::saveView()
     }
 }
 
-void ViewerApp::writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath)
+void ViewerApp::writeScreenshot(core::AtomicFileSet& files, const std::string& path, const std::string& regionPath,
+                                int legendMargin)
 {
     const core::Image picture = mRenderer->readColour();
     const bool legend = mShowLegend && mField->hasScalar();
     files.write(path, [&](const std::string& temporary) {
         core::writePng(legend ? core::withColorBar(picture, legendContent(), mLegendSide,
-                                                   glm::vec4(mShading.background, 1.0f))
+                                                   glm::vec4(mShading.background, 1.0f), legendMargin)
                               : picture,
                        temporary, false);
     });

@@ -24,6 +24,7 @@ int ViewerApp::runHeadlessScreenshot()
     const std::size_t steps = mSeries ? mSeries->steps().size() : 1;
     core::AtomicFileSet files;
     std::vector<std::string> written;
+    const int legendMargin = seriesLegendMargin(mOptions.width, mOptions.height);
     for (std::size_t step = 0; step < steps; ++step) {
         if (step > 0) showStep(step);
         if (mLoader) waitForScene();
@@ -42,7 +43,7 @@ int ViewerApp::runHeadlessScreenshot()
             return mSeries && !path.empty() ? framePath(path, step, steps) : path;
         };
         const std::string path = numbered(mOptions.screenshot);
-        writeScreenshot(files, path, numbered(mOptions.regionPng));
+        writeScreenshot(files, path, numbered(mOptions.regionPng), legendMargin);
         char frame[64];
         std::snprintf(frame, sizeof frame, "%.1f ms", mLastFrameMs);
         written.push_back("inversevis-view: wrote " + path + " (" + std::to_string(mOptions.width) + "x" +

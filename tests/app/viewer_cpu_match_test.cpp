@@ -235,6 +235,34 @@ TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
 #endif
 }
 
+// A series' screenshots with their colour bars are one size, as render's frames are: the bar's
+// margin was each step's own, so "t = 1000" made the last one wider than the others.
+TEST(Viewer, SeriesScreenshotsAreOneSizeAsRendersFrames)
+{
+#ifndef IVIS_VIEW_PATH
+    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
+#else
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    TempDir dir;
+    const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
+    const CliResult cpu = runCli("render '" + pvd + "' --scalar pressure_cell --res 160x160 --volume-res 64 --no-video "
+                                 "--method front --cache-dir '" + dir.path() + "' -o '" + dir.file("cpu.png") + "'");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const RunResult run = runViewer("'" + pvd + "' --scalar pressure_cell --method front --width 160 --height 160 "
+                                    "--volume-res 64 --frames 1 --screenshot '" + dir.file("gpu.png") + "' --cache-dir '" +
+                                        dir.path() + "'",
+                                    true, dir);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const int width = core::readPng(dir.file("cpu_0000.png")).width();
+    EXPECT_GT(width, 160) << "the bar's margin";
+    for (int step = 0; step < 5; ++step) {
+        const std::string suffix = "_000" + std::to_string(step) + ".png";
+        EXPECT_EQ(core::readPng(dir.file("cpu" + suffix)).width(), width) << step;
+        EXPECT_EQ(core::readPng(dir.file("gpu" + suffix)).width(), width) << step;
+    }
+#endif
+}
+
 // A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
 // shows meanwhile); back on the artery, the artery's cache is read again.
 TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
