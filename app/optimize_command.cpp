@@ -106,7 +106,7 @@ Command addOptimizeCommand(CLI::App& app)
         const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
-        options->view.showViewScalar(options->mesh);
+        options->view.showViewScalar(options->mesh, options->sources.front());
         options->mesh.fitReachTo({options->view.renderOptions().method});
         options->optimization.checkUsedBy({options->view.renderOptions().method}, {options->optResolution});
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();

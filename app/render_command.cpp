@@ -343,7 +343,7 @@ Command addRenderCommand(CLI::App& app)
                              " has no rule for drawing rays to loosen (inversevis-wrap: --stable-shift)");
         plan.chooseRule =
             options->minCoherence > 0.0 && !readableRuleKey.empty() && !options->view.givesParameter(readableRuleKey);
-        options->view.showViewScalar(options->mesh);
+        options->view.showViewScalar(options->mesh, options->sources.front());
         const bool isSeries = core::isSeries(options->sources, options->mesh.load);
         if (!isSeries) rejectSeriesFlags(options->seriesFlags, options->sources.front());
         if (!options->frames.empty()) {

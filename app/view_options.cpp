@@ -3,6 +3,7 @@
 #include "cli_checks.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/surface_source.h>
 #include <ivis/optimize/picture.h>
 
 #include <cstdio>
@@ -83,10 +84,19 @@ bool ViewOptions::given(const char* name) const
     return option && option->count() > 0;
 }
 
-void ViewOptions::showViewScalar(MeshOptions& mesh)
+void ViewOptions::showViewScalar(MeshOptions& mesh, const std::string& source)
 {
-    if (const ViewFile* v = view())
-        showsViewScalar = mesh.useViewScalar(v->scalar, v->scalarFile, v->cellToPoint, v->hotSpots);
+    const ViewFile* v = view();
+    if (!v) return;
+    // A scene's view names no array; another mesh's does, which a scene cannot show (loadSurface
+    // would blame --scalar, which the user never gave).
+    if (source.rfind(core::kScenePrefix, 0) == 0 && (!v->scalar.empty() || !v->scalarFile.empty() || v->cellToPoint))
+        throw InputError(viewFile + ": shows " +
+                         (v->scalar.empty() ? "a scalar file" : "the array '" + v->scalar + "'") +
+                         " of the mesh it was saved from; " + source +
+                         " carries its own scalar (render that mesh, or take the view's camera alone: --camera "
+                         "with the picture's .camera.json)");
+    showsViewScalar = mesh.useViewScalar(v->scalar, v->scalarFile, v->cellToPoint, v->hotSpots);
 }
 
 const ViewFile* ViewOptions::view() const

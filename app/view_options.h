@@ -59,9 +59,11 @@ struct ViewOptions {
 
     /// @brief Registers every option on @a command (which must outlive this object's use).
     void addTo(CLI::App& command);
-    /// @brief With --view, has @a mesh show the file's scalar unless the command line chose one
-    ///        (MeshOptions::useViewScalar), and records in showsViewScalar whether it shows it.
-    void showViewScalar(MeshOptions& mesh);
+    /// @brief With --view, has @a mesh (of @a source, its first file or scene) show the file's scalar
+    ///        unless the command line chose one (MeshOptions::useViewScalar), and records in
+    ///        showsViewScalar whether it shows it.
+    /// @throw InputError naming the view file when it shows an array and @a source is a generated scene
+    void showViewScalar(MeshOptions& mesh, const std::string& source);
     /// @brief The view file of --view (read once), or null.
     /// @throw InputError naming the file when it is bad
     const ViewFile* view() const;

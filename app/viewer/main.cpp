@@ -36,7 +36,7 @@ int main(int argc, char** argv)
         options.validate();
         // Headless, Ctrl-C ends the run between frames and leaves no screenshot (a window closes).
         if (options.headless()) ivis::core::installInterruptHandler();
-        options.view.showViewScalar(options.mesh);
+        options.view.showViewScalar(options.mesh, options.mesh.source);
         if (!ivis::core::isSeries(options.sources, options.mesh.load)) {
             if (options.play)
                 throw ivis::InputError("--play: " + options.mesh.source + " is one surface, not a time series (a .pvd, "

@@ -190,6 +190,10 @@ TEST_F(Cli, AnotherScalarGivenWithAViewTakesItsOwnRange)
     EXPECT_EQ(other.at("scale").at("range")[0].get<double>(), 0.0);
     EXPECT_NEAR(other.at("scale").at("range")[1].get<double>(), 0.1, 1e-7);
     EXPECT_EQ(other.at("units"), "Pa");
+    // A generated scene carries its own scalar: the view's array is named, not --scalar (never given).
+    expectBadInput(test::runCli(render("scene:torus", "--view " + view)),
+                   {output("v.json") + ": shows the array 'pressure_t200' of the mesh it was saved from; scene:torus "
+                                       "carries its own scalar"});
 }
 
 TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
