@@ -128,3 +128,12 @@ def test_a_message_holding_bytes_that_are_not_utf8_still_says_what_is_wrong(tmp_
     with pytest.raises(inversevis.InputError) as refused:
         inversevis.read_view(str(bad))
     assert str(refused.value).startswith(f"{bad}: ")
+
+
+def test_the_scalar_energy_of_a_scalar_without_values_is_refused(sphere):
+    """Every value NaN: every view's energy was 0 and optimize() returned theta 0, phi 0 silently."""
+    v, f, _ = sphere
+    mesh = inversevis.Mesh(v, f, point_data={"z": np.full(len(v), np.nan)})
+    with pytest.raises(inversevis.InputError, match="the scalar energy needs values of 'z', which has none"):
+        inversevis.optimize(mesh, scalar="z", energy="scalar", opt_res=16, steps=1, size=(60, 60),
+                            volume_resolution=48)

@@ -41,6 +41,13 @@ EnergyEvaluator::EnergyEvaluator(const RenderScene& scene, const EnergyOptions& 
         throw ValueError("optimisation resolution " + std::to_string(options.resolution) + " is out of range (4 to 8192)");
     if (options.kind == EnergyKind::Scalar && !scene.field().hasScalar())
         throw InputError(scene.field().sourcePath + ": the scalar energy needs a scalar field (--scalar NAME)");
+    if (options.kind == EnergyKind::Scalar) {
+        // All NaN, every view's energy is 0 and the search's result arbitrary (it returned theta 0).
+        const std::vector<float>& values = scene.field().values;
+        if (std::all_of(values.begin(), values.end(), [](float v) { return std::isnan(v); }))
+            throw InputError(scene.field().sourcePath + ": the scalar energy needs values of '" + scene.field().name +
+                             "', which has none (every value is NaN)");
+    }
     if (options.kind == EnergyKind::Visibility)
         mSurface = std::make_unique<SurfaceVoxels>(scene.mesh(), options.visibilityResolution);
     if (options.kind == EnergyKind::Visibility && options.reveal)
