@@ -37,6 +37,14 @@ py::dict arrayDict(const core::ArrayInfo& a)
     return d;
 }
 
+/// A path given as str or os.PathLike (pathlib.Path), as Python's own file functions take it.
+std::string pathText(const py::object& path)
+{
+    const py::object text = py::module_::import("os").attr("fspath")(path);  // a TypeError for anything else
+    if (!py::isinstance<py::str>(text)) throw py::type_error("path must be a str or an os.PathLike of str, not bytes");
+    return text.cast<std::string>();
+}
+
 /// The array named by scalar= (None: the file's default); a TypeError for anything but a name.
 std::string scalarName(const py::object& scalar)
 {
@@ -74,7 +82,7 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
                                                  dictOf(cellData, "cell_data"));
              }),
              py::arg("vertices"), py::arg("faces"), py::arg("point_data") = py::none(), py::arg("cell_data") = py::none())
-        .def_static("read", &python::Mesh::read, py::arg("path"),
+        .def_static("read", [](const py::object& path) { return python::Mesh::read(pathText(path)); }, py::arg("path"),
                     "Reads a mesh file (.obj .off .ply .stl .vtk .vtp .vtu, as `inversevis render` does) or a "
                     "generated scene ('scene:vessel-tree'); raises InputError naming the file and the problem.")
         .def_property_readonly("source", &python::Mesh::source, "The file read, 'scene:<name>', or 'Mesh' for arrays.")
@@ -115,10 +123,11 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             "Of optimize(): the best view's theta and phi, its energy and front energy at opt_res, the search's "
             "seconds and evaluations, the readable rule chosen and every visited view (as `optimize --json`); None "
             "for render().")
-        .def("save", &python::Picture::save, py::arg("path"),
+        .def("save", [](const python::Picture& p, const py::object& path) { p.save(pathText(path)); }, py::arg("path"),
              "Writes the picture as PNG (.png, with its colour bar) or the multi-layer EXR (.exr), as `render -o` "
              "and `--exr` write them.")
-        .def("save_view", &python::Picture::saveView, py::arg("path"),
+        .def("save_view", [](const python::Picture& p, const py::object& path) { p.saveView(pathText(path)); },
+             py::arg("path"),
              "Writes the picture's view file (camera, method and parameters, scalar, colours, look), as `render "
              "--view-out` writes one: `inversevis render MESH --view FILE` and the viewer's --view show the picture, "
              "read_view(FILE) gives it back to render().")
@@ -126,7 +135,8 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
                                "Of optimize(views=N > 1): each view's Picture, the best first (its measures: "
                                "visibility, coherence; its camera and method, save_view() as for any picture); "
                                "an empty list otherwise.")
-        .def("save_views", &python::Picture::saveViews, py::arg("path"),
+        .def("save_views", [](const python::Picture& p, const py::object& path) { p.saveViews(pathText(path)); },
+             py::arg("path"),
              "Of optimize(views=N > 1): writes the views side by side with one colour bar as PNG, as `inversevis "
              "optimize --views N -o` writes it.")
         .def("_repr_png_", &python::Picture::png)
@@ -266,7 +276,7 @@ Returns a Picture whose camera and method are the best view's, whose measures ar
 visibility, voxel_visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
 optimization holds the search's result. The GIL is released; Ctrl-C raises KeyboardInterrupt.)");
 
-    m.def("read_view", &python::readView, py::arg("path"),
+    m.def("read_view", [](const py::object& path) { return python::readView(pathText(path)); }, py::arg("path"),
           "The keyword arguments of render() that draw a view file's picture (`render --view-out`, the viewer's "
           "'save view', Picture.save_view): render(mesh, **read_view(path)) is `inversevis render MESH --view path`; "
           "update the dict to change one. Raises InputError naming the file for a bad view.");

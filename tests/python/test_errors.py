@@ -87,6 +87,10 @@ def test_bad_files_raise_the_cli_s_one_line(tmp_path):
         inversevis.Mesh.read(str(broken))
     with pytest.raises(inversevis.InputError, match="unknown scene 'nothing'"):
         inversevis.Mesh.read("scene:nothing")
+    with pytest.raises(inversevis.InputError, match=f"^{missing}: "):  # a pathlib.Path as well
+        inversevis.Mesh.read(missing)
+    with pytest.raises(TypeError):
+        inversevis.Mesh.read(3)
 
 
 def test_save_refuses_other_formats_and_writes_nothing(tmp_path):

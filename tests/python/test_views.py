@@ -15,7 +15,7 @@ def test_a_cli_view_draws_the_same_picture_from_python(tmp_path):
                    "plasma", "--log", "--invert", "--units", "Pa", "--legend", "left", "--no-outline",
                    "--unshaded-indirect", "--volume-res", "64", "-o", str(cli_png), "--view-out", str(view))
     assert done.returncode == 0, done.stderr
-    arguments = inversevis.read_view(str(view))
+    arguments = inversevis.read_view(view)
     assert arguments["size"] == (240, 180) and arguments["log"] and arguments["invert"]
     assert arguments["legend_side"] == "left" and arguments["units"] == "Pa" and not arguments["outline"]
     written = json.loads(view.read_text())["mesh_units"]  # the tree's own transform, not an identity
@@ -34,8 +34,8 @@ def test_a_python_pictures_view_draws_it_on_the_command_line(tmp_path):
     mesh = inversevis.Mesh.read("scene:vessel-tree")
     picture = inversevis.render(mesh, "mirror", size=(200, 150), theta=120, phi=-30, colormap="coolwarm",
                                 range=(0.2, 0.8), volume_resolution=64, mirror_w=[0.4, 0.3, 0.0, 0.1, 0.0])
-    picture.save(str(tmp_path / "py.png"))
-    picture.save_view(str(tmp_path / "p.view.json"))
+    picture.save(tmp_path / "py.png")  # a pathlib.Path, as Python's own file functions take
+    picture.save_view(tmp_path / "p.view.json")
     done = run_cli("render", "scene:vessel-tree", "--view", str(tmp_path / "p.view.json"), "--volume-res", "64",
                    "-o", str(tmp_path / "cli.png"))
     assert done.returncode == 0, done.stderr
