@@ -3,8 +3,10 @@
 #include <ivis/core/cell_to_point.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/mesh_layout_check.h>
+#include <ivis/core/number_text.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 #include <charconv>
 #include <cctype>
@@ -194,6 +196,16 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
         field.name += component == kMagnitude ? " magnitude" : "[" + std::to_string(component) + "]";
     }
     const TriangleMesh& mesh = field.mesh;
+    // The pictures colour 32-bit floats: a finite value beyond them became inf (undefined in C++),
+    // and the picture one colour.
+    const auto shown = [&](std::size_t tuple) {
+        const double value = array->at(tuple, component);
+        if (std::isfinite(value) && std::abs(value) > double(std::numeric_limits<float>::max()))
+            detail::failInput(field.sourcePath,
+                              "array '" + array->name + "' holds " + shortNumber(value) +
+                                  ", beyond the 32-bit floats the pictures colour (3.4e+38): scale it");
+        return float(value);
+    };
     if (cellToPoint && array->association == Association::Point) {
         detail::failInput(field.sourcePath, "--cell-to-point averages a cell array; '" + array->name +
                                                 "' is a point array (a cell array by name: --scalar cell:NAME)");
@@ -202,7 +214,7 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
         // Vertices beyond the file's points (hole caps) have no value.
         field.values.assign(mesh.positions.size(), std::numeric_limits<float>::quiet_NaN());
         for (std::size_t v = 0; v < std::min(array->tuples(), field.values.size()); ++v) {
-            field.values[v] = float(array->at(v, component));
+            field.values[v] = shown(v);
         }
         field.valuesOn = Association::Point;
         return;
@@ -210,7 +222,7 @@ void showArray(SurfaceField& field, const std::string& spec, bool cellToPoint)
     IVIS_CHECK(field.triangleCells.size() == mesh.dataTriangleCount);
     std::vector<float> perTriangle(mesh.dataTriangleCount);
     for (std::size_t t = 0; t < perTriangle.size(); ++t)
-        perTriangle[t] = float(array->at(field.triangleCells[t], component));
+        perTriangle[t] = shown(field.triangleCells[t]);
     if (cellToPoint) {
         field.values = core::cellToPoint(mesh, perTriangle);
         field.valuesOn = Association::Point;

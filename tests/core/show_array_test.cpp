@@ -105,6 +105,19 @@ TEST(ShowArray, PointArrayPerVertexAndNanBeyondTheFile)
     EXPECT_TRUE(std::isnan(f.values[5]));
 }
 
+TEST(ShowArray, ValuesBeyondFloatsAreRefusedNamingTheArray)
+{
+    // A Float64 value beyond the 32-bit floats the pictures colour became inf: one colour, legend 0.
+    SurfaceField f = field();
+    f.arrays[0].values[3] = -1e300;
+    EXPECT_EQ(errorOf(f, "point:p"), "f.vtp: array 'p' holds -1e+300, beyond the 32-bit floats the pictures colour "
+                                     "(3.4e+38): scale it");
+    f.arrays[2].values[1] = 4e38;
+    EXPECT_NE(errorOf(f, "c").find("array 'c' holds 4e+38"), std::string::npos);
+    f.arrays[2].values[1] = 3e38;  // within: shown as it is
+    EXPECT_EQ(errorOf(f, "c"), "<no error>");
+}
+
 TEST(ShowArray, VectorsByMagnitudeOrComponent)
 {
     SurfaceField f = field();
