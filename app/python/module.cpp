@@ -37,6 +37,14 @@ py::dict arrayDict(const core::ArrayInfo& a)
     return d;
 }
 
+/// @a result, once what the call logged is said in Python (python::sayLogged).
+template <typename T>
+T said(T result)
+{
+    python::sayLogged();
+    return result;
+}
+
 /// A path given as str or os.PathLike (pathlib.Path), as Python's own file functions take it.
 std::string pathText(const py::object& path)
 {
@@ -78,11 +86,12 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
                      if (!py::isinstance<py::dict>(o)) throw py::type_error(std::string(name) + " must be a dict of arrays");
                      return o.cast<py::dict>();
                  };
-                 return python::Mesh::fromArrays(vertices, faces, dictOf(pointData, "point_data"),
-                                                 dictOf(cellData, "cell_data"));
+                 return said(python::Mesh::fromArrays(vertices, faces, dictOf(pointData, "point_data"),
+                                                      dictOf(cellData, "cell_data")));
              }),
              py::arg("vertices"), py::arg("faces"), py::arg("point_data") = py::none(), py::arg("cell_data") = py::none())
-        .def_static("read", [](const py::object& path) { return python::Mesh::read(pathText(path)); }, py::arg("path"),
+        .def_static("read", [](const py::object& path) { return said(python::Mesh::read(pathText(path))); },
+                    py::arg("path"),
                     "Reads a mesh file (.obj .off .ply .stl .vtk .vtp .vtu, as `inversevis render` does) or a "
                     "generated scene ('scene:vessel-tree'); raises InputError naming the file and the problem.")
         .def_property_readonly("source", &python::Mesh::source, "The file read, 'scene:<name>', or 'Mesh' for arrays.")
@@ -182,7 +191,7 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             request.samplesPerPixel = spp;
             request.measure = measure;
             request.parameters = parameters;
-            return python::renderMesh(mesh, request, progress);
+            return said(python::renderMesh(mesh, request, progress));
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("theta") = py::none(), py::arg("phi") = py::none(),
@@ -247,7 +256,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
             request.hotSpotViews = hotSpotViews;
             request.start = start;
             request.views = views;
-            return python::optimizeMesh(mesh, request, progress);
+            return said(python::optimizeMesh(mesh, request, progress));
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("energy") = "visibility", py::arg("gamma") = py::none(),

@@ -1,8 +1,17 @@
 #include "python_errors.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/log.h>
+
+#include <mutex>
+#include <utility>
+#include <vector>
 
 namespace ivis::python {
+namespace {
+std::mutex gLoggedMutex;
+std::vector<std::pair<core::LogLevel, std::string>> gLogged;  // guarded by gLoggedMutex
+}  // namespace
 
 pybind11::str decodedText(const std::string& text)
 {
@@ -10,8 +19,29 @@ pybind11::str decodedText(const std::string& text)
         PyUnicode_DecodeUTF8(text.data(), pybind11::ssize_t(text.size()), "replace"));
 }
 
+void sayLogged()
+{
+    std::vector<std::pair<core::LogLevel, std::string>> logged;
+    {
+        std::lock_guard<std::mutex> lock(gLoggedMutex);
+        logged.swap(gLogged);
+    }
+    for (const auto& [level, message] : logged) {
+        if (level >= core::LogLevel::Warning)
+            pybind11::module_::import("warnings")
+                .attr("warn")(decodedText(message), pybind11::handle(PyExc_RuntimeWarning), 2);
+        else
+            pybind11::module_::import("sys").attr("stderr").attr("write")(decodedText("inversevis: " + message + "\n"));
+    }
+}
+
 void registerErrors(pybind11::module_& module)
 {
+    // From any thread, the GIL held or not: kept, and said by sayLogged when the call returns.
+    core::setLogSink([](core::LogLevel level, const std::string& message) {
+        std::lock_guard<std::mutex> lock(gLoggedMutex);
+        gLogged.emplace_back(level, message);
+    });
     static pybind11::exception<InputError> inputError(module, "InputError", PyExc_ValueError);
     inputError.doc() = "A file or input the engine cannot use: one line naming it and the problem.";
     pybind11::register_exception_translator([](std::exception_ptr error) {

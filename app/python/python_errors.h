@@ -1,7 +1,7 @@
 /// @file python_errors.h
 /// @brief The library's errors as Python exceptions: a bad file or value is inversevis.InputError
 ///        (a ValueError) or ValueError with the command line's one-line message, a cancelled
-///        call KeyboardInterrupt.
+///        call KeyboardInterrupt; and its notes and warnings said in Python, not on file descriptor 2.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -14,7 +14,14 @@ namespace ivis::python {
 ///        UTF-8 replaced by U+FFFD: a file's Latin-1 name must not turn an error into an empty one.
 pybind11::str decodedText(const std::string& text);
 
-/// @brief Registers inversevis.InputError and the translation of the library's errors on @a module.
+/// @brief Registers inversevis.InputError and the translation of the library's errors on @a module,
+///        and keeps what the library logs for sayLogged.
 void registerErrors(pybind11::module_& module);
+
+/// @brief Says in Python what the library logged since the last call (the GIL held): a warning as a
+///        Python RuntimeWarning (the warnings module shows, filters or raises it), a note on sys.stderr
+///        ("inversevis: ..."), where a notebook shows it.
+/// @throw pybind11::error_already_set when a warnings filter turns a warning into an error
+void sayLogged();
 
 }  // namespace ivis::python

@@ -9,14 +9,22 @@ namespace {
 std::atomic<LogLevel> gLevel{LogLevel::Info};
 std::mutex gMutex;
 std::string gProgram = "inversevis";  // guarded by gMutex
+LogSink gSink;                         // guarded by gMutex
 
 void emit(LogLevel level, const char* tag, const std::string& message)
 {
     if (level < gLevel.load()) return;
     std::lock_guard<std::mutex> lock(gMutex);
-    std::cerr << gProgram << ": " << tag << message << '\n';
+    if (gSink) gSink(level, message);
+    else std::cerr << gProgram << ": " << tag << message << '\n';
 }
 }  // namespace
+
+void setLogSink(LogSink sink)
+{
+    std::lock_guard<std::mutex> lock(gMutex);
+    gSink = std::move(sink);
+}
 
 void setLogProgram(const std::string& name)
 {

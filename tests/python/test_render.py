@@ -72,3 +72,20 @@ def test_the_mesh_lists_its_arrays_as_info_does(sphere_file):
     assert height["min"] == pytest.approx(0.0, abs=1e-6) and height["max"] == pytest.approx(1.0)
     assert mesh.vertices.shape[1] == 3 and mesh.faces.shape[1] == 3
     assert inversevis.methods()[0] == "inversevis-wrap"
+
+
+def test_notes_and_warnings_are_said_in_python(tmp_path, monkeypatch, capsys):
+    """What the engine says reaches sys.stderr and the warnings module, where a notebook shows them and
+    a script can catch them (it was written to file descriptor 2, past both)."""
+    v, f, h = uv_sphere(8, 12)
+    with_degenerate = np.vstack([f, [[0, 1, 1]]])
+    mesh = inversevis.Mesh(v, with_degenerate, point_data={"h": h})
+    inversevis.render(mesh, "front", size=(40, 40), volume_resolution=48)
+    said = capsys.readouterr().err
+    assert "inversevis: Mesh: dropped 1 degenerate triangles" in said
+    assert "inversevis: Mesh: showing the point array 'h'" in said
+    blocked = tmp_path / "not-a-folder"
+    blocked.write_text("a file where the cache folder would be")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(blocked))
+    with pytest.warns(RuntimeWarning, match="the volume is built for this run and not kept"):
+        inversevis.render(inversevis.Mesh(v, f), "front", size=(40, 40), volume_resolution=48)

@@ -3,6 +3,7 @@
 /// @warning Thread-safe: each message is written whole under a lock.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace ivis::core {
@@ -31,6 +32,13 @@ private:
 
 /// @brief Sets the program named before each message ("inversevis" unless set).
 void setLogProgram(const std::string& name);
+
+/// @brief What takes the messages instead of stderr: their level and text (without the program's
+///        name); Python's module says them in Python. Called under the log's lock, from any thread.
+using LogSink = std::function<void(LogLevel level, const std::string& message)>;
+
+/// @brief Sends every message to @a sink instead of stderr (an empty sink: stderr again).
+void setLogSink(LogSink sink);
 
 /// @brief Prints "<program>: <message>" when Info is enabled.
 void logInfo(const std::string& message);
