@@ -67,10 +67,12 @@ glm::vec4 Shader::shade(const PixelMapping& mapping, DistanceField::Sampler& sam
         // Lit as a camera looking along the arriving ray would light it, so the back side's
         // folds and ridges show; dimmed so that it reads as behind. Unshaded, the colour bar's own
         // colour, to be read against it.
-        if (!mOptions.shadeIndirect) return glm::vec4(base, 1.0f);
-        const float light =
-            lighting(mapping.point.position, normal, toLightAlong(mapping.arrival), mIndirectShadows, sampler);
-        return glm::vec4(base * mOptions.indirectBrightness * light, 1.0f);
+        const float light = mOptions.shadeIndirect
+                                ? lighting(mapping.point.position, normal, toLightAlong(mapping.arrival),
+                                           mIndirectShadows, sampler)
+                                : 1.0f;
+        const float brightness = mOptions.shadeIndirect ? mOptions.indirectBrightness : 1.0f;
+        return glm::vec4(base * brightness * light, 1.0f);
     }
     return glm::vec4(base * lighting(mapping.point.position, normal, mToLight, mOptions.shadows, sampler), 1.0f);
 }
