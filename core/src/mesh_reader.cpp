@@ -236,7 +236,7 @@ std::vector<float> detail::parseScalarFile(const std::string& path, const std::s
                                      ? " (values are separated by spaces or lines, not commas)"
                                      : ""));
         if (number.kind == detail::FloatToken::NonFinite && std::isfinite(number.value))
-            failInput(path, where + " is beyond the largest a 32-bit float holds (3.4e38)");
+            failInput(path, where + " is beyond the largest a 32-bit float holds (3.4e+38)");
         if (number.kind == detail::FloatToken::NonFinite && !std::isnan(number.value)) {
             failInput(path, where + " is not finite (only nan is allowed)");
         }
