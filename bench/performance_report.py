@@ -164,7 +164,8 @@ wall, peak memory **{gib(print_run['peak_rss_bytes'])}**. Its memory: what the s
 bricks, the far field), the volume's triangle grid (`render` frees its phi, gradient and
 barycentric grids once the scene has copied them: [volume.md](volume.md), "Memory"), the picture
 with its eight layers (12 M pixels; the coherence every render reports reads the landing layers)
-and the figure with its colour bar.
+and the figure with its colour bar. Where its seconds go (most are the frame itself):
+[decisions/print-cost.md](decisions/print-cost.md).
 
 ## `optimize` as a user runs it
 
