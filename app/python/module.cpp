@@ -98,6 +98,14 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         .def_property_readonly("vertices", &python::Mesh::vertices, "(n, 3) float32 copy of the vertices, in the mesh's own units.")
         .def_property_readonly("faces", &python::Mesh::faces, "(m, 3) int64 copy of the triangles (polygons fan-triangulated).")
         .def_property_readonly(
+            "point_data", [](const python::Mesh& mesh) { return mesh.data(core::Association::Point); },
+            "The point arrays' values by name, one row per vertex (as vertices; float64, (n,) or (n, k)), "
+            "copied; a generated scene's own scalar.")
+        .def_property_readonly(
+            "cell_data", [](const python::Mesh& mesh) { return mesh.data(core::Association::Cell); },
+            "The cell arrays' values by name, one row per face (as faces: each triangle its polygon's value; "
+            "float64, (m,) or (m, k)), copied.")
+        .def_property_readonly(
             "arrays",
             [](const python::Mesh& mesh) {
                 py::list list;

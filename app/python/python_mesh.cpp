@@ -1,5 +1,7 @@
 #include "python_mesh.h"
 
+#include "python_errors.h"
+
 #include <ivis/core/errors.h>
 #include <ivis/core/show_array.h>
 #include <ivis/core/surface_source.h>
@@ -193,6 +195,34 @@ py::array Mesh::faces() const
     for (const auto& t : triangles)
         for (std::uint32_t v : t) *data++ = std::int64_t(v);
     return std::move(out);
+}
+
+py::dict Mesh::data(core::Association association) const
+{
+    py::dict out;
+    const bool point = association == core::Association::Point;
+    if (mSource.rfind(core::kScenePrefix, 0) == 0) {  // a scene carries its scalar, not arrays
+        if (point && mRaw.hasScalar()) {
+            py::array_t<double> values(py::ssize_t(mRaw.values.size()));
+            std::copy(mRaw.values.begin(), mRaw.values.end(), values.mutable_data());
+            out[decodedText(mRaw.name)] = values;
+        }
+        return out;
+    }
+    const std::size_t rows = point ? mRaw.mesh.positions.size() : mRaw.mesh.dataTriangleCount;
+    for (const core::DataArray& array : mRaw.arrays) {
+        if (array.association != association) continue;
+        const std::size_t k = std::size_t(array.components);
+        py::array_t<double> values = k == 1 ? py::array_t<double>(py::ssize_t(rows))
+                                            : py::array_t<double>({py::ssize_t(rows), py::ssize_t(k)});
+        double* at = values.mutable_data();
+        for (std::size_t row = 0; row < rows; ++row) {
+            const std::size_t tuple = point ? row : mRaw.triangleCells[row];
+            std::copy_n(array.values.begin() + std::ptrdiff_t(tuple * k), k, at + row * k);
+        }
+        out[decodedText(array.name)] = values;
+    }
+    return out;
 }
 
 core::SurfaceField Mesh::shown(const std::string& scalar) const

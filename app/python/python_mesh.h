@@ -49,6 +49,10 @@ public:
     /// @brief How many vertices (those some triangle uses) and triangles it has.
     std::size_t vertexCount() const { return mRaw.mesh.positions.size(); }
     std::size_t triangleCount() const { return mRaw.mesh.triangles.size(); }
+    /// @brief Its arrays' values by name, copied: of @a association Point one row per vertex (as
+    ///        vertices()), of Cell one row per triangle (as faces(): each its file cell's value); (n,)
+    ///        for one component, (n, k) for k. A generated scene's point data is its own scalar.
+    pybind11::dict data(core::Association association) const;
     /// @brief Its arrays, as `inversevis info` lists them.
     std::vector<core::ArrayInfo> arrays() const { return core::describeArrays(mRaw); }
 

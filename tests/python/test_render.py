@@ -89,3 +89,25 @@ def test_notes_and_warnings_are_said_in_python(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("XDG_CACHE_HOME", str(blocked))
     with pytest.warns(RuntimeWarning, match="the volume is built for this run and not kept"):
         inversevis.render(inversevis.Mesh(v, f), "front", size=(40, 40), volume_resolution=48)
+
+
+def test_point_and_cell_data_give_the_arrays_values_row_for_row(tmp_path):
+    """As PyVista's point_data and cell_data: each array's values aligned with vertices and faces."""
+    v, f, h = uv_sphere(8, 12)
+    velocity = np.column_stack([h, 2 * h, 3 * h])
+    cells = np.arange(len(f), dtype=np.int32) * 3
+    mesh = inversevis.Mesh(v, f, point_data={"h": h, "velocity": velocity}, cell_data={"c": cells})
+    assert np.array_equal(mesh.point_data["h"], h)
+    assert np.array_equal(mesh.point_data["velocity"], velocity)
+    assert np.array_equal(mesh.cell_data["c"], cells.astype(np.float64))
+    assert set(mesh.cell_data) == {"c"}
+    # Polygons: a file's quad gives its value to both of its triangles, row for row with faces.
+    quad = tmp_path / "quad.vtk"
+    quad.write_text("# vtk DataFile Version 3.0\nq\nASCII\nDATASET POLYDATA\nPOINTS 5 float\n0 0 0 1 0 0 1 1 0 0 1 0 "
+                    "2 0 0\nPOLYGONS 2 9\n4 0 1 2 3\n3 1 4 2\nCELL_DATA 2\nSCALARS id float 1\nLOOKUP_TABLE default\n"
+                    "7 9\nPOINT_DATA 5\nSCALARS p float 1\nLOOKUP_TABLE default\n0 1 2 3 4\n")
+    read = inversevis.Mesh.read(quad)
+    assert len(read.faces) == 3 and np.array_equal(read.cell_data["id"], [7.0, 7.0, 9.0])
+    assert np.array_equal(read.point_data["p"], [0.0, 1.0, 2.0, 3.0, 4.0])
+    tree = inversevis.Mesh.read("scene:vessel-tree")
+    assert list(tree.point_data) == ["wss"] and len(tree.point_data["wss"]) == len(tree.vertices)
