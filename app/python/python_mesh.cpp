@@ -197,6 +197,15 @@ py::array Mesh::faces() const
     return std::move(out);
 }
 
+std::vector<core::ArrayInfo> Mesh::arrays() const
+{
+    if (mSource.rfind(core::kScenePrefix, 0) != 0 || !mRaw.hasScalar()) return core::describeArrays(mRaw);
+    core::SurfaceField own = mRaw;  // a scene's scalar as the one point array of a file
+    own.arrays = {{mRaw.name, core::Association::Point, core::ValueType::Float32, 1,
+                   std::vector<double>(mRaw.values.begin(), mRaw.values.end())}};
+    return core::describeArrays(own);
+}
+
 py::dict Mesh::data(core::Association association) const
 {
     py::dict out;
@@ -228,8 +237,10 @@ py::dict Mesh::data(core::Association association) const
 core::SurfaceField Mesh::shown(const std::string& scalar) const
 {
     if (mSource.rfind(core::kScenePrefix, 0) == 0) {
-        if (!scalar.empty())
-            throw InputError(mSource + ": generated scenes carry their own scalar; scalar= applies to mesh files only");
+        if (!scalar.empty() && scalar != mRaw.name)  // its own by name, as point_data and arrays list it
+            throw InputError(mSource + ": generated scenes carry their own scalar" +
+                             (mRaw.hasScalar() ? " ('" + mRaw.name + "')" : std::string()) +
+                             "; other names of scalar= apply to mesh files only");
         return mRaw;
     }
     core::SurfaceField field = mRaw;

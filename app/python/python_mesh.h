@@ -53,8 +53,8 @@ public:
     ///        vertices()), of Cell one row per triangle (as faces(): each its file cell's value); (n,)
     ///        for one component, (n, k) for k. A generated scene's point data is its own scalar.
     pybind11::dict data(core::Association association) const;
-    /// @brief Its arrays, as `inversevis info` lists them.
-    std::vector<core::ArrayInfo> arrays() const { return core::describeArrays(mRaw); }
+    /// @brief Its arrays, as `inversevis info` lists them; a generated scene's own scalar as its one.
+    std::vector<core::ArrayInfo> arrays() const;
 
     /// @brief The scene showing @a scalar ("" for the file's default array), with a volume of
     ///        @a options (from the command line's cache, else built and written there), made on

@@ -111,3 +111,14 @@ def test_point_and_cell_data_give_the_arrays_values_row_for_row(tmp_path):
     assert np.array_equal(read.point_data["p"], [0.0, 1.0, 2.0, 3.0, 4.0])
     tree = inversevis.Mesh.read("scene:vessel-tree")
     assert list(tree.point_data) == ["wss"] and len(tree.point_data["wss"]) == len(tree.vertices)
+
+
+def test_a_scenes_own_scalar_is_listed_and_may_be_named():
+    tree = inversevis.Mesh.read("scene:vessel-tree")
+    assert [(a["name"], a["association"], a["shown_by_default"]) for a in tree.arrays] == [("wss", "point", True)]
+    assert tree.arrays[0]["max"] == pytest.approx(tree.point_data["wss"].max())
+    named = inversevis.render(tree, "front", scalar="wss", size=(40, 40), volume_resolution=48)
+    assert np.array_equal(named.rgba, inversevis.render(tree, "front", size=(40, 40), volume_resolution=48).rgba)
+    own = r"scene:vessel-tree: generated scenes carry their own scalar \('wss'\)"
+    with pytest.raises(inversevis.InputError, match=own):
+        inversevis.render(tree, "front", scalar="pressure", size=(40, 40), volume_resolution=48)
