@@ -13,6 +13,9 @@ namespace fs = std::filesystem;
 
 TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
 {
+    // The default cache folder is the test process's own (test::runCli): empty it of what earlier
+    // tests of the same process left (all of ivis_tests run in one process counted their volumes).
+    ASSERT_EQ(test::runCli("cache clear").status, 0);
     const test::CliResult built = test::runCli("sdf scene:sphere --volume-res 48 --json");
     ASSERT_EQ(built.status, 0) << built.err;
     const std::string volume = nlohmann::json::parse(built.out).at("output").get<std::string>();
