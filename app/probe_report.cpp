@@ -77,13 +77,8 @@ ProbeReport probeReport(const render::RenderScene& scene, const render::MethodPt
     report.pixel = pixel;
     report.probe = render::probePixel(scene, method, camera, width, height, pixel.x + 0.5, pixel.y + 0.5, sampling);
     const render::SurfacePoint& point = report.probe.mapping.point;
-    if (point.valid()) {
+    if (point.valid())
         report.view = render::facingView(scene.bvh(), point.position, point.triangle, report.probe.facing);
-        // The ring map's rays start inside the object and show a wall from within: its outside is
-        // where a view from outside sees that point.
-        if (!report.view)
-            report.view = render::facingView(scene.bvh(), point.position, point.triangle, -report.probe.facing);
-    }
     report.ruleName = method->info().readableRuleParameter;
     if (!report.ruleName.empty()) report.rule = method->values().at(report.ruleName)[0];
     return report;

@@ -18,28 +18,6 @@
 #include <optional>
 
 namespace ivis::app {
-namespace {
-
-
-/// The widest colour-bar margin over the steps of @a series, so that every frame has the same size:
-/// each step's title (of the scalar @a name) with the look of @a options and the series' one scale,
-/// or, when each frame has its own range, each step's own scale (@a stepScales).
-int seriesLegendMargin(const core::SurfaceSeries& series, const render::RenderOptions& options, const std::string& name,
-                       const std::vector<core::ColorScale>& stepScales)
-{
-    if (!options.legend) return 0;
-    int margin = 0;
-    for (std::size_t k = 0; k < series.steps().size(); ++k) {
-        const core::SeriesStep& step = series.steps()[k];
-        core::ColorBarContent content{options.shading.colormap, options.shading.scale,
-                                      seriesStepTitle(series, step, step.array.empty() ? name : step.array), options.units};
-        if (k < stepScales.size()) content.scale = stepScales[k];
-        margin = std::max(margin, core::colorBarMargin(content, options.width, options.height, options.legendSide));
-    }
-    return margin;
-}
-
-}  // namespace
 
 void parseFrameRange(const std::string& text, SeriesRenderRequest& request)
 {
@@ -111,9 +89,12 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         options.method = request.method;
         if (request.scale) options.shading.scale = *request.scale;
         options.scalarName = seriesStepTitle(series, step, current.field().name);
-        if (k == first)
-            legendMargin = seriesLegendMargin(series, options, current.field().name,
-                                              request.scale ? std::vector<core::ColorScale>{} : request.stepScales);
+        if (k == first && options.legend) {
+            const core::ColorBarContent look{options.shading.colormap, options.shading.scale, "", options.units};
+            legendMargin = seriesLegendMargin(series, look, current.field().name, options.width, options.height,
+                                              options.legendSide, request.scale ? std::vector<core::ColorScale>{}
+                                                                                : request.stepScales);
+        }
         options.legendMinimumMargin = legendMargin;
         width = options.width;
         height = options.height;

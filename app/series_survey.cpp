@@ -18,6 +18,20 @@ std::string seriesStepTitle(const core::SurfaceSeries& series, const core::Serie
     return name + ", t = " + core::shortNumber(step.time);
 }
 
+int seriesLegendMargin(const core::SurfaceSeries& series, const core::ColorBarContent& look, const std::string& name,
+                       int width, int height, core::LegendSide side, const std::vector<core::ColorScale>& stepScales)
+{
+    int margin = 0;
+    for (std::size_t k = 0; k < series.steps().size(); ++k) {
+        const core::SeriesStep& step = series.steps()[k];
+        core::ColorBarContent content = look;
+        content.title = seriesStepTitle(series, step, step.array.empty() ? name : step.array);
+        if (k < stepScales.size()) content.scale = stepScales[k];
+        margin = std::max(margin, core::colorBarMargin(content, width, height, side));
+    }
+    return margin;
+}
+
 SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleRequest* eachStep,
                           const std::atomic<bool>* cancel)
 {

@@ -3,6 +3,7 @@
 ///        range shared by all steps and each step's geometry.
 #pragma once
 
+#include <ivis/core/color_bar.h>
 #include <ivis/core/color_scale.h>
 #include <ivis/core/colormap.h>
 #include <ivis/core/surface_series.h>
@@ -32,6 +33,14 @@ struct SeriesSurvey {
 ///        which step it is unless the name says it (a pattern's array): "pressure, t = 600" (a
 ///        .pvd), "pressure, b.vtp" (a list of files).
 std::string seriesStepTitle(const core::SurfaceSeries& series, const core::SeriesStep& step, const std::string& name);
+
+/// @brief The widest colour-bar margin over the steps of @a series beside a @a width x @a height
+///        picture, so that every frame has the same size: each step's title (of the scalar @a name,
+///        or of the step's own array) with @a look's colour map, scale and units, or each step's own
+///        scale where @a stepScales gives it (each frame's range its own).
+int seriesLegendMargin(const core::SurfaceSeries& series, const core::ColorBarContent& look, const std::string& name,
+                       int width, int height, core::LegendSide side,
+                       const std::vector<core::ColorScale>& stepScales = {});
 
 /// @brief Loads every step of @a series silently (so that a bad step fails alone, before anything
 ///        is written or said) and surveys them; with @a eachStep, resolves each step's own scale

@@ -199,8 +199,8 @@ py::array Mesh::faces() const
 
 std::vector<core::ArrayInfo> Mesh::arrays() const
 {
-    if (mSource.rfind(core::kScenePrefix, 0) != 0 || !mRaw.hasScalar()) return core::describeArrays(mRaw);
-    core::SurfaceField own = mRaw;  // a scene's scalar as the one point array of a file
+    if (!generated() || !mRaw.hasScalar()) return core::describeArrays(mRaw);
+    core::SurfaceField own;  // a scene's scalar as the one point array of a file
     own.arrays = {{mRaw.name, core::Association::Point, core::ValueType::Float32, 1,
                    std::vector<double>(mRaw.values.begin(), mRaw.values.end())}};
     return core::describeArrays(own);
@@ -210,7 +210,7 @@ py::dict Mesh::data(core::Association association) const
 {
     py::dict out;
     const bool point = association == core::Association::Point;
-    if (mSource.rfind(core::kScenePrefix, 0) == 0) {  // a scene carries its scalar, not arrays
+    if (generated()) {  // a scene carries its scalar, not arrays
         if (point && mRaw.hasScalar()) {
             py::array_t<double> values(py::ssize_t(mRaw.values.size()));
             std::copy(mRaw.values.begin(), mRaw.values.end(), values.mutable_data());
@@ -236,7 +236,7 @@ py::dict Mesh::data(core::Association association) const
 
 core::SurfaceField Mesh::shown(const std::string& scalar) const
 {
-    if (mSource.rfind(core::kScenePrefix, 0) == 0) {
+    if (generated()) {
         if (!scalar.empty() && scalar != mRaw.name)  // its own by name, as point_data and arrays list it
             throw InputError(mSource + ": generated scenes carry their own scalar" +
                              (mRaw.hasScalar() ? " ('" + mRaw.name + "')" : std::string()) +

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <ivis/core/mesh_reader.h>
+#include <ivis/core/surface_source.h>
 #include <ivis/render/render_scene.h>
 #include <ivis/vdb/surface_volume.h>
 
@@ -43,6 +44,8 @@ public:
 
     /// @brief Where it came from: the file, scene:<name>, or "Mesh" for arrays.
     const std::string& source() const { return mSource; }
+    /// @brief Whether it is a generated scene (its own scalar, no file's arrays).
+    bool generated() const { return mSource.rfind(core::kScenePrefix, 0) == 0; }
     /// @brief Its vertices in its own units (n x 3 float32) and triangles (m x 3 int64), copied.
     pybind11::array vertices() const;
     pybind11::array faces() const;

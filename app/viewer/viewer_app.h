@@ -76,9 +76,6 @@ private:
     void waitForScene();
     /// What the colour bar shows now: the look, the scalar's name (a series: with its step), --units.
     core::ColorBarContent legendContent() const;
-    /// The widest colour-bar margin of the series' steps beside a width x height picture (0 for one
-    /// mesh), so that a series' screenshots are one size whatever each step's title, as render's frames.
-    int seriesLegendMargin(int width, int height) const;
     GpuFrame frame(int width, int height) const;
     /// True when the CPU renderer traces the picture (--tracer; it needs the loaded scene).
     bool tracesOnCpu() const { return mCpuTracing && mLoaded; }

@@ -4,10 +4,7 @@
 #include "viewer_clock.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/core/color_bar.h>
 #include <ivis/render/framing.h>
-
-#include <algorithm>
 
 namespace ivis::app {
 
@@ -15,18 +12,6 @@ core::ColorBarContent ViewerApp::legendContent() const
 {
     const std::string title = mSeries ? seriesStepTitle(*mSeries, mSeries->steps()[mStep], mField->name) : mField->name;
     return {mShading.colormap, mShading.scale, title, shownUnits()};
-}
-
-int ViewerApp::seriesLegendMargin(int width, int height) const
-{
-    if (!mSeries || !mShowLegend || !mField->hasScalar()) return 0;
-    int margin = 0;
-    for (const core::SeriesStep& step : mSeries->steps()) {
-        core::ColorBarContent content = legendContent();
-        content.title = seriesStepTitle(*mSeries, step, step.array.empty() ? mField->name : step.array);
-        margin = std::max(margin, core::colorBarMargin(content, width, height, mLegendSide));
-    }
-    return margin;
 }
 
 GpuFrame ViewerApp::frame(int width, int height) const

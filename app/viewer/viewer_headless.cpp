@@ -24,7 +24,11 @@ int ViewerApp::runHeadlessScreenshot()
     const std::size_t steps = mSeries ? mSeries->steps().size() : 1;
     core::AtomicFileSet files;
     std::vector<std::string> written;
-    const int legendMargin = seriesLegendMargin(mOptions.width, mOptions.height);
+    // A series' screenshots are one size whatever each step's title, as render's frames.
+    const int legendMargin = mSeries && mShowLegend && mField->hasScalar()
+                                 ? seriesLegendMargin(*mSeries, legendContent(), mField->name, mOptions.width,
+                                                      mOptions.height, mLegendSide)
+                                 : 0;
     for (std::size_t step = 0; step < steps; ++step) {
         if (step > 0) showStep(step);
         if (mLoader) waitForScene();

@@ -37,6 +37,8 @@ PixelProbe probePixel(const RenderScene& scene, const MethodPtr& method, const c
     if (probe.mapping.point.valid()) {
         const glm::vec3 normal = triangleNormal(scene.mesh(), probe.mapping.point.triangle);
         probe.facing = glm::dot(normal, probe.mapping.arrival) > 0.0f ? -normal : normal;
+        if (probe.mapping.region == Region::Indirect && !method->indirectRaysArriveFromOutside())
+            probe.facing = -probe.facing;
     }
     const CurvedRayMap* rays = map.curvedRays();
     if (!rays || probe.mapping.region == Region::Direct) return probe;

@@ -34,7 +34,9 @@ struct PixelProbe {
     PixelMapping mapping;  ///< the region and the surface point (normalised units), as the renderer maps the pixel
     float scalar = 0.0f;   ///< the shown scalar at the point (scalarAt: NaN for none)
     /// The unit normal of the side of the surface the pixel shows: the point's triangle normal,
-    /// turned against the direction the point is seen along (zero for the background).
+    /// turned against the direction the point is seen along; for an indirect pixel of a method whose
+    /// rays start inside the object (the ring map: Method::indirectRaysArriveFromOutside), the wall's
+    /// other side, which a view from outside sees (zero for the background).
     glm::vec3 facing{0.0f};
     /// A curved-ray method's ray of a pixel whose view ray misses the surface and meets the hull.
     std::optional<ProbedLaunch> launch;
