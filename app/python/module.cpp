@@ -64,6 +64,18 @@ std::string scalarName(const py::object& scalar)
     return scalar.cast<std::string>();
 }
 
+/// What a picture shows of its mesh: scalar=, cell_to_point=, hotspots= and cap_holes=, as `render`'s
+/// --scalar, --cell-to-point, --hotspots and --cap-holes (checked against each other by Mesh::shown).
+core::SurfaceLoadOptions shownBy(const py::object& scalar, bool cellToPoint, int hotSpots, bool capHoles)
+{
+    core::SurfaceLoadOptions load;
+    load.read.scalarName = scalarName(scalar);
+    load.read.cellToPoint = cellToPoint;
+    load.hotSpots = hotSpots;
+    load.capHoles = capHoles;
+    return load;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(inversevis, m)
@@ -164,26 +176,32 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
 
     m.def(
         "render",
-        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::optional<double>& theta,
-           const std::optional<double>& phi, const std::optional<double>& fov, const std::optional<py::dict>& camera,
-           const std::pair<int, int>& size,
-           const std::string& colormap, const std::optional<std::pair<double, double>>& range, bool log, bool invert,
+        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, bool cellToPoint, int hotSpots,
+           bool capHoles, const std::optional<double>& theta, const std::optional<double>& phi,
+           const std::optional<double>& fov, bool ortho, const std::optional<py::dict>& camera,
+           const std::pair<int, int>& size, const std::string& colormap,
+           const std::optional<std::pair<double, double>>& range,
+           const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,
            const std::string& units, int volumeResolution, double minCoherence, bool fullTrace, bool legend,
            const std::string& legendSide, bool outline, bool shadows, bool shadeIndirect, bool transparent, int spp,
            bool measure, const py::object& progress, const py::kwargs& parameters) {
             python::RenderRequest request;
             request.method = method;
-            request.scalar = scalarName(scalar);
-            if (camera && (theta || phi || fov))
-                throw ValueError("camera= is the whole view; theta, phi and fov beside it would be ignored (as "
-                                 "`render --camera` refuses --theta, --phi and --fov)");
+            request.load = shownBy(scalar, cellToPoint, hotSpots, capHoles);
+            if (camera && (theta || phi || fov || ortho))
+                throw ValueError("camera= is the whole view; theta, phi, fov and ortho beside it would be ignored (as "
+                                 "`render --camera` refuses --theta, --phi, --fov and --ortho)");
+            if (fov && ortho) throw ValueError("fov= and ortho= exclude each other (an orthographic view has no field of view)");
             request.theta = theta.value_or(90.0);
             request.phi = phi.value_or(0.0);
             request.fov = fov;
+            request.orthographic = ortho;
             request.camera = camera;
             request.size = size;
             request.colormap = colormap;
             request.range = range;
+            request.rangePercentile = rangePercentile;
+            request.symmetric = symmetric;
             request.log = log;
             request.invert = invert;
             request.units = units;
@@ -202,10 +220,12 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             return said(python::renderMesh(mesh, request, progress));
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
-        py::arg("scalar") = py::none(), py::arg("theta") = py::none(), py::arg("phi") = py::none(),
-        py::arg("fov") = py::none(),
+        py::arg("scalar") = py::none(), py::arg("cell_to_point") = false, py::arg("hotspots") = 0,
+        py::arg("cap_holes") = false, py::arg("theta") = py::none(), py::arg("phi") = py::none(),
+        py::arg("fov") = py::none(), py::arg("ortho") = false,
         py::arg("camera") = py::none(), py::arg("size") = std::pair<int, int>(1000, 1000),
-        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("log") = false,
+        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("range_percentile") = py::none(),
+        py::arg("symmetric") = false, py::arg("log") = false,
         py::arg("invert") = false, py::arg("units") = "", py::arg("volume_resolution") = 200,
         py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("full_trace") = false,
         py::arg("legend") = true, py::arg("legend_side") = "right", py::arg("outline") = true,
@@ -215,13 +235,18 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
 
 method: a method's name (methods() lists them); its parameters as keywords by their keys
 (stable_shift=0.2, alpha=0.5, mirror_w=[0.3, 0.3, 0, 0, 0]). scalar: the array to colour by
-('NAME', 'NAME:0' for a component, 'cell:NAME'; None: the file's default). theta, phi: the
-camera on the sphere of radius 2.5 (None: 90 and 0), the field of view framed to the picture unless
-fov (degrees) fixes it; or camera (a Picture.camera) fixes the whole view instead. size: (width,
-height). range: (lo, hi) of the colour scale
-(None: the data's); log, invert, units, legend, legend_side ('right', 'left', 'bottom'),
+('NAME', 'NAME:0' for a component, 'cell:NAME'; None: the file's default). cell_to_point: a cell
+array averaged onto the vertices (area-weighted); hotspots: N (1 to 6) generated hot spots as the
+scalar instead, the first two at the ends of the thinnest axis; cap_holes: close open boundary
+loops (caps are never coloured). theta, phi: the camera on the sphere of radius 2.5 (None: 90 and
+0), the field of view framed to the picture unless fov (degrees) fixes it; ortho: an orthographic
+view (framed by its half height); or camera (a Picture.camera) fixes the whole view instead. size:
+(width, height). range: (lo, hi) of the colour scale (None: the data's); range_percentile: (LO, HI)
+percentiles of the data as the range instead (0 to 100); symmetric: the range centred on 0, for
+signed data; log, invert, units, legend, legend_side ('right', 'left', 'bottom'),
 outline, shadows, shade_indirect, transparent, spp: render's --log, --invert, --units,
---no-legend, --legend, --no-outline, --no-shadows, --unshaded-indirect, --transparent, --spp.
+--no-legend, --legend, --no-outline, --no-shadows, --unshaded-indirect, --transparent, --spp
+(each keyword is the option of the same name: hotspots=2 is --hotspots 2).
 read_view(path) gives the arguments of a view file's picture: render(mesh, **read_view(path)). volume_resolution: the volume's N (cached as the command line caches it).
 min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
 full_trace: trace every pixel's ray (no adaptive image sampling). measure: also measure what the
@@ -231,23 +256,35 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
 
     m.def(
         "optimize",
-        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, const std::string& energy,
-           const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed, int finalists,
-           int hotSpotViews, const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
-           const std::string& colormap, const std::optional<std::pair<double, double>>& range, int volumeResolution,
-           double minCoherence, bool legend, bool shadows, bool transparent, const py::object& progress,
-           const py::kwargs& parameters) {
+        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, bool cellToPoint, int hotSpots,
+           bool capHoles, const std::string& energy, const std::optional<float>& gamma, int optRes, int ascentRes,
+           int steps, const py::int_& seed, int finalists, int hotSpotViews,
+           const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
+           const std::string& colormap, const std::optional<std::pair<double, double>>& range,
+           const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,
+           const std::string& units, int volumeResolution, double minCoherence, bool legend,
+           const std::string& legendSide, bool outline, bool shadows, bool shadeIndirect, bool transparent, int spp,
+           const py::object& progress, const py::kwargs& parameters) {
             python::OptimizeRequest request;
             request.look.method = method;
-            request.look.scalar = scalarName(scalar);
+            request.look.load = shownBy(scalar, cellToPoint, hotSpots, capHoles);
             request.look.size = size;
             request.look.colormap = colormap;
             request.look.range = range;
+            request.look.rangePercentile = rangePercentile;
+            request.look.symmetric = symmetric;
+            request.look.log = log;
+            request.look.invert = invert;
+            request.look.units = units;
             request.look.volumeResolution = volumeResolution;
             request.look.minCoherence = minCoherence;
             request.look.legend = legend;
+            request.look.legendSide = legendSide;
+            request.look.outline = outline;
             request.look.shadows = shadows;
+            request.look.shadeIndirect = shadeIndirect;
             request.look.transparent = transparent;
+            request.look.samplesPerPixel = spp;
             request.look.parameters = parameters;
             request.look.function = "optimize";
             request.energy = energy;
@@ -267,13 +304,17 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
             return said(python::optimizeMesh(mesh, request, progress));
         },
         py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
-        py::arg("scalar") = py::none(), py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
+        py::arg("scalar") = py::none(), py::arg("cell_to_point") = false, py::arg("hotspots") = 0,
+        py::arg("cap_holes") = false, py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
         py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,
         py::arg("finalists") = 5, py::arg("hot_spot_views") = 8, py::arg("start") = py::none(), py::arg("views") = 1,
         py::arg("size") = std::pair<int, int>(1000, 1000),
-        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("volume_resolution") = 200,
-        py::arg("min_coherence") = optimize::kDefaultMinCoherence, py::arg("legend") = true, py::arg("shadows") = true,
-        py::arg("transparent") = false, py::arg("progress") = py::none(),
+        py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("range_percentile") = py::none(),
+        py::arg("symmetric") = false, py::arg("log") = false, py::arg("invert") = false, py::arg("units") = "",
+        py::arg("volume_resolution") = 200, py::arg("min_coherence") = optimize::kDefaultMinCoherence,
+        py::arg("legend") = true, py::arg("legend_side") = "right", py::arg("outline") = true, py::arg("shadows") = true,
+        py::arg("shade_indirect") = true, py::arg("transparent") = false, py::arg("spp") = 1,
+        py::arg("progress") = py::none(),
         R"(The best view of mesh for a method and its picture, as `inversevis optimize MESH` finds and draws it
 with the same arguments (the same picture, byte for byte).
 
@@ -288,7 +329,9 @@ also the visited views that show the most surface
 with the best one (as `optimize --views N`: Picture.views, save_views(), optimization['several_views']
 with their union's visibility; the visibility energy). The method's parameters as keywords start its ascent (a readable
 rule given, e.g. stable_shift=0.1, is kept; otherwise the rule keeping min_coherence is chosen).
-size, colormap, range, volume_resolution, legend, shadows, transparent: the picture's, as render().
+scalar, cell_to_point, hotspots, cap_holes: what it shows, as render(). size, colormap, range,
+range_percentile, symmetric, log, invert, units, volume_resolution, legend, legend_side, outline,
+shadows, shade_indirect, transparent, spp: the picture's, as render().
 Returns a Picture whose camera and method are the best view's, whose measures are its surface
 visibility, voxel_visibility, paper_literal, front_visibility, coherence (and reveal with a scalar), and whose
 optimization holds the search's result. The GIL is released; Ctrl-C raises KeyboardInterrupt.)");

@@ -234,28 +234,45 @@ py::dict Mesh::data(core::Association association) const
     return out;
 }
 
-core::SurfaceField Mesh::shown(const std::string& scalar) const
+core::SurfaceField Mesh::shown(const core::SurfaceLoadOptions& load) const
 {
+    const std::string& scalar = load.read.scalarName;
+    if (load.hotSpots < 0 || load.hotSpots > 6)
+        throw ValueError("hotspots " + std::to_string(load.hotSpots) + " must be 0 to 6");
+    if (load.hotSpots > 0 && !scalar.empty())
+        throw ValueError("scalar= and hotspots= exclude each other: the hot spots are the scalar shown");
+    if (load.hotSpots > 0 && load.read.cellToPoint)
+        throw ValueError("cell_to_point= and hotspots= exclude each other: hot spots are one value per vertex");
     if (generated()) {
         if (!scalar.empty() && scalar != mRaw.name)  // its own by name, as point_data and arrays list it
             throw InputError(mSource + ": generated scenes carry their own scalar" +
                              (mRaw.hasScalar() ? " ('" + mRaw.name + "')" : std::string()) +
                              "; other names of scalar= apply to mesh files only");
-        return mRaw;
+        if (load.read.cellToPoint)
+            throw InputError(mSource + ": generated scenes carry their own point scalar; cell_to_point= applies to mesh "
+                                       "files only");
+        if (load.hotSpots == 0 && !load.capHoles) return mRaw;
+        core::SurfaceLoadOptions generate;  // generated again, so that caps and hot spots come as `render` makes them
+        generate.capHoles = load.capHoles;
+        generate.hotSpots = load.hotSpots;
+        return core::loadSurface(mSource, generate);
     }
     core::SurfaceField field = mRaw;
-    if (!scalar.empty()) core::showArray(field, scalar, false);
-    return core::loadReadSurface(mSource, std::move(field), mReport, {});
+    if (!scalar.empty()) core::showArray(field, scalar, load.read.cellToPoint);
+    return core::loadReadSurface(mSource, std::move(field), mReport, load);
 }
 
-std::shared_ptr<const Scene> Mesh::scene(const std::string& scalar, const vdb::VolumeOptions& options,
+std::shared_ptr<const Scene> Mesh::scene(const core::SurfaceLoadOptions& load, const vdb::VolumeOptions& options,
                                          core::Interrupter* interrupter)
 {
     std::lock_guard<std::mutex> lock(mMutex);
-    const std::string volumeName = volumeKey(options), sceneName = scalar + '\n' + volumeName;
+    // Capped holes change the geometry, so its volumes too.
+    const std::string volumeName = volumeKey(options) + (load.capHoles ? "/capped" : "");
+    const std::string sceneName = load.read.scalarName + '\n' + std::to_string(load.read.cellToPoint) + '/' +
+                                  std::to_string(load.hotSpots) + '\n' + volumeName;
     if (auto found = mScenes.find(sceneName); found != mScenes.end()) return found->second;
     auto scene = std::make_shared<Scene>();
-    scene->field = shown(scalar);
+    scene->field = shown(load);
     Volume& volume = mVolumes[volumeName];
     if (!volume.volume) {
         volume.path = vdb::defaultVolumePath(vdb::optionalCacheFolder(""), mSource, scene->field.mesh, options);

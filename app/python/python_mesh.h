@@ -59,13 +59,16 @@ public:
     /// @brief Its arrays, as `inversevis info` lists them; a generated scene's own scalar as its one.
     std::vector<core::ArrayInfo> arrays() const;
 
-    /// @brief The scene showing @a scalar ("" for the file's default array), with a volume of
-    ///        @a options (from the command line's cache, else built and written there), made on
-    ///        first use and kept.
-    std::shared_ptr<const Scene> scene(const std::string& scalar, const vdb::VolumeOptions& options,
+    /// @brief The scene showing what @a load chooses (its scalar by name, "" for the file's default
+    ///        array; cell values averaged onto the vertices; generated hot spots; holes capped), with a volume of @a options (from the command line's cache, else built and
+    ///        written there), made on first use and kept.
+    std::shared_ptr<const Scene> scene(const core::SurfaceLoadOptions& load, const vdb::VolumeOptions& options,
                                        core::Interrupter* interrupter);
-    /// @brief The surface showing @a scalar, normalised, as `render MESH --scalar` loads it.
-    core::SurfaceField shown(const std::string& scalar) const;
+    /// @brief The surface showing what @a load chooses, normalised, as `render MESH --scalar NAME
+    ///        --cell-to-point --hotspots N --cap-holes` loads it.
+    /// @throw ValueError for choices that exclude each other (named as render()'s keywords);
+    ///        InputError for an array the mesh lacks
+    core::SurfaceField shown(const core::SurfaceLoadOptions& load) const;
 
 private:
     std::string mSource;

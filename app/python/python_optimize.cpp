@@ -81,8 +81,9 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
     }
 
     // What the scalar shown allows, before anything is built.
-    if (settings.energy == "scalar" || request.look.range) {
-        if (!mesh.shown(request.look.scalar).hasScalar())
+    const bool rangeGiven = request.look.range || request.look.rangePercentile;
+    if (settings.energy == "scalar" || rangeGiven) {
+        if (!mesh.shown(request.look.load).hasScalar())
             throw InputError(mesh.source() + (settings.energy == "scalar" ? ": the scalar energy needs a scalar"
                                                                           : ": no scalar to colour by") +
                              " (see scalar=)");
@@ -95,8 +96,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
     auto made = std::make_shared<Picture>();
     runReleased(
         [&](core::Interrupter& interrupter) {
-            const std::shared_ptr<const Scene> scene = mesh.scene(request.look.scalar, look.volume, &interrupter);
-            look.colourBy(mesh, scene->field, request.look.range.has_value());
+            const std::shared_ptr<const Scene> scene = mesh.scene(request.look.load, look.volume, &interrupter);
+            look.colourBy(mesh, scene->field, rangeGiven);
             const render::RenderScene& renderScene = *scene->render;
             const core::ScalarRange range = look.options.shading.scale.range;
             // The search, as `inversevis optimize` runs it (its views framed for their method).
@@ -121,7 +122,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             const double coherence = optimize::mappingCoherence(made->result.layers).value();
             made->camera = camera;
             made->look = look.options;
-            made->scalar = request.look.scalar;
+            made->load = request.look.load;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*best.method);
             made->measures = app::measuresJson(measured, coherence, measure.reveal);
@@ -155,7 +156,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                     view->camera = set.views[k].camera;
                     view->look = look.options;
                     view->look.method = set.views[k].method;
-                    view->scalar = made->scalar;
+                    view->load = made->load;
                     view->meshUnits = made->meshUnits;
                     view->method = render::methodToJson(*set.views[k].method);
                     view->measures = set.json.at("views").at(k);

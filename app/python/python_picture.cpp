@@ -54,8 +54,6 @@ void Picture::save(const std::string& path) const
 
 void Picture::saveView(const std::string& path) const
 {
-    core::SurfaceLoadOptions load;
-    load.read.scalarName = scalar;
     app::writeViewFile(app::viewOfPicture(camera, look, load, meshUnits), path);
 }
 

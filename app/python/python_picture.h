@@ -6,6 +6,7 @@
 
 #include <ivis/core/camera.h>
 #include <ivis/core/similarity.h>
+#include <ivis/core/surface_source.h>
 #include <ivis/render/renderer.h>
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,7 @@ struct Picture {
     nlohmann::json measures;      ///< coherence, and what the readable rule chose
     nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
     render::RenderOptions look;   ///< what it was rendered with (size, method as drawn, colours, legend)
-    std::string scalar;           ///< the scalar asked for ("" : the file's default array)
+    core::SurfaceLoadOptions load;  ///< what it shows: the scalar asked for ("": the default), hot spots, caps
     std::vector<std::shared_ptr<Picture>> views;  ///< of optimize(views=N > 1): each view's picture, the best first
     core::Image viewsFigure;      ///< of optimize(views=N > 1): the views side by side with one colour bar
 

@@ -16,9 +16,30 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
+
 namespace py = pybind11;
 
 namespace ivis::python {
+namespace {
+
+/// @a message with each command-line option of @a options ("--range-percentile") named as
+/// render()'s keyword ("range_percentile"), the longest first so that none is cut inside another.
+std::string asKeywords(std::string message, std::vector<std::string> options)
+{
+    std::sort(options.begin(), options.end(),
+              [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+    for (const std::string& option : options) {
+        std::string keyword = option.substr(2);
+        std::replace(keyword.begin(), keyword.end(), '-', '_');
+        for (std::size_t at = message.find(option); at != std::string::npos;
+             at = message.find(option, at + keyword.size()))
+            message.replace(at, option.size(), keyword);
+    }
+    return message;
+}
+
+}  // namespace
 
 render::ParameterValues parameterValues(const py::dict& parameters, const std::string& method,
                                         const std::string& function)
@@ -51,18 +72,14 @@ render::ParameterValues parameterValues(const py::dict& parameters, const std::s
 render::MethodPtr methodWith(const std::string& name, const render::ParameterValues& values)
 {
     const render::MethodInfo& info = render::methodInfo(name);  // an unknown name fails here
-    auto asKeywords = [&](std::string message) {
-        for (const render::ParameterSpec& spec : info.parameters)
-            for (std::size_t at = message.find(spec.option()); at != std::string::npos; at = message.find(spec.option()))
-                message.replace(at, spec.option().size(), spec.key);
-        return message;
-    };
+    std::vector<std::string> options;
+    for (const render::ParameterSpec& spec : info.parameters) options.push_back(spec.option());
     try {
         return render::makeMethod(name, values);
     } catch (const InputError& e) {
-        throw InputError(asKeywords(e.what()));
+        throw InputError(asKeywords(e.what(), options));
     } catch (const ValueError& e) {
-        throw ValueError(asKeywords(e.what()));
+        throw ValueError(asKeywords(e.what(), options));
     }
 }
 
@@ -104,9 +121,15 @@ PictureLook pictureLook(const RenderRequest& request)
     options.outline = request.outline;
     options.shading.shadeIndirect = request.shadeIndirect;
     if (request.range) look.scale.range = core::scalarRangeFromUser(request.range->first, request.range->second);
+    look.scale.percentiles = request.rangePercentile;
+    look.scale.symmetric = request.symmetric;
     look.scale.log = request.log;
     look.scale.invert = request.invert;
-    look.scale.validate();
+    try {
+        look.scale.validate();
+    } catch (const ValueError& e) {
+        throw ValueError(asKeywords(e.what(), {"--range-percentile", "--range", "--symmetric", "--log"}));
+    }
     if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
     look.volume = volumeFor(method, request.volumeResolution);
@@ -116,7 +139,11 @@ PictureLook pictureLook(const RenderRequest& request)
 void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field, bool rangeGiven)
 {
     if (rangeGiven && !field.hasScalar()) throw InputError(mesh.source() + ": no scalar to colour by (see scalar=)");
-    options.shading.scale = scale.resolve(field.values);
+    try {
+        options.shading.scale = scale.resolve(field.values);
+    } catch (const ValueError& e) {
+        throw ValueError(asKeywords(e.what(), {"--log"}));
+    }
     options.scalarName = field.name;
 }
 
@@ -138,6 +165,7 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
     } else {
         picture.camera = core::Camera::fromAngles(request.theta, request.phi, core::kCameraDistance,
                                                   request.fov.value_or(core::kDefaultFovYDeg));
+        picture.camera.orthographic = request.orthographic;
     }
     picture.camera.validate();
     if (picture.framed && double(options.width) <= render::kFramingMargin * options.height)
@@ -149,15 +177,15 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
     auto made = std::make_shared<Picture>();
     runReleased(
         [&](core::Interrupter& interrupter) {
-            const std::shared_ptr<const Scene> scene = mesh.scene(request.scalar, look.volume, &interrupter);
-            look.colourBy(mesh, scene->field, request.range.has_value());
+            const std::shared_ptr<const Scene> scene = mesh.scene(request.load, look.volume, &interrupter);
+            look.colourBy(mesh, scene->field, request.range || request.rangePercentile);
             picture.options = look.options;
             optimize::Picture result = optimize::makePicture(*scene->render, picture, &interrupter);
             made->result = std::move(result.result);
             made->camera = result.camera;
             made->look = picture.options;
             made->look.method = result.method;
-            made->scalar = request.scalar;
+            made->load = request.load;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*result.method);
             made->measures = {{"coherence", optimize::mappingCoherence(made->result.layers).value()},

@@ -6,6 +6,7 @@
 #include "python_picture.h"
 
 #include <ivis/core/color_scale.h>
+#include <ivis/core/surface_source.h>
 #include <ivis/render/method.h>
 #include <ivis/render/renderer.h>
 #include <ivis/vdb/surface_volume.h>
@@ -23,13 +24,16 @@ namespace ivis::python {
 /// @brief The arguments of render() beside the mesh, with `inversevis render`'s defaults.
 struct RenderRequest {
     std::string method = "inversevis-wrap";
-    std::string scalar;                      ///< "" : the file's default array
+    core::SurfaceLoadOptions load;           ///< what it shows: scalar=, cell_to_point=, hotspots=, cap_holes=
     double theta = 90.0, phi = 0.0;
     std::optional<double> fov;               ///< given: fixed, not framed
+    bool orthographic = false;               ///< an orthographic camera (--ortho)
     std::optional<pybind11::dict> camera;    ///< a camera file's JSON: fixed, not framed
     std::pair<int, int> size{1000, 1000};    ///< width, height
     std::string colormap = "viridis";
     std::optional<std::pair<double, double>> range;
+    std::optional<std::pair<double, double>> rangePercentile;  ///< the range at these percentiles (--range-percentile)
+    bool symmetric = false;                  ///< the range centred on 0 (--symmetric)
     bool log = false;                        ///< a log colour scale (--log)
     bool invert = false;                     ///< the colour map reversed (--invert)
     std::string units;                       ///< the colour bar's units (--units)

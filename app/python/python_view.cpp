@@ -24,18 +24,18 @@ const char* sideName(core::LegendSide side)
 py::dict readView(const std::string& path)
 {
     const app::ViewFile view = app::readViewFile(path);
-    if (!view.scalarFile.empty() || view.cellToPoint || view.hotSpots > 0)
-        throw InputError(path + ": the view colours by " +
-                         std::string(!view.scalarFile.empty() ? "a scalar file"
-                                     : view.cellToPoint      ? "cell values averaged onto the vertices"
-                                                             : "generated hot spots") +
-                         ", which render() does not take; render it with `inversevis render --view`");
+    if (!view.scalarFile.empty())
+        throw InputError(path + ": the view colours by a scalar file (" + view.scalarFile +
+                         "), which render() does not read; give its values as the mesh's point_data, or render it "
+                         "with `inversevis render --view`");
     py::dict arguments;
     arguments["camera"] = fromJson(core::cameraFileJson(view.camera, view.meshUnits));
     arguments["size"] = py::make_tuple(view.width, view.height);
     const nlohmann::json method = render::methodToJson(*view.method);
     for (const auto& [key, value] : method.items()) arguments[py::str(key)] = fromJson(value);
     arguments["scalar"] = view.scalar.empty() ? py::object(py::none()) : py::object(py::str(view.scalar));
+    arguments["cell_to_point"] = view.cellToPoint;
+    arguments["hotspots"] = view.hotSpots;
     arguments["colormap"] = view.colormap;
     arguments["range"] = py::make_tuple(view.scale.range.lo, view.scale.range.hi);
     arguments["log"] = view.scale.log;

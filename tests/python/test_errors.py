@@ -53,7 +53,8 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(colourmap="magma"), TypeError, "unexpected keyword argument 'colourmap'"),
         (dict(scalar=3), TypeError, "scalar must be an array's name ('NAME', 'NAME:0', 'cell:NAME'), got int"),
         (dict(scalar=np.zeros(86)), TypeError, "got ndarray; to colour by your own values give them to Mesh("),
-        (dict(camera={"eye": [0, 0, 2.5]}, theta=30), ValueError, "camera= is the whole view; theta, phi and fov"),
+        (dict(camera={"eye": [0, 0, 2.5]}, theta=30), ValueError,
+         "camera= is the whole view; theta, phi, fov and ortho"),
         (dict(camera={"eye": [0, 0, 2.5]}, fov=10), ValueError, "camera= is the whole view"),
         (dict(camera={"eye": [1e20, 0, 0]}), ValueError, "camera eye at 1e+20 normalised units from the object's centre "
                                                          "is out of range"),
@@ -68,6 +69,14 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(camera={"target": [0, 0, 0]}), ValueError, "camera"),
         (dict(volume_resolution=3), ValueError, "resolution"),
         (dict(progress=5), TypeError, "progress must be None or a callable"),
+        (dict(hotspots=2, scalar="h"), ValueError, "scalar= and hotspots= exclude each other"),
+        (dict(hotspots=1, cell_to_point=True), ValueError, "cell_to_point= and hotspots= exclude each other"),
+        (dict(hotspots=7), ValueError, "hotspots 7 must be 0 to 6"),
+        (dict(log=True, symmetric=True), ValueError, "log and symmetric exclude each other"),
+        (dict(range=(0, 1), range_percentile=(5, 95)), ValueError, "range and range_percentile exclude each other"),
+        (dict(range_percentile=(50, 10)), ValueError, "range_percentile [50, 10]: expected 0 <= LO < HI <= 100"),
+        (dict(fov=30, ortho=True), ValueError, "fov= and ortho= exclude each other"),
+        (dict(camera={"eye": [0, 0, 2.5]}, ortho=True), ValueError, "camera= is the whole view"),
     ]
     for arguments, error, words in cases:
         with pytest.raises(error) as refused:

@@ -34,6 +34,23 @@ def test_optimize_finds_and_draws_what_the_cli_does(tmp_path):
     assert (again.rgba == picture.rgba).all()
 
 
+def test_optimize_takes_renders_choice_of_scalar_and_look(tmp_path):
+    cli_png, cli_json = tmp_path / "cli.png", tmp_path / "cli.json"
+    done = run_cli("optimize", "scene:vessel-tree", "--volume-res", "64", "--opt-res", "24", "--steps", "2",
+                   "--finalists", "0", "--res", "200x160", "--hotspots", "2", "--energy", "scalar", "--invert",
+                   "--units", "a.u.", "--legend", "bottom", "--no-outline", "--unshaded-indirect", "--range-percentile",
+                   "10", "90", "-o", str(cli_png), "--json", str(cli_json))
+    assert done.returncode == 0, done.stderr
+    picture = inversevis.optimize(inversevis.Mesh.read("scene:vessel-tree"), hotspots=2, energy="scalar", invert=True,
+                                  units="a.u.", legend_side="bottom", outline=False, shade_indirect=False,
+                                  range_percentile=(10, 90), **SMALL)
+    assert picture._repr_png_() == cli_png.read_bytes()
+    cli = json.loads(cli_json.read_text())
+    assert picture.optimization["theta"] == cli["theta"] and picture.optimization["phi"] == cli["phi"]
+    assert len(picture.measures["reveal"]["per_region"]) == 2
+    assert picture.measures["reveal"] == cli["measures"]["reveal"]
+
+
 def test_several_views_are_those_the_cli_chooses_and_draws(tmp_path):
     cli_png, cli_json = tmp_path / "cli.png", tmp_path / "cli.json"
     done = run_cli("optimize", "scene:vessel-tree", "--volume-res", "64", "--opt-res", "24", "--steps", "2",
@@ -100,7 +117,7 @@ def test_bad_settings_are_refused_with_a_clear_message(arguments, message):
 
 def test_a_keyword_neither_argument_nor_parameter_is_a_type_error():
     mesh = inversevis.Mesh.read("scene:vessel-tree")
-    for keyword in ("alpha", "units", "log"):  # a paper-model parameter, and render()'s own arguments
+    for keyword in ("alpha", "fov", "measure"):  # a paper-model parameter, and render()'s own arguments
         with pytest.raises(TypeError, match=f"optimize\\(\\) got an unexpected keyword argument '{keyword}'"):
             inversevis.optimize(mesh, **{**SMALL, keyword: 0.5})
 

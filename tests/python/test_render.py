@@ -122,3 +122,63 @@ def test_a_scenes_own_scalar_is_listed_and_may_be_named():
     own = r"scene:vessel-tree: generated scenes carry their own scalar \('wss'\)"
     with pytest.raises(inversevis.InputError, match=own):
         inversevis.render(tree, "front", scalar="pressure", size=(40, 40), volume_resolution=48)
+
+
+@pytest.mark.parametrize("keywords, flags", [
+    (dict(hotspots=2), ["--hotspots", "2"]),
+    (dict(hotspots=1, cap_holes=True, theta=40), ["--hotspots", "1", "--cap-holes", "--theta", "40"]),
+    (dict(ortho=True, range_percentile=(5, 95), theta=60),
+     ["--ortho", "--range-percentile", "5", "95", "--theta", "60"]),
+    (dict(symmetric=True, colormap="coolwarm", phi=120), ["--symmetric", "--colormap", "coolwarm", "--phi", "120"]),
+])
+def test_what_a_picture_shows_and_its_scale_are_chosen_as_on_the_command_line(tmp_path, keywords, flags):
+    cli_png = tmp_path / "cli.png"
+    done = run_cli("render", "scene:vessel-tree", "--res", "200x150", "--volume-res", "64", *flags, "-o", str(cli_png))
+    assert done.returncode == 0, done.stderr
+    picture = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), size=(200, 150), volume_resolution=64,
+                                **keywords)
+    assert picture._repr_png_() == cli_png.read_bytes()
+    if keywords.get("cap_holes"):  # the tree is open at its four ends: the caps show
+        open_ends = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), size=(200, 150), volume_resolution=64,
+                                      **{**keywords, "cap_holes": False})
+        assert not np.array_equal(open_ends.rgba, picture.rgba)
+
+
+def write_vtp_with_cell_data(path, vertices, faces, values):
+    """An ASCII VTK XML PolyData file of the mesh with the cell array 'c'."""
+    points = " ".join(f"{x!r} {y!r} {z!r}" for x, y, z in vertices.astype(np.float32))
+    connectivity = " ".join(str(i) for f in faces for i in f)
+    offsets = " ".join(str(3 * (k + 1)) for k in range(len(faces)))
+    cells = " ".join(repr(v) for v in values.astype(np.float32))
+    path.write_text(f"""<?xml version="1.0"?>
+<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">
+<PolyData><Piece NumberOfPoints="{len(vertices)}" NumberOfPolys="{len(faces)}">
+<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">{points}</DataArray></Points>
+<Polys><DataArray type="Int64" Name="connectivity" format="ascii">{connectivity}</DataArray>
+<DataArray type="Int64" Name="offsets" format="ascii">{offsets}</DataArray></Polys>
+<CellData><DataArray type="Float32" Name="c" format="ascii">{cells}</DataArray></CellData>
+</Piece></PolyData></VTKFile>
+""")
+
+
+def test_cell_values_averaged_onto_the_vertices_are_the_command_lines(tmp_path):
+    vertices, faces, _ = uv_sphere()
+    centres = vertices[faces].mean(axis=1)
+    values = np.where(centres[:, 0] > 0.3, 1.0, 0.0) + centres[:, 2]  # a step: averaging smooths it
+    path = tmp_path / "cells.vtp"
+    write_vtp_with_cell_data(path, vertices, faces, values)
+    done = run_cli("render", str(path), "--scalar", "c", "--cell-to-point", "--res", "160x160", "--theta", "70",
+                   "--volume-res", "64", "-o", str(tmp_path / "cli.png"))
+    assert done.returncode == 0, done.stderr
+    averaged = inversevis.render(inversevis.Mesh.read(path), scalar="c", cell_to_point=True, size=(160, 160), theta=70,
+                                 volume_resolution=64)
+    assert averaged._repr_png_() == (tmp_path / "cli.png").read_bytes()
+    # The same values per cell given as arrays, and shown per cell: the averaged picture has values no cell has.
+    given = inversevis.Mesh(vertices.astype(np.float32), faces, cell_data={"c": values.astype(np.float32)})
+    assert np.array_equal(inversevis.render(given, scalar="c", cell_to_point=True, size=(160, 160), theta=70,
+                                            volume_resolution=64).rgba, averaged.rgba)
+    per_cell = inversevis.render(given, scalar="c", size=(160, 160), theta=70, volume_resolution=64)
+    cell_values = set(np.float32(values).tolist())
+    shown = averaged.layers["scalar"][averaged.layers["region"] > 0]
+    assert any(v not in cell_values for v in shown.tolist())
+    assert set(per_cell.layers["scalar"][per_cell.layers["region"] > 0].tolist()) <= cell_values

@@ -51,12 +51,31 @@ def test_bad_views_are_refused_naming_the_file(tmp_path):
     broken.write_text("{\"inversevis_view\": 1, \"camera\": ")
     with pytest.raises(inversevis.InputError, match="broken.view.json"):
         inversevis.read_view(str(broken))
-    hot = tmp_path / "hot.view.json"
-    done = run_cli("render", "scene:vessel-tree", "--hotspots", "2", "--res", "80x60", "--volume-res", "64",
-                   "-o", str(tmp_path / "hot.png"), "--view-out", str(hot))
+    scalar_file = tmp_path / "values.txt"
+    scalar_file.write_text("\n".join(["1.0"] * 8))
+    cube = tmp_path / "cube.obj"
+    cube.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+                    "f 1 3 2\nf 2 3 4\nf 5 6 7\nf 6 8 7\nf 1 2 5\nf 2 6 5\nf 3 7 4\nf 4 7 8\n"
+                    "f 1 5 3\nf 3 5 7\nf 2 4 6\nf 4 8 6\n")
+    filed = tmp_path / "filed.view.json"
+    done = run_cli("render", str(cube), "--scalar-file", str(scalar_file), "--res", "80x60", "--volume-res", "32",
+                   "-o", str(tmp_path / "filed.png"), "--view-out", str(filed))
     assert done.returncode == 0, done.stderr
-    with pytest.raises(inversevis.InputError, match="hot.view.json: the view colours by generated hot spots"):
-        inversevis.read_view(str(hot))
+    with pytest.raises(inversevis.InputError, match="filed.view.json: the view colours by a scalar file"):
+        inversevis.read_view(str(filed))
+
+
+def test_a_view_of_hot_spots_draws_the_same_picture_from_python(tmp_path):
+    hot, cli_png = tmp_path / "hot.view.json", tmp_path / "cli.png"
+    done = run_cli("render", "scene:vessel-tree", "--hotspots", "2", "--res", "160x120", "--volume-res", "64",
+                   "-o", str(cli_png), "--view-out", str(hot))
+    assert done.returncode == 0, done.stderr
+    arguments = inversevis.read_view(str(hot))
+    assert arguments["hotspots"] == 2 and not arguments["cell_to_point"]
+    picture = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), volume_resolution=64, **arguments)
+    assert picture._repr_png_() == cli_png.read_bytes()
+    picture.save_view(tmp_path / "again.view.json")
+    assert json.loads((tmp_path / "again.view.json").read_text())["hotspots"] == 2
 
 
 def test_measure_measures_what_render_measure_does(tmp_path):
