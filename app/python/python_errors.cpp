@@ -3,6 +3,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/log.h>
 
+#include <algorithm>
 #include <mutex>
 #include <utility>
 #include <vector>
@@ -17,6 +18,20 @@ pybind11::str decodedText(const std::string& text)
 {
     return pybind11::reinterpret_steal<pybind11::str>(
         PyUnicode_DecodeUTF8(text.data(), pybind11::ssize_t(text.size()), "replace"));
+}
+
+std::string asKeywords(std::string message, std::vector<std::string> options)
+{
+    std::sort(options.begin(), options.end(),
+              [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+    for (const std::string& option : options) {
+        std::string keyword = option.substr(2);
+        std::replace(keyword.begin(), keyword.end(), '-', '_');
+        for (std::size_t at = message.find(option); at != std::string::npos;
+             at = message.find(option, at + keyword.size()))
+            message.replace(at, option.size(), keyword);
+    }
+    return message;
 }
 
 void sayLogged()

@@ -257,9 +257,13 @@ core::SurfaceField Mesh::shown(const core::SurfaceLoadOptions& load) const
         generate.hotSpots = load.hotSpots;
         return core::loadSurface(mSource, generate);
     }
-    core::SurfaceField field = mRaw;
-    if (!scalar.empty()) core::showArray(field, scalar, load.read.cellToPoint);
-    return core::loadReadSurface(mSource, std::move(field), mReport, load);
+    try {
+        core::SurfaceField field = mRaw;
+        if (!scalar.empty()) core::showArray(field, scalar, load.read.cellToPoint);
+        return core::loadReadSurface(mSource, std::move(field), mReport, load);
+    } catch (const InputError& e) {  // the reader's message names the options, said here as keywords
+        throw InputError(asKeywords(e.what(), {"--cell-to-point", "--scalar"}));
+    }
 }
 
 std::shared_ptr<const Scene> Mesh::scene(const core::SurfaceLoadOptions& load, const vdb::VolumeOptions& options,

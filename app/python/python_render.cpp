@@ -1,6 +1,7 @@
 #include "python_render.h"
 
 #include "python_call.h"
+#include "python_errors.h"
 
 #include "../json_output.h"
 
@@ -16,31 +17,9 @@
 
 #include <pybind11/stl.h>
 
-#include <algorithm>
-
 namespace py = pybind11;
 
 namespace ivis::python {
-namespace {
-
-/// @a message with each command-line option of @a options ("--range-percentile") named as
-/// render()'s keyword ("range_percentile"), the longest first so that none is cut inside another.
-std::string asKeywords(std::string message, std::vector<std::string> options)
-{
-    std::sort(options.begin(), options.end(),
-              [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
-    for (const std::string& option : options) {
-        std::string keyword = option.substr(2);
-        std::replace(keyword.begin(), keyword.end(), '-', '_');
-        for (std::size_t at = message.find(option); at != std::string::npos;
-             at = message.find(option, at + keyword.size()))
-            message.replace(at, option.size(), keyword);
-    }
-    return message;
-}
-
-}  // namespace
-
 render::ParameterValues parameterValues(const py::dict& parameters, const std::string& method,
                                         const std::string& function)
 {
