@@ -182,3 +182,16 @@ def test_cell_values_averaged_onto_the_vertices_are_the_command_lines(tmp_path):
     shown = averaged.layers["scalar"][averaged.layers["region"] > 0]
     assert any(v not in cell_values for v in shown.tolist())
     assert set(per_cell.layers["scalar"][per_cell.layers["region"] > 0].tolist()) <= cell_values
+
+
+def test_the_stub_file_names_every_keyword_the_functions_take():
+    import ast
+    import pathlib
+    import re
+    stub = pathlib.Path(inversevis.__file__).with_name("inversevis.pyi")
+    stubbed = {node.name: [a.arg for a in node.args.args + node.args.kwonlyargs]
+               for node in ast.parse(stub.read_text()).body if isinstance(node, ast.FunctionDef)}
+    for function in (inversevis.render, inversevis.optimize, inversevis.read_view):
+        signature = function.__doc__.splitlines()[0]  # pybind11's "name(arg: type = default, *, ...) -> type"
+        taken = re.findall(r"(?:\(|, )(\w+):", signature[:signature.rindex(") ->")])
+        assert stubbed[function.__name__] == taken, function.__name__
