@@ -18,8 +18,10 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
     }
     TextCursor lines(data);
     std::size_t facets = 0;
+    std::string_view last;  // the last line that is not blank: an ASCII STL ends with "endsolid"
     while (!lines.atEnd()) {
         const std::string_view line = lines.line();
+        if (!trim(line).empty()) last = trim(line);
         if (line.find("outer") == std::string_view::npos && line.find("OUTER") == std::string_view::npos) {
             continue;
         }
@@ -36,6 +38,8 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
             }
         }
     }
+    if (lowercase(std::string(last.substr(0, 8))) != "endsolid")
+        failInput(path, "not a valid STL mesh (the file is truncated: it does not end with endsolid)");
     return {facets, false};
 }
 

@@ -154,8 +154,7 @@ private:
             const std::size_t n = count(w, 2);
             mIn.values(4 * n, mIsBinary ? ValueType::UInt8 : ValueType::Float32, "LOOKUP_TABLE");
         } else if (key == "metadata") {
-            while (!mIn.atEnd() && !mIn.line().empty()) {
-            }
+            skipMetadataLines();
         } else {
             double number = 0.0;
             const bool isNumber = std::from_chars(w[0].data(), w[0].data() + w[0].size(), number).ptr != w[0].data();
@@ -273,8 +272,17 @@ private:
         }
     }
 
-    /// "FIELD name n" and n arrays "name components tuples type"; outside POINT_DATA and CELL_DATA
-    /// these belong to the dataset and are read past.
+    /// The lines of a METADATA block (component names, information keys) after its keyword, up to
+    /// the empty line that ends it: read past.
+    void skipMetadataLines()
+    {
+        while (!mIn.atEnd() && !mIn.line().empty()) {
+        }
+    }
+
+    /// "FIELD name n" and n arrays "name components tuples type", each maybe followed by a METADATA
+    /// block (as ParaView 5 writes them); outside POINT_DATA and CELL_DATA these belong to the
+    /// dataset and are read past.
     void fieldArrays(const std::vector<std::string>& w)
     {
         const std::size_t n = count(w, 2);
@@ -289,14 +297,18 @@ private:
             const ValueType t = type(header, 3);
             if (!mAssociation) {
                 mIn.values(components * tuples, t, what);
-                continue;
+            } else {
+                if (tuples != mTuples) {
+                    fail(what + " has " + std::to_string(tuples) + " tuples, but " +
+                         (*mAssociation == Association::Point ? "POINT_DATA" : "CELL_DATA") + " says " +
+                         std::to_string(mTuples));
+                }
+                addArray(header[0], t, components, what);
             }
-            if (tuples != mTuples) {
-                fail(what + " has " + std::to_string(tuples) + " tuples, but " +
-                     (*mAssociation == Association::Point ? "POINT_DATA" : "CELL_DATA") + " says " +
-                     std::to_string(mTuples));
+            if (mIn.peekWord() == "metadata") {
+                mIn.words();
+                skipMetadataLines();
             }
-            addArray(header[0], t, components, what);
         }
     }
 

@@ -16,7 +16,9 @@
 namespace ivis::core::detail {
 namespace {
 
-/// Moves what follows the '_' of <AppendedData> out of the XML: raw appended data is not XML.
+/// Moves what follows the '_' of <AppendedData> out of the XML: raw appended data is not XML. The
+/// data ends at the file's last </AppendedData> (an array that says it holds more ends early, not
+/// in the closing tags), or at the file's end when the file was cut before it.
 /// Returns the XML text to parse (the file up to the <AppendedData> tag, closed again).
 std::string splitAppended(const std::string& path, const std::string& data, VtkXmlEncoding& encoding)
 {
@@ -27,7 +29,9 @@ std::string splitAppended(const std::string& path, const std::string& data, VtkX
     std::size_t underscore = tagEnd + 1;
     while (underscore < data.size() && std::isspace(static_cast<unsigned char>(data[underscore]))) ++underscore;
     if (underscore == data.size() || data[underscore] != '_') failInput(path, "AppendedData does not start with '_'");
-    encoding.appended = std::string_view(data).substr(underscore + 1);
+    const std::size_t closing = data.rfind("</AppendedData>");
+    const std::size_t end = closing != std::string::npos && closing > underscore ? closing : data.size();
+    encoding.appended = std::string_view(data).substr(underscore + 1, end - underscore - 1);
     return data.substr(0, tagEnd + 1) + "</AppendedData></VTKFile>";
 }
 

@@ -81,6 +81,18 @@ TEST(MeshReader, NotAMesh)
     }
 }
 
+TEST(MeshReader, AsciiStlCutBetweenFacetsIsTruncated)
+{
+    TempDir dir;
+    const std::string facets = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
+                               " endloop\nendfacet\nfacet normal 0 0 1\n outer loop\n  vertex 1 0 0\n"
+                               "  vertex 1 1 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+    writeFile(dir.file("whole.stl"), "solid s\n" + facets + "endsolid s\n\n");
+    EXPECT_EQ(readMesh(dir.file("whole.stl")).mesh.triangles.size(), 2u);
+    writeFile(dir.file("cut.stl"), "solid s\n" + facets);
+    expectReadError(dir.file("cut.stl"), "not a valid STL mesh (the file is truncated: it does not end with endsolid)");
+}
+
 TEST(MeshReader, BrokenPlyHeaders)
 {
     // Each of these makes OpenMesh 9.0 itself loop without bound or crash.

@@ -197,6 +197,30 @@ TEST(VtkLegacyReader, StripsNormalsTensorsAndEncodedNames)
     EXPECT_EQ(loadSurface(dir.file("s.vtk")).name, "wall shear stress magnitude");
 }
 
+TEST(VtkLegacyReader, MetadataAfterEveryFieldArrayAsParaViewWritesIt)
+{
+    for (const bool binary : {false, true}) {
+        const std::string text =
+            LegacyFile(binary, "POLYDATA")
+                .section("POINTS 4 float", {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, "float")
+                .section("TRIANGLE_STRIPS 1 5", {4, 0, 1, 2, 3}, "int")
+                .line("POINT_DATA 4")
+                .line("FIELD FieldData 2")
+                .section("p 1 4 double", {1, 2, 3, 4}, "double")
+                .line("METADATA\nCOMPONENT_NAMES\nP\n")
+                .section("U 3 4 float", {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}, "float")
+                .line("METADATA\nINFORMATION 1\nNAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 1 1.7\n")
+                .str();
+        TempDir dir;
+        writeFile(dir.file("f.vtk"), text);
+        const SurfaceField field = readMesh(dir.file("f.vtk"), {"U:2", ""});
+        ASSERT_EQ(field.arrays.size(), 2u) << binary;
+        EXPECT_EQ(field.arrays[0].name, "p");
+        EXPECT_EQ(field.arrays[1].name, "U");
+        EXPECT_EQ(field.values, (std::vector<float>{0, 0, 1, 1})) << binary;
+    }
+}
+
 TEST(VtkLegacyReader, UnstructuredTetrahedraShowTheirBoundary)
 {
     // Two tetrahedra sharing the face 1-2-3 (vtk_xml_reader_test's), in both encodings.

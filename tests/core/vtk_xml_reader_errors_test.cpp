@@ -88,6 +88,17 @@ TEST(VtkXmlReader, TruncatedAndInvalidBase64)
     EXPECT_EQ(readError(dir, a.substr(0, underscore + 1 + 284 + 20)), "Points: the base64 text ends early");
 }
 
+TEST(VtkXmlReader, RawAppendedDataShortOfItsArraysEndsEarlyBeforeItsClosingTags)
+{
+    TempDir dir;
+    VtkXmlLayout layout;
+    layout.format = VtkXmlLayout::AppendedRaw;
+    std::string text = test::vtpText(cube(), layout);
+    text.erase(text.rfind("\n</AppendedData>") - 8, 8);  // the last array's last 8 bytes, the closing tags kept
+    const std::string message = readError(dir, text);
+    EXPECT_NE(message.find("the appended data ends early"), std::string::npos) << message;
+}
+
 TEST(VtkXmlReader, CorruptZlibBlockAndCompressionHeaders)
 {
     TempDir dir;
@@ -207,7 +218,9 @@ TEST(VtkXmlReader, MalformedFiles)
     VtkXmlLayout raw;
     raw.format = VtkXmlLayout::AppendedRaw;
     const std::string appended = test::vtpText(cube(), raw);
-    const std::size_t appendedBytes = appended.size() - appended.find('_', appended.find("<AppendedData")) - 1;
+    // The appended data: from its '_' to the closing tag.
+    const std::size_t appendedBytes =
+        appended.rfind("</AppendedData>") - appended.find('_', appended.find("<AppendedData")) - 1;
     EXPECT_EQ(readError(dir, replaced(appended, "offset=\"0\"", "offset=\"99999\"")),
               "PointData array 'typed': offset 99999 lies past the end of the appended data (" +
                   std::to_string(appendedBytes) + " bytes)");
