@@ -66,6 +66,7 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.scalarFile = json.value("scalar_file", std::string());
     view.cellToPoint = json.value("cell_to_point", false);
     view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, 6) : 0;
+    view.capHoles = json.value("cap_holes", false);
     view.colormap = json.at("colormap").get<std::string>();
     core::colormap(view.colormap);  // known
     const nlohmann::json& scale = json.at("scale");
@@ -117,6 +118,7 @@ ViewFile viewOfPicture(const core::Camera& camera, const render::RenderOptions& 
     if (!load.read.scalarFile.empty()) view.scalarFile = std::filesystem::absolute(load.read.scalarFile).string();
     view.cellToPoint = load.read.cellToPoint;
     view.hotSpots = load.hotSpots;
+    view.capHoles = load.capHoles;
     view.colormap = options.shading.colormap;
     view.scale = options.shading.scale;
     view.units = options.units;
@@ -140,6 +142,7 @@ nlohmann::json viewToJson(const ViewFile& view)
             {"scalar_file", view.scalarFile},
             {"cell_to_point", view.cellToPoint},
             {"hotspots", view.hotSpots},
+            {"cap_holes", view.capHoles},
             {"colormap", view.colormap},
             {"scale", {{"range", {view.scale.range.lo, view.scale.range.hi}}, {"log", view.scale.log}, {"invert", view.scale.invert}}},
             {"units", view.units},

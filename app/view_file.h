@@ -27,6 +27,7 @@ struct ViewFile {
     std::string scalarFile;  ///< --scalar-file, as an absolute path ("" = none)
     bool cellToPoint = false;  ///< --cell-to-point
     int hotSpots = 0;     ///< --hotspots as given (0 = none)
+    bool capHoles = false;  ///< --cap-holes
     std::string colormap = core::kDefaultColormap;
     core::ColorScale scale;
     std::string units;

@@ -96,6 +96,7 @@ void ViewOptions::showViewScalar(MeshOptions& mesh, const std::string& source)
                          " of the mesh it was saved from; " + source +
                          " carries its own scalar (render that mesh, or take the view's camera alone: --camera "
                          "with the picture's .camera.json)");
+    mesh.load.capHoles = mesh.load.capHoles || v->capHoles;  // the geometry it was drawn from
     showsViewScalar = mesh.useViewScalar(v->scalar, v->scalarFile, v->cellToPoint, v->hotSpots);
 }
 

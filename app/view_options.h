@@ -61,7 +61,7 @@ struct ViewOptions {
     void addTo(CLI::App& command);
     /// @brief With --view, has @a mesh (of @a source, its first file or scene) show the file's scalar
     ///        unless the command line chose one (MeshOptions::useViewScalar), and records in
-    ///        showsViewScalar whether it shows it.
+    ///        showsViewScalar whether it shows it; caps its holes where the view's picture did.
     /// @throw InputError naming the view file when it shows an array and @a source is a generated scene
     void showViewScalar(MeshOptions& mesh, const std::string& source);
     /// @brief The view file of --view (read once), or null.

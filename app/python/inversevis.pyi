@@ -102,7 +102,7 @@ def optimize(
     steps: int = 20,
     seed: int = 1,
     finalists: int = 5,
-    hot_spot_views: int = 8,
+    hot_spot_views: Optional[int] = None,
     start: Optional[Tuple[float, float]] = None,
     views: int = 1,
     size: Tuple[int, int] = (1000, 1000),

@@ -258,7 +258,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
         "optimize",
         [](python::Mesh& mesh, const std::string& method, const py::object& scalar, bool cellToPoint, int hotSpots,
            bool capHoles, const std::string& energy, const std::optional<float>& gamma, int optRes, int ascentRes,
-           int steps, const py::int_& seed, int finalists, int hotSpotViews,
+           int steps, const py::int_& seed, int finalists, const std::optional<int>& hotSpotViews,
            const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range,
            const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,
@@ -307,7 +307,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
         py::arg("scalar") = py::none(), py::arg("cell_to_point") = false, py::arg("hotspots") = 0,
         py::arg("cap_holes") = false, py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
         py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,
-        py::arg("finalists") = 5, py::arg("hot_spot_views") = 8, py::arg("start") = py::none(), py::arg("views") = 1,
+        py::arg("finalists") = 5, py::arg("hot_spot_views") = py::none(), py::arg("start") = py::none(), py::arg("views") = 1,
         py::arg("size") = std::pair<int, int>(1000, 1000),
         py::arg("colormap") = "viridis", py::arg("range") = py::none(), py::arg("range_percentile") = py::none(),
         py::arg("symmetric") = false, py::arg("log") = false, py::arg("invert") = false, py::arg("units") = "",
@@ -323,7 +323,7 @@ gamma weighting the direct part, 1 by default). opt_res: rays per side while sea
 1000); ascent_res: rays per side of each view's parameter ascent (0: opt_res); steps: annealing
 proposals after the start; seed: the search's seed (the same seed, the same result); finalists:
 best views measured again at 200 rays per side (0: none); hot_spot_views: with the scalar energy, the
-hot-spot rule's views (as `optimize --hot-spot-views`, 0: none); start: (theta, phi) to start from (None:
+hot-spot rule's views (as `optimize --hot-spot-views`; None: 8, 0: none); start: (theta, phi) to start from (None:
 the best of 26 views from a cube's faces, edges and corners, as `optimize` starts); views: with N > 1,
 also the visited views that show the most surface
 with the best one (as `optimize --views N`: Picture.views, save_views(), optimization['several_views']

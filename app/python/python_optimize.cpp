@@ -50,9 +50,14 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
     if (request.finalists < 0 || request.finalists > 1000)
         throw ValueError("finalists " + std::to_string(request.finalists) + " is out of range (0 to 1000)");
     o.finalists = request.finalists;
-    if (request.hotSpotViews < 0 || request.hotSpotViews > 1000)
-        throw ValueError("hot_spot_views " + std::to_string(request.hotSpotViews) + " is out of range (0 to 1000)");
-    o.hotSpotViews = request.hotSpotViews;
+    if (request.hotSpotViews) {
+        if (*request.hotSpotViews < 0 || *request.hotSpotViews > 1000)
+            throw ValueError("hot_spot_views " + std::to_string(*request.hotSpotViews) + " is out of range (0 to 1000)");
+        if (*request.hotSpotViews > 0 && request.energy != "scalar")
+            throw ValueError("hot_spot_views: the hot-spot rule chooses among views by the scalar energy; energy is " +
+                             request.energy);
+        o.hotSpotViews = *request.hotSpotViews;
+    }
     if (request.look.minCoherence < 0.0 || request.look.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
     // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
@@ -81,12 +86,11 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
     }
 
     // What the scalar shown allows, before anything is built.
-    const bool rangeGiven = request.look.range || request.look.rangePercentile;
-    if (settings.energy == "scalar" || rangeGiven) {
-        if (!mesh.shown(request.look.load).hasScalar())
-            throw InputError(mesh.source() + (settings.energy == "scalar" ? ": the scalar energy needs a scalar"
-                                                                          : ": no scalar to colour by") +
-                             " (see scalar=)");
+    if (settings.energy == "scalar" || !look.colourKeywords.empty()) {
+        const core::SurfaceField shown = mesh.shown(request.look.load);
+        if (settings.energy == "scalar" && !shown.hasScalar())
+            throw InputError(mesh.source() + ": the scalar energy needs a scalar (see scalar=)");
+        look.checkColourKeywords(mesh, shown);
     }
 
     if (request.views < 1 || request.views > 16)
@@ -97,7 +101,7 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
     runReleased(
         [&](core::Interrupter& interrupter) {
             const std::shared_ptr<const Scene> scene = mesh.scene(request.look.load, look.volume, &interrupter);
-            look.colourBy(mesh, scene->field, rangeGiven);
+            look.colourBy(mesh, scene->field);
             const render::RenderScene& renderScene = *scene->render;
             const core::ScalarRange range = look.options.shading.scale.range;
             // The search, as `inversevis optimize` runs it (its views framed for their method).

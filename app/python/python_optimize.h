@@ -27,7 +27,7 @@ struct OptimizeRequest {
     int steps = 20;                            ///< annealing proposals after the start view
     std::uint64_t seed = 1;
     int finalists = 5;                         ///< best views measured again at 200 rays per side; 0, 1: none
-    int hotSpotViews = 8;                      ///< views the hot-spot rule judges (scalar energy); 0: none
+    std::optional<int> hotSpotViews;           ///< views the hot-spot rule judges (scalar energy; none: 8); 0: none
     std::optional<std::pair<double, double>> start;  ///< (theta, phi) of the start; none: the best axis view
     int views = 1;                             ///< several views (Picture::views) when above 1
 };

@@ -112,12 +112,26 @@ PictureLook pictureLook(const RenderRequest& request)
     if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
         throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
     look.volume = volumeFor(method, request.volumeResolution);
+    const std::pair<bool, const char*> colourKeywords[] = {
+        {request.colormap != core::kDefaultColormap, "colormap"}, {request.range.has_value(), "range"},
+        {request.rangePercentile.has_value(), "range_percentile"}, {request.symmetric, "symmetric"},
+        {request.log, "log"}, {request.invert, "invert"}, {!request.units.empty(), "units"},
+        {request.legendSide != "right", "legend_side"}};
+    for (const auto& [given, keyword] : colourKeywords)
+        if (given) look.colourKeywords.push_back(keyword);
     return look;
 }
 
-void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field, bool rangeGiven)
+void PictureLook::checkColourKeywords(const Mesh& mesh, const core::SurfaceField& field) const
 {
-    if (rangeGiven && !field.hasScalar()) throw InputError(mesh.source() + ": no scalar to colour by (see scalar=)");
+    if (field.hasScalar() || colourKeywords.empty()) return;
+    throw InputError(mesh.source() + ": " + colourKeywords.front() +
+                     "= colours a scalar, and the mesh shows none (give scalar= or hotspots=)");
+}
+
+void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field)
+{
+    checkColourKeywords(mesh, field);
     try {
         options.shading.scale = scale.resolve(field.values);
     } catch (const ValueError& e) {
@@ -157,7 +171,7 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
     runReleased(
         [&](core::Interrupter& interrupter) {
             const std::shared_ptr<const Scene> scene = mesh.scene(request.load, look.volume, &interrupter);
-            look.colourBy(mesh, scene->field, request.range || request.rangePercentile);
+            look.colourBy(mesh, scene->field);
             picture.options = look.options;
             optimize::Picture result = optimize::makePicture(*scene->render, picture, &interrupter);
             made->result = std::move(result.result);

@@ -74,10 +74,15 @@ struct PictureLook {
     core::ColorScaleRequest scale;
     render::ParameterValues values;
     vdb::VolumeOptions volume;
+    std::vector<std::string> colourKeywords;  ///< the colour keywords given other than their defaults ("log")
 
     /// @brief Colours by @a field's scalar (of @a mesh): the scale over its data unless given.
-    /// @throw InputError when a range is given and the field has no scalar
-    void colourBy(const Mesh& mesh, const core::SurfaceField& field, bool rangeGiven);
+    /// @throw InputError when a colour keyword is given and the field has no scalar
+    void colourBy(const Mesh& mesh, const core::SurfaceField& field);
+    /// @brief Refuses the colour keywords given for a mesh whose @a field shows no scalar, as
+    ///        `render` refuses --colormap, --range, --log ... there.
+    /// @throw InputError naming the first
+    void checkColourKeywords(const Mesh& mesh, const core::SurfaceField& field) const;
 };
 
 /// @brief Checks every argument of @a request but the camera's and the mesh's.

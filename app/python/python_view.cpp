@@ -36,6 +36,7 @@ py::dict readView(const std::string& path)
     arguments["scalar"] = view.scalar.empty() ? py::object(py::none()) : py::object(py::str(view.scalar));
     arguments["cell_to_point"] = view.cellToPoint;
     arguments["hotspots"] = view.hotSpots;
+    arguments["cap_holes"] = view.capHoles;
     arguments["colormap"] = view.colormap;
     arguments["range"] = py::make_tuple(view.scale.range.lo, view.scale.range.hi);
     arguments["log"] = view.scale.log;

@@ -35,6 +35,11 @@ void normalize(SurfaceField& field)
     } catch (const ValueError& e) {
         throw ValueError("normalize: mesh '" + field.sourcePath + "' has " + e.what());
     }
+    normalizeBy(field, step);
+}
+
+void normalizeBy(SurfaceField& field, const Similarity& step)
+{
     for (glm::vec3& p : field.mesh.positions) {
         p = glm::vec3(step.normalizedFromMesh(glm::dvec3(p)));
     }

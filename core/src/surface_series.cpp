@@ -2,9 +2,12 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/log.h>
+#include <ivis/core/number_text.h>
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/show_array.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace ivis::core {
@@ -113,9 +116,27 @@ SurfaceField SurfaceSeries::load(std::size_t index)
     // whose notes are printed has said it; the other steps, and the first after that, name it.
     SurfaceLoadOptions options = mOptions;
     if ((index > 0 || mFirstNotesSaid) && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
+    options.frame = frame();
     SurfaceField field = loadSurface(step.path, options);
+    const Bounds3 box = bounds(field.mesh);
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});
+    if (reach > kSeriesFrameReach)
+        throw InputError(step.path + ": its geometry reaches " + shortNumber(reach) +
+                         " of the first step's half size from that step's centre; every step of a series is drawn in "
+                         "the first step's frame, which holds geometry that moves or grows by up to half of it");
     if (index == 0 && heard) mFirstNotesSaid = true;
     return field;
+}
+
+const Similarity& SurfaceSeries::frame()
+{
+    if (!mFrame) {
+        const std::string& first = mSteps.front().path;
+        mFrame = first.rfind(kScenePrefix, 0) == 0 ? loadSurface(first, {}).normalization
+                                                   : normalizingTransform(bounds(readMesh(first, {}).mesh));
+    }
+    return *mFrame;
 }
 
 }  // namespace ivis::core

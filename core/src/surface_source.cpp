@@ -31,7 +31,8 @@ SurfaceField finishSurface(const std::string& source, SurfaceField field, const 
         const std::size_t loops = capHoles(field);
         if (loops > 0) say(source + ": capped " + std::to_string(loops) + " boundary loops", notes);
     }
-    normalize(field);
+    if (options.frame) normalizeBy(field, *options.frame);
+    else normalize(field);
     if (options.hotSpots > 0) {
         field.values = hotSpotValues(field.mesh, placeHotSpots(field.mesh, options.hotSpots));
         field.valuesOn = Association::Point;

@@ -29,7 +29,7 @@ namespace {
 std::string tetrahedron(const std::string& array)
 {
     test::VtkDataSet d;
-    d.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    d.points = {33, 31, 41, 34, 31, 41, 33, 32, 41, 33, 31, 42};  // inside the artery's frame (its steps' units)
     d.polys.connectivity = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
     d.polys.offsets = {3, 6, 9, 12};
     d.pointData = {{array, "Float32", 1, {0.3, 0.4, 0.5, 0.6}}};

@@ -34,7 +34,7 @@ namespace ivis::test {
 std::string writeMixedSeries(const TempDir& dir)
 {
     VtkDataSet tet;
-    tet.points = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    tet.points = {33, 31, 41, 34, 31, 41, 33, 32, 41, 33, 31, 42};  // inside the artery's frame
     tet.polys.connectivity = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
     tet.polys.offsets = {3, 6, 9, 12};
     tet.pointData = {{"pressure", "Float32", 1, {0.1, 0.2, 0.3, 0.4}}};

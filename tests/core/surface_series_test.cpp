@@ -158,6 +158,41 @@ TEST(SurfaceSeries, ListStepsAreTheFilesInTheOrderGiven)
     EXPECT_EQ(series.load(1).valuesOn, Association::Cell);
 }
 
+/// An OBJ of the unit cube [0, 1]^3 scaled by @a scale and moved by @a shift.
+std::string cubeObj(double scale, double shift)
+{
+    std::string text;
+    for (int v = 0; v < 8; ++v)
+        text += "v " + std::to_string(shift + scale * (v & 1)) + " " + std::to_string(scale * ((v >> 1) & 1)) + " " +
+                std::to_string(scale * ((v >> 2) & 1)) + "\n";
+    return text + "f 1 3 2\nf 2 3 4\nf 5 6 7\nf 6 8 7\nf 1 2 5\nf 2 6 5\nf 3 7 4\nf 4 7 8\nf 1 5 3\nf 3 5 7\n"
+                  "f 2 4 6\nf 4 8 6\n";
+}
+
+TEST(SurfaceSeries, EveryStepIsInTheFirstStepsFrameSoThatMovingGeometryMoves)
+{
+    test::TempDir dir;
+    test::writeFile(dir.file("a.obj"), cubeObj(1.0, 0.0));
+    test::writeFile(dir.file("moved.obj"), cubeObj(1.0, 0.25));
+    test::writeFile(dir.file("swollen.obj"), cubeObj(1.2, 0.0));
+    test::writeFile(dir.file("far.obj"), cubeObj(1.0, 5.0));
+    SurfaceSeries series({dir.file("a.obj"), dir.file("moved.obj"), dir.file("swollen.obj"), dir.file("far.obj")}, {});
+    const SurfaceField first = series.load(0), moved = series.load(1), swollen = series.load(2);
+    // The first step as a mesh alone; the others in its frame: one transform, the move and the swelling kept.
+    EXPECT_EQ(first.mesh.positions, loadSurface(dir.file("a.obj")).mesh.positions);
+    EXPECT_EQ(moved.normalization.center, first.normalization.center);
+    EXPECT_EQ(moved.normalization.scale, first.normalization.scale);
+    const float half = float(first.normalization.scale);  // normalised units per mesh unit
+    for (std::size_t v = 0; v < 8; ++v) {
+        EXPECT_NEAR(moved.mesh.positions[v].x - first.mesh.positions[v].x, 0.25f * half, 1e-6f) << v;
+        EXPECT_NEAR(swollen.mesh.positions[v].y + 1.0f, 1.2f * (first.mesh.positions[v].y + 1.0f), 1e-5f) << v;
+    }
+    // A step beyond the frame's room is refused, naming its file.
+    const std::string message = errorOf([&] { series.load(3); });
+    EXPECT_NE(message.find(dir.file("far.obj") + ": its geometry reaches 11 of the first step's half size"),
+              std::string::npos) << message;
+}
+
 TEST(SurfaceSeries, AChosenScalarIsWhatEveryLaterStepShows)
 {
     // The viewer's "colour by" on a series: another array for every step, then the opened one back.

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import inversevis
-from conftest import uv_sphere
+from conftest import run_cli, uv_sphere
 
 
 @pytest.fixture(scope="module")
@@ -86,6 +86,21 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         assert words in str(refused.value), arguments
     with pytest.raises(TypeError):
         inversevis.render(mesh, size="big")
+
+
+def test_colours_of_a_scalar_the_mesh_does_not_show_are_refused_as_the_cli_refuses_them(sphere, tmp_path):
+    mesh = inversevis.Mesh(*sphere[:2])  # geometry alone
+    for keyword, value in [("symmetric", True), ("log", True), ("invert", True), ("units", "Pa"), ("colormap", "magma"),
+                           ("range_percentile", (5, 95)), ("range", (0, 1)), ("legend_side", "left")]:
+        with pytest.raises(inversevis.InputError, match=f"Mesh: {keyword}= colours a scalar, and the mesh shows none"):
+            inversevis.render(mesh, size=(40, 40), volume_resolution=32, **{keyword: value})
+    # The command line refuses the same flag on the same geometry.
+    path = tmp_path / "plain.obj"
+    path.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in sphere[0]) +
+                    "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in sphere[1]))
+    done = run_cli("render", str(path), "--symmetric", "--res", "40x40", "--volume-res", "32", "-o",
+                   str(tmp_path / "x.png"))
+    assert done.returncode == 2 and "--symmetric colours a scalar, and the mesh shows none" in done.stderr
 
 
 def test_bad_files_raise_the_cli_s_one_line(tmp_path):

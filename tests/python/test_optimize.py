@@ -108,6 +108,8 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     (dict(size=(4, 100)), "needs a wider picture"),
     (dict(views=0), "views 0 is out of range"),
     (dict(views=2, energy="scalar"), "need energy='visibility'"),
+    (dict(hot_spot_views=3), "hot_spot_views: the hot-spot rule chooses among views by the scalar energy; energy is "
+                             "visibility"),
 ])
 def test_bad_settings_are_refused_with_a_clear_message(arguments, message):
     mesh = inversevis.Mesh.read("scene:vessel-tree")
@@ -128,6 +130,9 @@ def test_the_scalar_energy_needs_a_scalar():
                            np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]))
     with pytest.raises(inversevis.InputError, match="the scalar energy needs a scalar"):
         inversevis.optimize(mesh, energy="scalar", **SMALL)
+    # Colours of a scalar the mesh does not show are refused, as `optimize --log` refuses them.
+    with pytest.raises(inversevis.InputError, match="log= colours a scalar, and the mesh shows none"):
+        inversevis.optimize(mesh, log=True, **SMALL)
 
 
 def test_ctrl_c_stops_a_search_within_a_second():

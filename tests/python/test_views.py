@@ -78,6 +78,19 @@ def test_a_view_of_hot_spots_draws_the_same_picture_from_python(tmp_path):
     assert json.loads((tmp_path / "again.view.json").read_text())["hotspots"] == 2
 
 
+def test_a_view_of_capped_holes_caps_them_again_on_either_side(tmp_path):
+    mesh = inversevis.Mesh.read("scene:vessel-tree")  # open at its four ends
+    picture = inversevis.render(mesh, cap_holes=True, size=(160, 120), theta=40, volume_resolution=64)
+    picture.save_view(tmp_path / "capped.view.json")
+    arguments = inversevis.read_view(tmp_path / "capped.view.json")
+    assert arguments["cap_holes"]
+    assert inversevis.render(mesh, volume_resolution=64, **arguments)._repr_png_() == picture._repr_png_()
+    done = run_cli("render", "scene:vessel-tree", "--view", str(tmp_path / "capped.view.json"), "--volume-res", "64",
+                   "-o", str(tmp_path / "cli.png"))
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "cli.png").read_bytes() == picture._repr_png_()
+
+
 def test_measure_measures_what_render_measure_does(tmp_path):
     stats = tmp_path / "s.json"
     done = run_cli("render", "scene:vessel-tree", "--res", "200x150", "--measure", "--volume-res", "64",

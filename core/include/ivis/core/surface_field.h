@@ -56,6 +56,11 @@ void showStepData(SurfaceField& field, SurfaceField&& step);
 /// @throw ValueError if the mesh has zero extent.
 void normalize(SurfaceField& field);
 
+/// @brief Maps the surface by @a frame (normalizedFromMesh) instead of its own normalising
+///        transform, composed into field.normalization as normalize() composes it: the steps of a
+///        time series share their first step's frame.
+void normalizeBy(SurfaceField& field, const Similarity& frame);
+
 /// @brief The transform normalize() applies to a mesh bounded by @a box: its centre to 0, its
 ///        longest side to length 2.
 /// @throw ValueError "zero or non-finite extent"

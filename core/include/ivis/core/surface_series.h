@@ -7,6 +7,7 @@
 #include <ivis/core/surface_source.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions&
 /// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
 ///       when none is chosen, the array the first step shows by default, which the first load of
 ///       the first step made while info messages print says, once. A pattern's file, read once,
+/// @brief How far from the first step's centre, in its normalised units (its longest half extent
+///        1), a step's geometry may reach: room for walls that move or swell between steps, inside
+///        the volume's box with the rays' hull round it.
+inline constexpr double kSeriesFrameReach = 1.5;
+
 ///       is read again by the first such load, so that its notes are said.
 class SurfaceSeries {
 public:
@@ -46,8 +52,10 @@ public:
     ///        first file.
     const std::string& source() const { return mSource; }
 
-    /// @brief Step @a index's normalised surface showing its array.
-    /// @throw InputError naming the step's file for a file that cannot be read or lacks the array
+    /// @brief Step @a index's surface showing its array, normalised by the first step's transform
+    ///        (every step in one frame, so that geometry that moves or grows between steps is seen to).
+    /// @throw InputError naming the step's file for a file that cannot be read, lacks the array, or
+    ///        whose geometry reaches beyond kSeriesFrameReach in the first step's frame
     SurfaceField load(std::size_t index);
 
     /// @brief Every later load shows the scalar @a options choose (their array, cell-to-point and
@@ -58,6 +66,9 @@ public:
     void chooseScalar(const SurfaceLoadOptions& options);
 
 private:
+    /// The first step's normalising transform, which every step is normalised by (read once).
+    const Similarity& frame();
+
     /// The array the first step shows by default under @a options ("" when they choose a scalar or
     /// there is none): every step then shows it.
     std::string defaultArrayUnder(const SurfaceLoadOptions& options) const;
@@ -71,6 +82,7 @@ private:
     SurfaceField mPatternFile;     ///< the pattern's file loaded (empty for a series of files)
     std::vector<std::string> mPatternNotes;  ///< what loading it said, said at the first heard load
     std::string mDefaultArray;  ///< with no array chosen, the first step's default array, shown by every step
+    std::optional<Similarity> mFrame;  ///< frame(), once read
     bool mFirstNotesSaid = false;  ///< whether a heard load (info printing) said the first step's notes
 };
 

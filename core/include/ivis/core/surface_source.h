@@ -5,6 +5,7 @@
 #include <ivis/core/mesh_reader.h>
 #include <ivis/core/surface_field.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct SurfaceLoadOptions {
     bool capHoles = false;  ///< close boundary loops with caps tagged as non-data
     int hotSpots = 0;       ///< when > 0, the scalar is this many generated hot spots (core::placeHotSpots)
     bool defaultArray = true;  ///< with no scalar chosen, show the file's default array (sdf shows none)
+    std::optional<Similarity> frame;  ///< normalise by this transform instead of the surface's own (normalizeBy)
 };
 
 /// @brief Reads the file (or generates the scene), logs the reader's notes and dropped degenerate
