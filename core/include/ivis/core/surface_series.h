@@ -25,15 +25,15 @@ struct SeriesStep {
 ///        array pattern (core::isArrayPattern) in --scalar.
 bool isSeries(const std::vector<std::string>& sources, const SurfaceLoadOptions& options);
 
-/// @brief The steps of a series and each step's surface, loaded as loadSurface loads a file.
-/// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
-///       when none is chosen, the array the first step shows by default, which the first load of
-///       the first step made while info messages print says, once. A pattern's file, read once,
 /// @brief How far from the first step's centre, in its normalised units (its longest half extent
 ///        1), a step's geometry may reach: room for walls that move or swell between steps, inside
 ///        the volume's box with the rays' hull round it.
 inline constexpr double kSeriesFrameReach = 1.5;
 
+/// @brief The steps of a series and each step's surface, loaded as loadSurface loads a file.
+/// @note Every step shows the same array: the --scalar given, the pattern's match of the step, or,
+///       when none is chosen, the array the first step shows by default, which the first load of
+///       the first step made while info messages print says, once. A pattern's file, read once,
 ///       is read again by the first such load, so that its notes are said.
 class SurfaceSeries {
 public:
