@@ -154,12 +154,13 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     if (request.video) {
         const std::optional<std::string> ffmpeg = findFfmpeg();
         const std::string path = videoPath(request.png);
+        const std::string framesWritten = count == 1 ? "the frame is written" : "the " + std::to_string(count) +
+                                                                                    " frames are written";
         if (!ffmpeg) {
-            core::logInfo("ffmpeg is not on PATH: no video (the " + std::to_string(count) + " frames are written)");
+            core::logInfo("ffmpeg is not on PATH: no video (" + framesWritten + ")");
         } else if (const std::string failure = writeVideo(*ffmpeg, request.png, count, request.fps, path);
                    !failure.empty()) {
-            core::logWarning(path + ": no video (" + failure + "); the " + std::to_string(count) +
-                             " frames are written");
+            core::logWarning(path + ": no video (" + failure + "); " + framesWritten);
         } else {
             video = path;
         }
@@ -183,8 +184,11 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     const nlohmann::json method = render::methodToJson(*request.method);
     for (const auto& [key, value] : method.items()) stats[key] = value;
     if (readable) stats["readable_rule"] = readableSettingJson(*readable);
-    core::logInfo("wrote " + std::to_string(last - first + 1) + " frames " + framePath(request.png, first, count) + " .. " +
-                  framePath(request.png, last, count) + " (" + std::to_string(width) + "x" +
+    const std::string written = last == first ? "1 frame " + framePath(request.png, first, count)
+                                              : std::to_string(last - first + 1) + " frames " +
+                                                    framePath(request.png, first, count) + " .. " +
+                                                    framePath(request.png, last, count);
+    core::logInfo("wrote " + written + " (" + std::to_string(width) + "x" +
                   std::to_string(height) + ", " + request.method->name() + ", " + view.describeFraming(camera) + ", " +
                   std::to_string(current.volumesLoaded()) + " volume" + (current.volumesLoaded() == 1 ? "" : "s") +
                   (video.is_null() ? "" : ", video " + video.get<std::string>()) + ")");
