@@ -191,7 +191,8 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             if (camera && (theta || phi || fov || ortho))
                 throw ValueError("camera= is the whole view; theta, phi, fov and ortho beside it would be ignored (as "
                                  "`render --camera` refuses --theta, --phi, --fov and --ortho)");
-            if (fov && ortho) throw ValueError("fov= and ortho= exclude each other (an orthographic view has no field of view)");
+            if (fov && ortho)
+                throw ValueError("fov= and ortho= exclude each other (an orthographic view has no field of view)");
             request.theta = theta.value_or(90.0);
             request.phi = phi.value_or(0.0);
             request.fov = fov;
