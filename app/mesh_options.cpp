@@ -4,6 +4,7 @@
 #include "method_options.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/hot_spots.h>
 #include <ivis/render/method_registry.h>
 
 #include <cstdio>
@@ -39,7 +40,7 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
         .add_option("--hotspots", load.hotSpots,
                     "Show N Gaussian hot spots instead of a scalar: the first two at the ends of the mesh's thinnest "
                     "principal axis, the next along the middle and the longest axis (reveal measure)")
-        ->check(CLI::Range(1, 6))
+        ->check(CLI::Range(1, core::kMaxHotSpots))
         ->excludes(scalar)
         ->excludes(scalarFile)
         ->excludes(cellToPoint);

@@ -4,6 +4,7 @@
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/hot_spots.h>
 #include <ivis/core/json_numbers.h>
 #include <ivis/render/method_json.h>
 
@@ -65,7 +66,7 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.scalar = json.value("scalar", std::string());
     view.scalarFile = json.value("scalar_file", std::string());
     view.cellToPoint = json.value("cell_to_point", false);
-    view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, 6) : 0;
+    view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, core::kMaxHotSpots) : 0;
     view.capHoles = json.value("cap_holes", false);
     view.colormap = json.at("colormap").get<std::string>();
     core::colormap(view.colormap);  // known

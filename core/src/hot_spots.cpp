@@ -40,7 +40,9 @@ std::array<glm::dvec3, 3> principalAxes(glm::dmat3 m)
 
 HotSpots placeHotSpots(const TriangleMesh& mesh, int count)
 {
-    if (count < 1 || count > 6) throw ValueError("hot spots: " + std::to_string(count) + " is out of range (1 to 6)");
+    if (count < 1 || count > kMaxHotSpots)
+        throw ValueError("hot spots: " + std::to_string(count) + " is out of range (1 to " +
+                         std::to_string(kMaxHotSpots) + ")");
     if (mesh.positions.empty()) throw ValueError("hot spots need a mesh with vertices");
     glm::dvec3 mean(0.0), lo(1e300), hi(-1e300);
     for (const glm::vec3& p : mesh.positions) {

@@ -18,10 +18,13 @@ struct HotSpots {
     float sigma = 0.0f;              ///< Gaussian width (units of the mesh's positions)
 };
 
+/// @brief The most hot spots placeHotSpots places (two along each principal axis).
+inline constexpr int kMaxHotSpots = 6;
+
 /// @brief Places @a count spots: the first two at the vertices furthest along -a and +a for the
 ///        thinnest principal axis a (of the vertices' covariance), the next two along the middle
 ///        axis, the last two along the longest; sigma is 6% of the bounding-box diagonal.
-/// @throw ValueError unless 1 <= count <= 6, or for a mesh without vertices
+/// @throw ValueError unless 1 <= count <= kMaxHotSpots, or for a mesh without vertices
 HotSpots placeHotSpots(const TriangleMesh& mesh, int count);
 
 /// @brief Per-vertex value in [0, 1]: the largest exp(-d^2 / (2 sigma^2)) over the spots, d the
