@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <iomanip>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -37,8 +37,8 @@ std::vector<SeriesArray> seriesArrays(const std::vector<core::TimeStep>& steps)
                 arrays.push_back({a, 1});
                 continue;
             }
-            same->info.min = std::min(same->info.min, a.min);
-            same->info.max = std::max(same->info.max, a.max);
+            same->info.min = std::fmin(same->info.min, a.min);  // NaN (no finite value) gives way
+            same->info.max = std::fmax(same->info.max, a.max);
             same->info.nanCount += a.nanCount;
             ++same->steps;
         }
@@ -52,19 +52,32 @@ nlohmann::json arrayJson(const core::ArrayInfo& a)
             {"association", core::associationName(a.association)},
             {"type", core::valueTypeName(a.type)},
             {"components", a.components},
-            {"min", a.min},
-            {"max", a.max},
+            {"min", std::isnan(a.min) ? nlohmann::json() : nlohmann::json(a.min)},
+            {"max", std::isnan(a.max) ? nlohmann::json() : nlohmann::json(a.max)},
             {"nan_count", a.nanCount},
             {"shown_by_default", a.shownByDefault}};
+}
+
+/// @a text followed by spaces up to @a width characters (UTF-8 characters, not bytes, so that a
+/// name such as "Druck (kPa)" or "τ_w" keeps the columns after it aligned).
+std::string padded(const std::string& text, std::size_t width)
+{
+    const std::size_t characters = std::size_t(std::count_if(
+        text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+    return text + std::string(characters < width ? width - characters : 0, ' ');
 }
 
 /// One array as `info` prints it, on a line of its own.
 void printArray(const core::ArrayInfo& a)
 {
-    std::cout << "    " << std::left << std::setw(20) << a.name << "  " << std::setw(5)
-              << core::associationName(a.association) << "  " << std::setw(7) << core::valueTypeName(a.type)
-              << std::right << "  " << a.components << (a.components == 1 ? " component " : " components")
-              << "  " << (a.components == 1 ? "" : "magnitude ") << "min " << a.min << "  max " << a.max;
+    std::cout << "    " << padded(a.name, 20) << "  " << padded(core::associationName(a.association), 5) << "  "
+              << padded(core::valueTypeName(a.type), 7) << "  " << a.components
+              << (a.components == 1 ? " component " : " components") << "  "
+              << (a.components == 1 ? "" : "magnitude ");
+    if (std::isnan(a.min))
+        std::cout << "no finite value";
+    else
+        std::cout << "min " << a.min << "  max " << a.max;
     if (a.nanCount > 0) std::cout << "  (" << a.nanCount << " NaN)";
     if (a.shownByDefault) std::cout << "  (shown by default)";
 }

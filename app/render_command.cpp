@@ -305,7 +305,7 @@ Command addRenderCommand(CLI::App& app)
         command->add_option("--frames", options->frames,
                             "Series: render only steps FIRST:LAST (from 0, inclusive), numbered as in the whole series: "
                             "one job of a render spread over a cluster (needs a fixed view: --view, --camera or --fov; "
-                            "no video)"),
+                            "no video; a LAST past the series' end stops at its last step)"),
         command
             ->add_option("--fps", options->fps,
                          "Series: frames per second of the video, 0.1 to 240 (0.5 shows each step for 2 s)")

@@ -64,6 +64,10 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     int width = 0, height = 0, legendMargin = 0;
     const std::size_t first = request.firstStep, last = std::min(request.lastStep, count - 1);
     IVIS_CHECK(first < count);  // checkSeriesOutputFiles said so
+    if (request.lastStep >= count)  // the last job of a render spread in equal parts asks past the end
+        core::logInfo("--frames " + std::to_string(first) + ":" + std::to_string(request.lastStep) +
+                      ": the series has " + std::to_string(count) + " steps; rendering " + std::to_string(first) +
+                      ":" + std::to_string(last));
     // The readable rule is chosen on step 0, so that every job of a render draws alike.
     std::optional<optimize::ReadableSetting> readable;
     auto chooseReadableRule = [&] {

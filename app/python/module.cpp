@@ -15,6 +15,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
 
 namespace py = pybind11;
@@ -30,8 +31,8 @@ py::dict arrayDict(const core::ArrayInfo& a)
     d["association"] = core::associationName(a.association);
     d["type"] = core::valueTypeName(a.type);
     d["components"] = a.components;
-    d["min"] = a.min;
-    d["max"] = a.max;
+    d["min"] = std::isnan(a.min) ? py::object(py::none()) : py::object(py::float_(a.min));  // None: no finite value
+    d["max"] = std::isnan(a.max) ? py::object(py::none()) : py::object(py::float_(a.max));
     d["nan_count"] = a.nanCount;
     d["shown_by_default"] = a.shownByDefault;
     return d;

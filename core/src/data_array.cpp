@@ -43,7 +43,7 @@ std::pair<double, double> finiteRange(const DataArray& array, int component)
         lo = std::min(lo, v);
         hi = std::max(hi, v);
     }
-    if (lo > hi) return {0.0, 0.0};
+    if (lo > hi) return {std::nan(""), std::nan("")};
     return {lo, hi};
 }
 

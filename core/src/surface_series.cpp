@@ -115,9 +115,22 @@ SurfaceField SurfaceSeries::load(std::size_t index)
     // The first step shows its default array as loadSurface shows it, and says so, until a load
     // whose notes are printed has said it; the other steps, and the first after that, name it.
     SurfaceLoadOptions options = mOptions;
-    if ((index > 0 || mFirstNotesSaid) && !mDefaultArray.empty()) options.read.scalarName = mDefaultArray;
+    const bool namesDefault = (index > 0 || mFirstNotesSaid) && !mDefaultArray.empty();
+    if (namesDefault) options.read.scalarName = mDefaultArray;
     options.frame = frame();
-    SurfaceField field = loadSurface(step.path, options);
+    SurfaceField field;
+    try {
+        field = loadSurface(step.path, options);
+    } catch (const InputError& e) {
+        // The user named no array: say which step lacks the one shown and where it came from.
+        const std::string missing = step.path + ": no array '" + mDefaultArray + "'; ";
+        if (!namesDefault || std::string(e.what()).rfind(missing, 0) != 0) throw;
+        const std::size_t colon = mDefaultArray.find(':');
+        throw InputError(step.path + ": step " + std::to_string(index) + " has no " + mDefaultArray.substr(0, colon) +
+                         " array '" + mDefaultArray.substr(colon + 1) +
+                         "', which the first step shows by default (--scalar chooses one every step has); " +
+                         std::string(e.what()).substr(missing.size()));
+    }
     const Bounds3 box = bounds(field.mesh);
     double reach = 0.0;
     for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(box.lo[a]), std::abs(box.hi[a])});

@@ -90,4 +90,21 @@ std::vector<double> VtkLegacyCursor::values(std::size_t count, ValueType type, c
     return out;
 }
 
+std::vector<double> VtkLegacyCursor::bits(std::size_t count, const std::string& what)
+{
+    if (!mBinary) {
+        std::vector<double> out = values(count, ValueType::Float64, what);
+        for (double& v : out) v = v != 0.0 ? 1.0 : 0.0;
+        return out;
+    }
+    const std::size_t bytes = count / 8 + (count % 8 != 0 ? 1 : 0);
+    if (bytes > mData.size() - mPos)
+        failInput(mPath, what + ": the file ends within its " + std::to_string(count) + " binary bits");
+    std::vector<double> out(count);
+    for (std::size_t i = 0; i < count; ++i)
+        out[i] = (static_cast<unsigned char>(mData[mPos + i / 8]) >> (7 - i % 8)) & 1u;
+    mPos += bytes;
+    return out;
+}
+
 }  // namespace ivis::core::detail

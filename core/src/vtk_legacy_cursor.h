@@ -32,6 +32,9 @@ public:
 
     /// Reads @a count values of @a type; @a what names them in messages ("POINTS").
     std::vector<double> values(std::size_t count, ValueType type, const std::string& what);
+    /// Reads @a count values of a `bit` array as 0 and 1: ASCII numbers (any but 0 is 1, as VTK
+    /// reads them) or, in binary, bits packed eight to a byte, the first in the highest bit.
+    std::vector<double> bits(std::size_t count, const std::string& what);
 
 private:
     const std::string& mPath;

@@ -1,5 +1,5 @@
 // VTK legacy .vtk files, ASCII or binary (big-endian): POLYDATA and UNSTRUCTURED_GRID with every
-// numeric POINT_DATA and CELL_DATA array, cells in the classic layout ("n size" with a count
+// numeric or bit POINT_DATA and CELL_DATA array, cells in the classic layout ("n size" with a count
 // before each cell) or the one of file version 5 (OFFSETS and CONNECTIVITY).
 #include <ivis/core/mesh_formats.h>
 
@@ -121,6 +121,23 @@ private:
         return *t;
     }
 
+    /// A data array's type: a numeric type, or VTK's `bit`, whose 0s and 1s are read as UInt8.
+    struct ArrayType {
+        ValueType type = ValueType::UInt8;
+        bool bits = false;
+    };
+
+    ArrayType arrayType(const std::vector<std::string>& w, std::size_t i) const
+    {
+        if (i < w.size() && lower(w[i]) == "bit") return {ValueType::UInt8, true};
+        return {type(w, i), false};
+    }
+
+    std::vector<double> arrayValues(std::size_t count, ArrayType t, const std::string& what)
+    {
+        return t.bits ? mIn.bits(count, what) : mIn.values(count, t.type, what);
+    }
+
     void section(const std::vector<std::string>& w)
     {
         const std::string key = lower(w[0]);
@@ -234,12 +251,12 @@ private:
         mActiveScalarsRead = false;
     }
 
-    void addArray(std::string name, ValueType type, std::size_t components, const std::string& what)
+    void addArray(std::string name, ArrayType type, std::size_t components, const std::string& what)
     {
         if (!mAssociation) fail(what + " comes before POINT_DATA or CELL_DATA");
         if (components < 1 || components > 1024) fail(what + ": " + std::to_string(components) + " components");
-        DataArray array{decodeName(name), *mAssociation, type, int(components), {}};
-        array.values = mIn.values(mTuples * std::size_t(components), type, what);
+        DataArray array{decodeName(name), *mAssociation, type.type, int(components), {}};
+        array.values = arrayValues(mTuples * std::size_t(components), type, what);
         mMesh.arrays.push_back(std::move(array));
     }
 
@@ -248,18 +265,18 @@ private:
         if (w.size() < 2) fail(w[0] + ": the line ends before the array's name");
         const std::string what = w[0] + " " + w[1];
         if (key == "color_scalars") {
-            addArray(w[1], mIsBinary ? ValueType::UInt8 : ValueType::Float32, count(w, 2), what);
+            addArray(w[1], {mIsBinary ? ValueType::UInt8 : ValueType::Float32}, count(w, 2), what);
             // vtkDataReader sets COLOR_SCALARS as the section's scalars too, the first of either.
             mMesh.arrays.back().activeScalars = !mActiveScalarsRead;
             mActiveScalarsRead = true;
         } else if (key == "texture_coordinates") {
-            addArray(w[1], type(w, 3), count(w, 2), what);
+            addArray(w[1], arrayType(w, 3), count(w, 2), what);
         } else if (key == "scalars") {
             const std::size_t components = w.size() > 3 ? count(w, 3) : 1;
             if (components < 1 || components > 4)
                 fail(what + ": " + std::to_string(components) + " components (1 to 4 allowed)");
             if (mIn.peekWord() == "lookup_table") mIn.words();
-            addArray(w[1], type(w, 2), components, what);
+            addArray(w[1], arrayType(w, 2), components, what);
             // vtkDataReader makes the section's first SCALARS (or COLOR_SCALARS) its active scalars.
             mMesh.arrays.back().activeScalars = !mActiveScalarsRead;
             mActiveScalarsRead = true;
@@ -268,7 +285,7 @@ private:
                                    : key == "tensors6"                            ? 6
                                    : key == "global_ids" || key == "pedigree_ids" ? 1
                                                                                   : 3;
-            addArray(w[1], type(w, 2), components, what);
+            addArray(w[1], arrayType(w, 2), components, what);
         }
     }
 
@@ -294,9 +311,9 @@ private:
             if (header.size() < 4) fail(what + ": the line ends before its data type");
             const std::size_t components = count(header, 1), tuples = count(header, 2);
             if (components < 1 || components > 1024) fail(what + ": " + std::to_string(components) + " components");
-            const ValueType t = type(header, 3);
+            const ArrayType t = arrayType(header, 3);
             if (!mAssociation) {
-                mIn.values(components * tuples, t, what);
+                arrayValues(components * tuples, t, what);
             } else {
                 if (tuples != mTuples) {
                     fail(what + " has " + std::to_string(tuples) + " tuples, but " +

@@ -295,6 +295,9 @@ TEST_F(CliSeries, BadSeriesWriteNothing)
     const std::string lacking = input("lacking.pvd");
     test::writeFile(lacking, collection({arteryStep("0200"), arteryStep("0400"), tet}));
     expectRejected(render(lacking, "--scalar pressure"), {tet + ": no array 'pressure'; available: wss (point)"});
+    // With no array chosen, the message says which array the first step showed by default.
+    expectRejected(render(lacking), {tet + ": step 2 has no point array 'pressure', which the first step shows by "
+                                           "default (--scalar chooses one every step has); available: wss (point)"});
     const std::string broken = input("broken.vtp");
     test::writeFile(broken, "<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"3\"");
     const std::string late = input("late.pvd");

@@ -24,7 +24,12 @@ TEST(DataArray, ComponentsMagnitudeAndRange)
     EXPECT_EQ(s.defaultComponent(), 0);
     EXPECT_EQ(s.at(0, kMagnitude), 2.0);  // the length of a one-component tuple
     EXPECT_EQ(finiteRange(s, s.defaultComponent()), std::make_pair(-2.0, 7.0));
-    EXPECT_EQ(finiteRange(DataArray{}, 0), std::make_pair(0.0, 0.0));
+    // No finite value: NaN, which `info` prints as such (0 to 0 would read as a constant array).
+    const auto [lo, hi] = finiteRange(DataArray{}, 0);
+    EXPECT_TRUE(std::isnan(lo) && std::isnan(hi));
+    const DataArray allNan{"n", Association::Point, ValueType::Float32, 1, {nan, nan}};
+    EXPECT_TRUE(std::isnan(finiteRange(allNan, 0).first));
+    EXPECT_TRUE(std::isnan(finiteRange(allNan, 0).second));
 }
 
 TEST(DataArray, TypeNamesAndSizes)

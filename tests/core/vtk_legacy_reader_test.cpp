@@ -221,6 +221,34 @@ TEST(VtkLegacyReader, MetadataAfterEveryFieldArrayAsParaViewWritesIt)
     }
 }
 
+// A `bit` array (as vtkBitArray writes it): ASCII 0s and 1s, or in binary bits packed eight to a
+// byte with the first in the highest bit, the last byte padded; read as UInt8 0 and 1, and the
+// array after it read from where the bits end.
+TEST(VtkLegacyReader, BitArraysAreReadAsZerosAndOnes)
+{
+    const std::vector<double> flags = {1, 0, 1, 1, 0, 0, 0, 1, 0, 1, 1, 1};  // 2 x 6 bits: 0xB1, then 0x70
+    for (const bool binary : {false, true}) {
+        LegacyFile file(binary, "POLYDATA");
+        file.section("POINTS 6 float", {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 0, 0, 2, 1, 0}, "float")
+            .section("POLYGONS 4 16", {3, 0, 1, 2, 3, 1, 3, 2, 3, 1, 4, 3, 3, 4, 5, 3}, "int")
+            .line("POINT_DATA 6");
+        if (binary) {
+            file.line("SCALARS flags bit 2\nLOOKUP_TABLE default\n\xB1\x70");
+        } else {
+            file.section("SCALARS flags bit 2\nLOOKUP_TABLE default", {1, 0, 7, 1, 0, 0, 0, 1, 0, 1, 1, 1}, "int");
+        }
+        file.section("SCALARS after float 1\nLOOKUP_TABLE default", {0, 1, 2, 3, 4, 5}, "float");
+        TempDir dir;
+        writeFile(dir.file("b.vtk"), file.str());
+        const SurfaceField field = readMesh(dir.file("b.vtk"), {"flags:0", ""});
+        ASSERT_EQ(field.arrays.size(), 2u) << binary;
+        EXPECT_EQ(field.arrays[0].type, ValueType::UInt8);
+        EXPECT_EQ(field.arrays[0].components, 2);
+        EXPECT_EQ(field.arrays[0].values, flags) << binary << " (ASCII: any number but 0 is 1, as VTK reads it)";
+        EXPECT_EQ(field.arrays[1].values, (std::vector<double>{0, 1, 2, 3, 4, 5})) << binary;
+    }
+}
+
 TEST(VtkLegacyReader, UnstructuredTetrahedraShowTheirBoundary)
 {
     // Two tetrahedra sharing the face 1-2-3 (vtk_xml_reader_test's), in both encodings.
@@ -307,6 +335,8 @@ TEST(VtkLegacyReader, TruncatedData)
               "POINTS: the file ends within its 24 binary values");
     EXPECT_EQ(readError(dir, binary.substr(0, binary.find("LINES 1 3\n") + 10 + 5)),
               "LINES: the file ends within its 3 binary values");
+    EXPECT_EQ(readError(dir, binary.substr(0, binary.find("CELL_DATA 8\n")) + "CELL_DATA 8\nSCALARS b bit 2\n\xff"),
+              "SCALARS b: the file ends within its 16 binary bits");
 }
 
 TEST(VtkLegacyReader, CountsAndIndicesThatDisagreeWithTheData)

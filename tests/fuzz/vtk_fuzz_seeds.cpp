@@ -1,6 +1,6 @@
 // Writes the seed corpora of the VTK fuzz targets: `vtk_fuzz_seeds FOLDER` fills FOLDER/vtk_xml
 // with a small cube in every XML layout and two tetrahedra as UnstructuredGrid, FOLDER/vtk_legacy
-// with legacy files (ASCII and binary, classic and offset cell lists, a grid) and FOLDER/pvd with a
+// with legacy files (ASCII and binary, classic and offset cell lists, a bit array, a grid) and FOLDER/pvd with a
 // collection of two steps.
 #include "vtk_files.h"
 
@@ -92,7 +92,7 @@ int main(int argc, char** argv)
               be({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1}, "Float32") +
               "POLYGONS 3 8\nOFFSETS vtktypeint64\n" + be({0, 4, 8}, "Int64") + "CONNECTIVITY vtktypeint64\n" +
               be({0, 3, 2, 1, 4, 5, 6, 7}, "Int64") + "CELL_DATA 2\nSCALARS c int\nLOOKUP_TABLE default\n" +
-              be({5, 6}, "Int32"));
+              be({5, 6}, "Int32") + "SCALARS flags bit 3\nLOOKUP_TABLE default\n\xb4");
     write(legacy / "grid.vtk",
           "# vtk DataFile Version 3.0\ntets\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 float\n"
           "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS 3 14\n4 0 1 2 3\n4 1 3 2 4\n3 1 2 4\nCELL_TYPES 3\n10\n10\n5\n"

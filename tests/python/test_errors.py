@@ -141,6 +141,14 @@ def test_points_no_face_uses_are_left_out_with_their_data(sphere):
     assert len(nan.vertices) == len(v)
 
 
+def test_an_array_of_nan_only_has_no_range(sphere):
+    """As `info --json` gives null: a range of 0 to 0 would read as a constant array."""
+    v, f, h = sphere
+    mesh = inversevis.Mesh(v, f, point_data={"h": h, "gone": np.full(len(v), np.nan)})
+    gone = next(a for a in mesh.arrays if a["name"] == "gone")
+    assert (gone["min"], gone["max"], gone["nan_count"]) == (None, None, len(v))
+
+
 def test_arrays_in_either_byte_order_are_the_same_mesh(sphere):
     v, f, h = sphere
     native = inversevis.Mesh(v, f, point_data={"h": h}, cell_data={"c": np.arange(len(f), dtype=np.int32)})

@@ -52,7 +52,7 @@ const char* valueTypeName(ValueType type);
 std::size_t valueTypeSize(ValueType type);
 
 /// @brief Finite (min, max) of component @a component (or kMagnitude) over all tuples, ignoring
-///        NaN and infinities; {0, 0} when there is none.
+///        NaN and infinities; {NaN, NaN} when there is none (an array of NaN only).
 std::pair<double, double> finiteRange(const DataArray& array, int component);
 
 }  // namespace ivis::core

@@ -44,8 +44,8 @@ struct ArrayInfo {
     Association association = Association::Point;
     ValueType type = ValueType::Float32;
     int components = 1;
-    double min = 0.0;  ///< finite minimum of the default component (DataArray::defaultComponent)
-    double max = 0.0;
+    double min = 0.0;  ///< finite minimum of the default component (DataArray::defaultComponent); NaN if none
+    double max = 0.0;  ///< finite maximum of the same; NaN if none
     std::size_t nanCount = 0;  ///< tuples with a NaN component
     bool shownByDefault = false;  ///< the array shown when none is chosen (core::defaultArray)
 };
