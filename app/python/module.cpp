@@ -169,6 +169,21 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
              py::arg("path"),
              "Of optimize(views=N > 1): writes the views side by side with one colour bar as PNG, as `inversevis "
              "optimize --views N -o` writes it.")
+        .def(
+            "probe", [](const python::Picture& p, int x, int y) { return python::fromJson(p.probe(x, y)); },
+            py::arg("x"), py::arg("y"),
+            "What pixel (x, y) shows, x a column and y a row of the layers from the top left (rgba's colour bar "
+            "margin not counted), as `render --probe X,Y` reports it: a dict with pixel, region ('background', "
+            "'direct', 'indirect'), and for a surface point its position (the mesh's units), cell, scalar and "
+            "view (a theta and phi that show it directly); a curved ray's pixel also its launch (seed, ring, "
+            "speed, bend, drawn, refusal). Raises ValueError for a pixel outside the picture.")
+        .def("tear_map", &python::Picture::tearMap,
+             "(height, width, 3) uint8: the picture in grey with its tears in red (the indirect pixels whose "
+             "neighbour's surface point lies further than the coherence measure's 0.1), as `render --tear-map`.")
+        .def("unseen_map", &python::Picture::unseenMap,
+             "(height, 2 * height, 3) uint8: the surface seen from the picture's side (left) and the opposite "
+             "side (right), red where no pixel of the picture shows it, as `render --unseen-map` (it measures the "
+             "picture again, as measure=True does).")
         .def("_repr_png_", &python::Picture::png)
         .def("__repr__", [](const python::Picture& p) {
             return "<inversevis.Picture " + std::to_string(p.result.image.width()) + "x" +
@@ -177,9 +192,9 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
 
     m.def(
         "render",
-        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, bool cellToPoint, int hotSpots,
-           bool capHoles, const std::optional<double>& theta, const std::optional<double>& phi,
-           const std::optional<double>& fov, bool ortho, const std::optional<py::dict>& camera,
+        [](const std::shared_ptr<python::Mesh>& mesh, const std::string& method, const py::object& scalar,
+           bool cellToPoint, int hotSpots, bool capHoles, const std::optional<double>& theta,
+           const std::optional<double>& phi, const std::optional<double>& fov, bool ortho, const std::optional<py::dict>& camera,
            const std::pair<int, int>& size, const std::string& colormap,
            const std::optional<std::pair<double, double>>& range,
            const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,
@@ -258,9 +273,10 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
 
     m.def(
         "optimize",
-        [](python::Mesh& mesh, const std::string& method, const py::object& scalar, bool cellToPoint, int hotSpots,
-           bool capHoles, const std::string& energy, const std::optional<float>& gamma, int optRes, int ascentRes,
-           int steps, const py::int_& seed, int finalists, const std::optional<int>& hotSpotViews,
+        [](const std::shared_ptr<python::Mesh>& mesh, const std::string& method, const py::object& scalar,
+           bool cellToPoint, int hotSpots, bool capHoles, const std::string& energy,
+           const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed,
+           int finalists, const std::optional<int>& hotSpotViews,
            const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,
            const std::string& colormap, const std::optional<std::pair<double, double>>& range,
            const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,

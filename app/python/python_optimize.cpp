@@ -69,8 +69,10 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
 
 }  // namespace
 
-std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request, const py::object& progress)
+std::shared_ptr<Picture> optimizeMesh(const std::shared_ptr<Mesh>& drawn, const OptimizeRequest& request,
+                                      const py::object& progress)
 {
+    Mesh& mesh = *drawn;
     PictureLook look = pictureLook(request.look);
     const render::MethodPtr method = look.options.method;
     const app::OptimizationOptions settings = optimizationOptions(request, method);
@@ -127,6 +129,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
             made->camera = camera;
             made->look = look.options;
             made->load = request.look.load;
+            made->mesh = drawn;
+            made->volume = look.volume;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*best.method);
             made->measures = app::measuresJson(measured, coherence, measure.reveal);
@@ -161,6 +165,8 @@ std::shared_ptr<Picture> optimizeMesh(Mesh& mesh, const OptimizeRequest& request
                     view->look = look.options;
                     view->look.method = set.views[k].method;
                     view->load = made->load;
+                    view->mesh = drawn;
+                    view->volume = look.volume;
                     view->meshUnits = made->meshUnits;
                     view->method = render::methodToJson(*set.views[k].method);
                     view->measures = set.json.at("views").at(k);

@@ -1,16 +1,34 @@
 #include "python_picture.h"
 
+#include "python_call.h"
+#include "python_mesh.h"
+
+#include "../json_output.h"
+#include "../probe_report.h"
 #include "../view_file.h"
 
 #include <ivis/core/errors.h>
 #include <ivis/core/file_extension.h>
 #include <ivis/core/image_io.h>
+#include <ivis/optimize/coherence.h>
 
 #include <cstring>
 
 namespace py = pybind11;
 
 namespace ivis::python {
+namespace {
+
+/// @a image's pixels as a height x width x 3 uint8 array, sRGB (as its PNG holds them).
+py::array rgbArray(const core::Image& image)
+{
+    const std::vector<std::uint8_t> pixels = core::srgbPixels(image, false);
+    py::array_t<std::uint8_t> out({py::ssize_t(image.height()), py::ssize_t(image.width()), py::ssize_t(3)});
+    std::memcpy(out.mutable_data(), pixels.data(), pixels.size());
+    return std::move(out);
+}
+
+}  // namespace
 
 py::array Picture::rgba() const
 {
@@ -62,6 +80,46 @@ void Picture::saveViews(const std::string& path) const
     if (views.empty()) throw ValueError("save_views: this picture has no several views (optimize(views=N), N > 1)");
     if (core::lowerCaseExtension(path) != ".png") throw ValueError(path + ": the several views' figure is saved as .png");
     core::writePng(viewsFigure, path, transparent);
+}
+
+nlohmann::json Picture::probe(int x, int y) const
+{
+    const int width = result.image.width(), height = result.image.height();
+    if (x < 0 || y < 0 || x >= width || y >= height)
+        throw ValueError("probe(" + std::to_string(x) + ", " + std::to_string(y) + "): outside the " +
+                         std::to_string(width) + "x" + std::to_string(height) + " picture (x 0 to " +
+                         std::to_string(width - 1) + ", y 0 to " + std::to_string(height - 1) + ")");
+    nlohmann::json probed;
+    runReleased(
+        [&](core::Interrupter& interrupter) {
+            const std::shared_ptr<const Scene> scene = mesh->scene(load, volume, &interrupter);
+            const app::ProbeReport report = app::probeReport(*scene->render, look.method, camera, width, height,
+                                                             glm::ivec2(x, y), look.adaptive);
+            probed = app::probeJson(report, scene->field);
+        },
+        py::none());
+    return probed;
+}
+
+py::array Picture::tearMap() const
+{
+    std::vector<char> torn;
+    optimize::mappingCoherence(result.layers, optimize::kCoherenceDistance, &torn);
+    return rgbArray(optimize::tearMap(result.image, torn));
+}
+
+py::array Picture::unseenMap() const
+{
+    core::Image unseen;
+    runReleased(
+        [&](core::Interrupter& interrupter) {
+            const std::shared_ptr<const Scene> scene = mesh->scene(load, volume, &interrupter);
+            const double coherence = optimize::mappingCoherence(result.layers).value();
+            app::pictureMeasuresJson(*scene->render, camera, look.method, look.height, look.shading.scale.range,
+                                     coherence, result.layers, &unseen);
+        },
+        py::none());
+    return rgbArray(unseen);
 }
 
 py::bytes Picture::png() const

@@ -8,6 +8,7 @@
 #include <ivis/core/similarity.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/render/renderer.h>
+#include <ivis/vdb/surface_volume.h>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
@@ -18,6 +19,8 @@
 #include <vector>
 
 namespace ivis::python {
+
+class Mesh;
 
 /// @brief A rendered picture and what made it.
 struct Picture {
@@ -30,6 +33,8 @@ struct Picture {
     nlohmann::json optimization;  ///< of optimize(): the search's best view, energies and visited views (null for render())
     render::RenderOptions look;   ///< what it was rendered with (size, method as drawn, colours, legend)
     core::SurfaceLoadOptions load;  ///< what it shows: the scalar asked for ("": the default), hot spots, caps
+    std::shared_ptr<Mesh> mesh;     ///< the mesh drawn, whose scene probe() and unseen_map() trace again
+    vdb::VolumeOptions volume;      ///< the volume it was drawn on
     std::vector<std::shared_ptr<Picture>> views;  ///< of optimize(views=N > 1): each view's picture, the best first
     core::Image viewsFigure;      ///< of optimize(views=N > 1): the views side by side with one colour bar
 
@@ -46,6 +51,18 @@ struct Picture {
     ///        writes one, through a temporary name: `render --view` and the viewer show the picture.
     /// @throw InputError when it cannot be written
     void saveView(const std::string& path) const;
+    /// @brief What pixel (@a x, @a y) of the picture (a column and row of its layers, from the top
+    ///        left; rgba's colour bar margin not counted) shows, as `render --probe X,Y` reports it.
+    ///        The GIL is released while its rays are traced again.
+    /// @throw ValueError for a pixel outside the picture
+    nlohmann::json probe(int x, int y) const;
+    /// @brief The picture in grey with its tears in red, as `render --tear-map` writes it: height x
+    ///        width x 3 uint8, sRGB.
+    pybind11::array tearMap() const;
+    /// @brief The surface seen from the picture's side and the opposite side, red where no pixel of
+    ///        the picture shows it, as `render --unseen-map` writes it (it measures the picture again:
+    ///        the GIL is released while it does): height x 2 height x 3 uint8, sRGB.
+    pybind11::array unseenMap() const;
     /// @brief The PNG file's bytes, for a notebook.
     pybind11::bytes png() const;
     /// @brief Writes the several views' figure (optimize(views=N)) as PNG, as `optimize --views -o` writes it.

@@ -140,8 +140,10 @@ void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field)
     options.scalarName = field.name;
 }
 
-std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, const py::object& progress)
+std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const RenderRequest& request,
+                                    const py::object& progress)
 {
+    Mesh& mesh = *drawn;
     PictureLook look = pictureLook(request);
     const render::RenderOptions& options = look.options;
     const render::MethodPtr method = options.method;
@@ -179,6 +181,8 @@ std::shared_ptr<Picture> renderMesh(Mesh& mesh, const RenderRequest& request, co
             made->look = picture.options;
             made->look.method = result.method;
             made->load = request.load;
+            made->mesh = drawn;
+            made->volume = look.volume;
             made->meshUnits = scene->field.normalization;
             made->method = render::methodToJson(*result.method);
             made->measures = {{"coherence", optimize::mappingCoherence(made->result.layers).value()},

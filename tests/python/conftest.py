@@ -1,7 +1,9 @@
 """Shared fixtures of the Python module's tests: a private volume cache, the command-line
 program, and a small sphere mesh written by the test itself (no shared data needed)."""
 import os
+import struct
 import subprocess
+import zlib
 
 import numpy as np
 import pytest
@@ -64,3 +66,46 @@ def sphere_file(tmp_path_factory):
     path = tmp_path_factory.mktemp("mesh") / "sphere.ply"
     write_ply(path, *uv_sphere())
     return str(path)
+
+
+def read_png(path):
+    """The pixels of an 8-bit RGB or RGBA PNG without interlacing (as the program writes them), as a
+    (height, width, channels) uint8 array: the PNG format decoded with zlib alone."""
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    at, idat = 8, b""
+    while at < len(data):
+        length, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, path
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + length
+    channels = 3 if colour == 2 else 4
+    stride = width * channels
+    raw = zlib.decompress(idat)
+    rows, up = [], [0] * stride
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)]
+        row = [0] * stride
+        for x in range(stride):
+            left = row[x - channels] if x >= channels else 0
+            corner = up[x - channels] if x >= channels else 0
+            if kind == 0:
+                predicted = 0
+            elif kind == 1:
+                predicted = left
+            elif kind == 2:
+                predicted = up[x]
+            elif kind == 3:
+                predicted = (left + up[x]) // 2
+            else:  # Paeth
+                p = left + up[x] - corner
+                pa, pb, pc = abs(p - left), abs(p - up[x]), abs(p - corner)
+                predicted = left if pa <= pb and pa <= pc else (up[x] if pb <= pc else corner)
+            row[x] = (line[x] + predicted) & 255
+        rows.append(row)
+        up = row
+    return np.array(rows, dtype=np.uint8).reshape(height, width, channels)
