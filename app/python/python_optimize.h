@@ -34,6 +34,7 @@ struct OptimizeRequest {
 
 /// @brief The best view of @a mesh that @a request asks for, rendered; its measures and the
 ///        search's result (Picture::optimization). The GIL is released while it runs.
-std::shared_ptr<Picture> optimizeMesh(const std::shared_ptr<Mesh>& drawn, const OptimizeRequest& request, const pybind11::object& progress);
+std::shared_ptr<Picture> optimizeMesh(const std::shared_ptr<Mesh>& drawn, const OptimizeRequest& request,
+                                      const pybind11::object& progress);
 
 }  // namespace ivis::python

@@ -90,6 +90,7 @@ struct PictureLook {
 PictureLook pictureLook(const RenderRequest& request);
 
 /// @brief The picture of @a mesh that @a request asks for, the GIL released while it is made.
-std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const RenderRequest& request, const pybind11::object& progress);
+std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const RenderRequest& request,
+                                    const pybind11::object& progress);
 
 }  // namespace ivis::python
