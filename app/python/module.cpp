@@ -10,6 +10,7 @@
 #include <ivis/core/camera_json.h>
 #include <ivis/core/data_array.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/hot_spots.h>
 #include <ivis/optimize/readable_rule.h>
 #include <ivis/render/method_registry.h>
 
@@ -65,14 +66,24 @@ std::string scalarName(const py::object& scalar)
     return scalar.cast<std::string>();
 }
 
+/// hotspots= as a count: a bool (hotspots=True would draw one) and anything but a whole number are refused.
+int hotSpotCount(const py::object& hotSpots)
+{
+    if (py::isinstance<py::bool_>(hotSpots) || !py::isinstance<py::int_>(hotSpots))
+        throw py::type_error("hotspots must be a number of hot spots (0 to " + std::to_string(core::kMaxHotSpots) +
+                             "), got " + py::str(hotSpots.get_type().attr("__name__")).cast<std::string>());
+    return hotSpots.cast<int>();
+}
+
 /// What a picture shows of its mesh: scalar=, cell_to_point=, hotspots= and cap_holes=, as `render`'s
 /// --scalar, --cell-to-point, --hotspots and --cap-holes (checked against each other by Mesh::shown).
-core::SurfaceLoadOptions shownBy(const py::object& scalar, bool cellToPoint, int hotSpots, bool capHoles)
+core::SurfaceLoadOptions shownBy(const py::object& scalar, bool cellToPoint, const py::object& hotSpots,
+                                  bool capHoles)
 {
     core::SurfaceLoadOptions load;
     load.read.scalarName = scalarName(scalar);
     load.read.cellToPoint = cellToPoint;
-    load.hotSpots = hotSpots;
+    load.hotSpots = hotSpotCount(hotSpots);
     load.capHoles = capHoles;
     return load;
 }
@@ -193,9 +204,10 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
     m.def(
         "render",
         [](const std::shared_ptr<python::Mesh>& mesh, const std::string& method, const py::object& scalar,
-           bool cellToPoint, int hotSpots, bool capHoles, const std::optional<double>& theta,
-           const std::optional<double>& phi, const std::optional<double>& fov, bool ortho,
-           const std::optional<py::dict>& camera, const std::pair<int, int>& size, const std::string& colormap,
+           bool cellToPoint, const py::object& hotSpots, bool capHoles,
+           const std::optional<double>& theta, const std::optional<double>& phi, const std::optional<double>& fov,
+           bool ortho, const std::optional<py::dict>& camera, const std::pair<int, int>& size,
+           const std::string& colormap,
            const std::optional<std::pair<double, double>>& range,
            const std::optional<std::pair<double, double>>& rangePercentile, bool symmetric, bool log, bool invert,
            const std::string& units, int volumeResolution, double minCoherence, bool fullTrace, bool legend,
@@ -274,7 +286,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
     m.def(
         "optimize",
         [](const std::shared_ptr<python::Mesh>& mesh, const std::string& method, const py::object& scalar,
-           bool cellToPoint, int hotSpots, bool capHoles, const std::string& energy,
+           bool cellToPoint, const py::object& hotSpots, bool capHoles, const std::string& energy,
            const std::optional<float>& gamma, int optRes, int ascentRes, int steps, const py::int_& seed,
            int finalists, const std::optional<int>& hotSpotViews,
            const std::optional<std::pair<double, double>>& start, int views, const std::pair<int, int>& size,

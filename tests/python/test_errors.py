@@ -72,6 +72,8 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(hotspots=2, scalar="h"), ValueError, "scalar= and hotspots= exclude each other"),
         (dict(hotspots=1, cell_to_point=True), ValueError, "cell_to_point= and hotspots= exclude each other"),
         (dict(hotspots=7), ValueError, "hotspots 7 must be 0 to 6"),
+        (dict(hotspots=True), TypeError, "hotspots must be a number of hot spots (0 to 6), got bool"),
+        (dict(hotspots="2"), TypeError, "hotspots must be a number of hot spots (0 to 6), got str"),
         (dict(scalar="h", cell_to_point=True), inversevis.InputError,
          "cell_to_point averages a cell array; 'h' is a point array"),
         (dict(log=True, symmetric=True), ValueError, "log and symmetric exclude each other"),
