@@ -109,9 +109,9 @@ const char* formatName(MeshFormat format)
 
 MeshLayout checkMeshLayout(const std::string& path, MeshFormat format, std::string& data)
 {
-    if (format == MeshFormat::Ply) return {preparePly(path, data), false};
-    if (format == MeshFormat::Off) return {checkOff(path, data), false};
-    if (format == MeshFormat::Obj) return {checkObj(path, data), false};
+    if (format == MeshFormat::Ply) return preparePly(path, data);
+    if (format == MeshFormat::Off) return {checkOff(path, data), false, {}};
+    if (format == MeshFormat::Obj) return {checkObj(path, data), false, {}};
     return checkStl(path, data);
 }
 

@@ -17,10 +17,12 @@ namespace ivis::core::detail {
 // huge vertex count in an OFF/PLY face makes it push billions of handles. Each check walks the
 // file as OpenMesh will, so that every file reaching OpenMesh has counts that match its content.
 
-/// Checks a PLY file and returns its face count. OpenMesh starts binary data 12 bytes (14 with
-/// CRLF) past the end of the last header token before end_header, which is off when a comment
-/// line or trailing blanks precede the data; @a data then gets that canonical tail.
-std::size_t preparePly(const std::string& path, std::string& data);
+/// Checks a PLY file and returns its face count and 8-bit ASCII properties. OpenMesh starts binary
+/// data 12 bytes (14 with CRLF) past the end of the last header token before end_header, which is
+/// off when a comment line or trailing blanks precede the data; @a data then gets that canonical
+/// tail. An ASCII file's 8-bit properties (other than colours) are declared `short` in @a data's
+/// header, since OpenMesh would read their values as characters (MeshLayout::asciiPlyBytes).
+MeshLayout preparePly(const std::string& path, std::string& data);
 
 /// ASCII OFF as OpenMesh reads it: header line, counts, per vertex 3 (6 with N) numbers and the
 /// rest of the line, per face a length and that many indices (and the rest of the line with C).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -45,6 +46,8 @@ struct PlyProperty {
     PlyType type = PlyType::Float32;     ///< value type (entry type of a list)
     std::optional<PlyType> countType;    ///< set for list properties
     PlyRole role = PlyRole::Custom;
+    std::size_t typeAt = 0;              ///< where the header names its value type (not for lists)
+    std::size_t typeLength = 0;
 };
 
 struct PlyElement {
@@ -121,7 +124,8 @@ PlyLayout parsePlyHeader(const std::string& path, const std::string& data)
         } else if (keyword == "property") {
             if (layout.elements.empty()) bad("property before any element");
             PlyProperty p;
-            const std::string first(in.token());
+            const std::string_view firstToken = in.token();
+            const std::string first(firstToken);
             if (first == "list") {
                 const std::string count(in.token());
                 const std::string entry(in.token());
@@ -134,13 +138,20 @@ PlyLayout parsePlyHeader(const std::string& path, const std::string& data)
                 if (!plyType(entry)) bad("unknown property type '" + entry + "'");
                 p.type = *plyType(entry);
             } else {
-                const std::string second(in.token());
+                const std::string_view secondToken = in.token();
+                const std::string second(secondToken);
+                const auto typeToken = [&](std::string_view token) {
+                    p.typeAt = std::size_t(token.data() - data.data());
+                    p.typeLength = token.size();
+                };
                 if (plyType(first)) {
                     p.type = *plyType(first);
                     p.name = second;
+                    typeToken(firstToken);
                 } else if (plyType(second)) {
                     p.type = *plyType(second);
                     p.name = first;
+                    typeToken(secondToken);
                 } else {
                     bad("unknown property type in 'property " + first + " " + second + "'");
                 }
@@ -187,8 +198,8 @@ void checkPlySupport(const std::string& path, const PlyLayout& layout)
             if (!layout.ascii && p.role == PlyRole::Color && p.type == PlyType::Float64) {
                 bad(what + " cannot be double in binary PLY");
             }
-            if (layout.ascii && p.role == PlyRole::Custom && plySize(p.type) == 1) {
-                bad(what + " has an 8-bit type, which ASCII PLY reading does not support");
+            if (layout.ascii && p.role == PlyRole::Custom && plySize(p.type) == 1 && p.countType) {
+                bad("list " + what + " has an 8-bit type, which ASCII PLY reading does not support");
             }
         }
         if (e.name == "face") break;  // OpenMesh stops after the faces
@@ -217,7 +228,16 @@ void checkPlyValue(const std::string& path, std::string_view token, const PlyPro
     if (p.role == PlyRole::Position) return checkCoordinate(path, token, where);
     const bool asFloat = p.role == PlyRole::Vector ||
                          (p.role == PlyRole::Color ? p.type == PlyType::Float32 : isPlyFloat(p.type));
-    if (asFloat ? isDecimal(token) : isInteger(token)) return;
+    if (asFloat ? isDecimal(token) : isInteger(token)) {
+        if (p.role != PlyRole::Custom || plySize(p.type) != 1) return;
+        // An 8-bit property is read as a 16-bit one (preparePly): its values must fit its own type.
+        const long long v = std::strtoll(std::string(token).c_str(), nullptr, 10);
+        const bool isSigned = p.type == PlyType::Int8;
+        if (v >= (isSigned ? -128 : 0) && v <= (isSigned ? 127 : 255)) return;
+        failInput(path, where + " has value '" + std::string(token) + "' for the " +
+                            (isSigned ? "8-bit signed" : "8-bit unsigned") + " property '" + p.name + "' (" +
+                            (isSigned ? "-128 to 127" : "0 to 255") + ")");
+    }
     const bool nonFinite = parseFloatToken(token).kind == FloatToken::NonFinite;
     failInput(path, where + " has " + (nonFinite ? "a non-finite" : "an invalid") + " value '" +
                         std::string(token) + "' for property '" + p.name + "'" +
@@ -286,19 +306,34 @@ void checkPlyBody(const std::string& path, const std::string& data, const PlyLay
 
 }  // namespace
 
-std::size_t preparePly(const std::string& path, std::string& data)
+MeshLayout preparePly(const std::string& path, std::string& data)
 {
     const PlyLayout layout = parsePlyHeader(path, data);
     checkPlySupport(path, layout);
     checkPlyBody(path, data, layout);
+    MeshLayout out;
     if (!layout.ascii && data.compare(layout.headerTokens, layout.bodyOffset - layout.headerTokens,
                                       "\nend_header\n") != 0) {
         data = data.substr(0, layout.headerTokens) + "\nend_header\n" + data.substr(layout.bodyOffset);
     }
+    std::string header;  // an ASCII header with its 8-bit properties declared `short`
+    std::size_t copied = 0;
     for (const PlyElement& e : layout.elements) {
-        if (e.name == "face") return e.count;
+        for (const PlyProperty& p : e.properties) {
+            if (!layout.ascii || p.role != PlyRole::Custom || plySize(p.type) != 1 || p.countType) continue;
+            header.append(data, copied, p.typeAt - copied).append("short");
+            copied = p.typeAt + p.typeLength;
+            if (e.name == "vertex" || e.name == "face")  // other elements OpenMesh reads past
+                out.asciiPlyBytes.push_back({e.name == "face" ? Association::Cell : Association::Point, p.name,
+                                             p.type == PlyType::Int8 ? ValueType::Int8 : ValueType::UInt8});
+        }
+        if (e.name == "face") {
+            out.facesInFile = e.count;
+            break;
+        }
     }
-    return 0;
+    if (copied > 0) data = header + data.substr(copied);
+    return out;
 }
 
 }  // namespace ivis::core::detail

@@ -10,7 +10,7 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
     if (data.size() >= 84) {
         std::uint32_t count = 0;
         for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(data[80 + i]);
-        if (84 + 50 * std::uint64_t(count) == data.size()) return {count, true};
+        if (84 + 50 * std::uint64_t(count) == data.size()) return {count, true, {}};
     }
     const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
     if (lowercase(start) != "solid") {
@@ -40,7 +40,7 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
     }
     if (lowercase(std::string(last.substr(0, 8))) != "endsolid")
         failInput(path, "not a valid STL mesh (the file is truncated: it does not end with endsolid)");
-    return {facets, false};
+    return {facets, false, {}};
 }
 
 }  // namespace ivis::core::detail

@@ -230,6 +230,9 @@ RawMesh readOpenMeshFile(const std::string& path, MeshFormat format, std::string
     }
     if (!ok) failInput(path, "not a valid " + formatLabel(format) + " mesh");
     RawMesh raw = importer.take();
+    for (const MeshLayout::BytePlyProperty& p : layout.asciiPlyBytes)
+        for (DataArray& array : raw.arrays)
+            if (array.name == p.name && array.association == p.association) array.type = p.type;
     // Faces OpenMesh skipped itself (OBJ/STL faces with repeated corners) count as degenerate.
     raw.skippedFaces = layout.facesInFile > raw.faceCount() ? layout.facesInFile - raw.faceCount() : 0;
     return raw;

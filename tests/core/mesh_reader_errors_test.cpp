@@ -120,8 +120,8 @@ TEST(MeshReader, UnsupportedPlyLayoutsAreRejected)
     const std::string path = dir.file("u.ply");
     const std::string header = xyzPlyHeader(3, 0);
     const std::size_t afterZ = header.find("element face");
-    writeFile(path, header.substr(0, afterZ) + "property uchar flag\n" + header.substr(afterZ));
-    expectReadError(path, "8-bit type");
+    writeFile(path, header.substr(0, afterZ) + "property list uchar uchar flags\n" + header.substr(afterZ));
+    expectReadError(path, "list property 'flags' of element 'vertex' has an 8-bit type");
     writeFile(path, "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty int x\nproperty int y\n"
                     "property int z\nend_header\n" + std::string(36, '\0'));
     expectReadError(path, "must be float or double");

@@ -117,6 +117,48 @@ TEST(MeshReader, BinaryPlyHeaderEndingInACommentOrBlanks)
     }
 }
 
+// OpenMesh's ASCII reader reads an 8-bit value as one character ("200" as '2', then "00" as the
+// next value): such properties are read as 16-bit and keep their type, and a value beyond their
+// type is refused, naming it.
+TEST(MeshReader, AsciiPly8BitPropertiesAreReadAsTheirNumbers)
+{
+    const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                               "property float z\nproperty uchar flag\nproperty float after\nelement face 4\n"
+                               "property list uchar int vertex_indices\nproperty int8 tag\nend_header\n";
+    const int flags[4] = {0, 9, 200, 255}, tags[4] = {-128, 5, 127, -1};
+    std::string body;
+    for (int v = 0; v < 4; ++v)
+        body += std::to_string(kTetraXyz[v][0]) + " " + std::to_string(kTetraXyz[v][1]) + " " +
+                std::to_string(kTetraXyz[v][2]) + " " + std::to_string(flags[v]) + " " + std::to_string(0.5 * v) + "\n";
+    for (int f = 0; f < 4; ++f)
+        body += "3 " + std::to_string(kTetraFaces[f][0]) + " " + std::to_string(kTetraFaces[f][1]) + " " +
+                std::to_string(kTetraFaces[f][2]) + " " + std::to_string(tags[f]) + "\n";
+    TempDir dir;
+    writeFile(dir.file("bytes.ply"), header + body);
+    const SurfaceField field = readMesh(dir.file("bytes.ply"), {"flag", ""});
+    ASSERT_EQ(field.arrays.size(), 3u);
+    EXPECT_EQ(field.arrays[0].name, "flag");
+    EXPECT_EQ(field.arrays[0].type, ValueType::UInt8);
+    EXPECT_EQ(field.arrays[0].values, (std::vector<double>{0, 9, 200, 255}));
+    EXPECT_EQ(field.arrays[1].values, (std::vector<double>{0, 0.5, 1, 1.5}));  // read from where the flags end
+    EXPECT_EQ(field.arrays[2].name, "tag");
+    EXPECT_EQ(field.arrays[2].association, Association::Cell);
+    EXPECT_EQ(field.arrays[2].type, ValueType::Int8);
+    EXPECT_EQ(field.arrays[2].values, (std::vector<double>{-128, 5, 127, -1}));
+    EXPECT_EQ(field.values, (std::vector<float>{0, 9, 200, 255}));
+
+    std::string wide = body;
+    wide.replace(wide.find(" 200 "), 5, " 256 ");
+    writeFile(dir.file("wide.ply"), header + wide);
+    try {
+        readMesh(dir.file("wide.ply"));
+        ADD_FAILURE() << "a uchar value of 256 was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), dir.file("wide.ply") + ": vertex 2 has value '256' for the 8-bit unsigned "
+                                                               "property 'flag' (0 to 255)");
+    }
+}
+
 TEST(MeshReader, AsciiPlyFloatAndDoublePropertiesAreExact)
 {
     TempDir dir;

@@ -94,6 +94,10 @@ int main(int argc, char** argv)
     write(root / "off" / "tetra.off", off);
     write(root / "ply" / "ascii.ply", asciiPly);
     write(root / "ply" / "binary.ply", binaryPly);
+    write(root / "ply" / "bytes.ply",  // 8-bit properties in ASCII, which OpenMesh is given as 16-bit
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+          "property uchar flag\nelement face 1\nproperty list uchar int vertex_indices\nproperty char tag\n"
+          "end_header\n0 0 0 200\n1 0 0 7\n0 1 0 255\n3 0 1 2 -5\n");
     write(root / "stl" / "ascii.stl", asciiStl);
     write(root / "stl" / "binary.stl", binaryStl());
     write(root / "scalar_file" / "values.txt", "0.5 1e3\n-2\tnan\n");

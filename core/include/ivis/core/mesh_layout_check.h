@@ -5,11 +5,14 @@
 ///       "<path>: <problem>"; vertex and face numbers count from 0, OBJ ones from 1.
 #pragma once
 
+#include <ivis/core/data_array.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ivis::core::detail {
 
@@ -18,8 +21,16 @@ enum class MeshFormat { Obj, Off, Ply, Stl };
 
 /// Facts about a checked file that its OpenMesh import needs.
 struct MeshLayout {
+    /// An ASCII PLY property of an 8-bit type, declared 16-bit to OpenMesh (whose ASCII reader
+    /// reads an 8-bit value as one character): its array takes the file's type back.
+    struct BytePlyProperty {
+        Association association = Association::Point;  ///< vertex: Point, face: Cell
+        std::string name;
+        ValueType type = ValueType::UInt8;
+    };
     std::size_t facesInFile = 0;  ///< faces (STL facets) the file declares or contains
     bool binaryStl = false;       ///< STL whose size matches its binary triangle count
+    std::vector<BytePlyProperty> asciiPlyBytes;
 };
 
 /// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from
