@@ -1,6 +1,7 @@
 // `inversevis info MESH`: what a mesh file (or a time series) carries.
 #include "commands.h"
 
+#include <ivis/core/json_text.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/mesh_reader.h>
 #include <ivis/core/pvd_reader.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 
@@ -58,13 +60,32 @@ nlohmann::json arrayJson(const core::ArrayInfo& a)
             {"shown_by_default", a.shownByDefault}};
 }
 
-/// @a text followed by spaces up to @a width characters (UTF-8 characters, not bytes, so that a
-/// name such as "Druck (kPa)" or "τ_w" keeps the columns after it aligned).
+/// How many terminal columns the UTF-8 character starting with code point @a c takes: two for
+/// the East Asian wide and full-width ranges (CJK, Hangul, full-width forms), else one.
+std::size_t columnsOf(std::uint32_t c)
+{
+    const bool wide = (c >= 0x1100 && c <= 0x115F) || (c >= 0x2E80 && c <= 0xA4CF) || (c >= 0xAC00 && c <= 0xD7A3) ||
+                      (c >= 0xF900 && c <= 0xFAFF) || (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFF60) ||
+                      (c >= 0xFFE0 && c <= 0xFFE6) || (c >= 0x20000 && c <= 0x3FFFD);
+    return wide ? 2 : 1;
+}
+
+/// @a text followed by spaces up to @a width terminal columns (UTF-8 characters, not bytes, and
+/// wide ones as two, so that a name such as "τ_w" or "壁面せん断応力" keeps the columns after it aligned).
 std::string padded(const std::string& text, std::size_t width)
 {
-    const std::size_t characters = std::size_t(std::count_if(
-        text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-    return text + std::string(characters < width ? width - characters : 0, ' ');
+    std::size_t columns = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char lead = static_cast<unsigned char>(text[i]);
+        std::size_t length = lead < 0x80 ? 1 : lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+        for (std::size_t k = 1; k < length; ++k)  // a byte that is not UTF-8 (Latin-1) shows as one
+            if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 1;
+        std::uint32_t c = length == 1 ? lead : lead & (0x7F >> length);
+        for (std::size_t k = 1; k < length; ++k) c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+        columns += columnsOf(c);
+        i += length;
+    }
+    return text + std::string(columns < width ? width - columns : 0, ' ');
 }
 
 /// One array as `info` prints it, on a line of its own.
@@ -96,8 +117,8 @@ void printTimeSeries(const std::string& path, bool json)
             entry["steps"] = a.steps;
             arrayList.push_back(entry);
         }
-        std::cout << nlohmann::json{{"path", path}, {"format", "pvd"}, {"time_steps", list}, {"arrays", arrayList}}.dump(2)
-                  << "\n";
+        const nlohmann::json out = {{"path", path}, {"format", "pvd"}, {"time_steps", list}, {"arrays", arrayList}};
+        std::cout << core::jsonText(out, 2) << "\n";
         return;
     }
     std::cout << path << " (pvd, " << steps.size() << (steps.size() == 1 ? " time step)\n" : " time steps)\n");
@@ -130,7 +151,7 @@ void printJson(const core::MeshInfo& info)
                                 {"mesh_units", core::meshUnitsJson(core::normalizingTransform(info.bounds))},
                                 {"arrays", arrays},
                                 {"notes", info.report.notes}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << core::jsonText(out, 2) << "\n";
 }
 
 void printText(const core::MeshInfo& info)

@@ -1,5 +1,6 @@
 #include "json_output.h"
 
+#include <ivis/core/json_text.h>
 #include <ivis/core/atomic_file.h>
 #include <ivis/optimize/hot_spot_rule.h>
 #include <ivis/optimize/sampling_bound.h>
@@ -130,6 +131,9 @@ void writeTextFile(const std::string& text, const std::string& path)
     });
 }
 
-void writeJsonFile(const nlohmann::json& json, const std::string& path) { writeTextFile(json.dump(2) + "\n", path); }
+void writeJsonFile(const nlohmann::json& json, const std::string& path)
+{
+    writeTextFile(core::jsonText(json, 2) + "\n", path);
+}
 
 }  // namespace ivis::app

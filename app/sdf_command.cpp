@@ -3,10 +3,11 @@
 #include "mesh_options.h"
 #include "output_files.h"
 
-#include <ivis/vdb/cache_folder.h>
+#include <ivis/core/json_text.h>
 #include <ivis/core/log.h>
 #include <ivis/core/progress_bar.h>
 #include <ivis/render/method_registry.h>
+#include <ivis/vdb/cache_folder.h>
 #include <ivis/vdb/volume_cache.h>
 
 #include <nlohmann/json.hpp>
@@ -70,7 +71,7 @@ Command addSdfCommand(CLI::App& app)
             {"unsigned_distance", volume.unsignedDistance},
             {"triangles", volume.triangleCount}};
         if (options->json) {
-            std::cout << out.dump(2) << "\n";
+            std::cout << core::jsonText(out, 2) << "\n";
             return;
         }
         core::logInfo(path + ": " + vdb::toString(outcome) + ", N=" + std::to_string(volume.options.resolution) +

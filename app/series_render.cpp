@@ -14,16 +14,26 @@
 #include <ivis/render/method_json.h>
 #include <ivis/render/renderer.h>
 
-#include <cstdio>
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace ivis::app {
 
 void parseFrameRange(const std::string& text, SeriesRenderRequest& request)
 {
-    unsigned long first = 0, last = 0;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%lu:%lu%c", &first, &last, &extra) != 2 || first > last)
+    // Digits only: sscanf's %lu took "-1" as the largest number and skipped spaces and a '+'.
+    auto index = [](std::string_view digits, std::uint32_t& value) {
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        return !digits.empty() && ec == std::errc() && end == digits.data() + digits.size() &&
+               std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    const std::size_t colon = text.find(':');
+    std::uint32_t first = 0, last = 0;
+    if (colon == std::string::npos || !index(std::string_view(text).substr(0, colon), first) ||
+        !index(std::string_view(text).substr(colon + 1), last) || first > last)
         throw InputError("--frames '" + text + "': expected FIRST:LAST, step indices from 0 with FIRST <= LAST (e.g. 0:99)");
     request.firstStep = first;
     request.lastStep = last;
@@ -42,9 +52,9 @@ void checkSeriesOutputFiles(const SeriesRenderRequest& request, std::size_t step
 {
     IVIS_CHECK(steps > 0);
     if (request.firstStep >= steps)
-        throw InputError("--frames " + std::to_string(request.firstStep) + ":" + std::to_string(request.lastStep) +
+        throw InputError("--frames " + std::to_string(request.firstStep) + ":" + std::to_string(*request.lastStep) +
                          ": the series has " + std::to_string(steps) + " steps (0 to " + std::to_string(steps - 1) + ")");
-    for (std::size_t k = request.firstStep; k <= std::min(request.lastStep, steps - 1); ++k) {
+    for (std::size_t k = request.firstStep; k <= std::min(request.lastStep.value_or(steps - 1), steps - 1); ++k) {
         const std::string frame = " (frame " + std::to_string(k) + ")";
         others.push_back({framePath(request.png, k, steps), "-o" + frame, {}});
         if (!request.exr.empty()) others.push_back({framePath(request.exr, k, steps), "--exr" + frame, {}});
@@ -62,10 +72,10 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     core::Camera camera;
     nlohmann::json frames = nlohmann::json::array();
     int width = 0, height = 0, legendMargin = 0;
-    const std::size_t first = request.firstStep, last = std::min(request.lastStep, count - 1);
+    const std::size_t first = request.firstStep, last = std::min(request.lastStep.value_or(count - 1), count - 1);
     IVIS_CHECK(first < count);  // checkSeriesOutputFiles said so
-    if (request.lastStep >= count)  // the last job of a render spread in equal parts asks past the end
-        core::logInfo("--frames " + std::to_string(first) + ":" + std::to_string(request.lastStep) +
+    if (request.lastStep && *request.lastStep >= count)  // the last job of equal parts may ask past the end
+        core::logInfo("--frames " + std::to_string(first) + ":" + std::to_string(*request.lastStep) +
                       ": the series has " + std::to_string(count) + " steps; rendering " + std::to_string(first) +
                       ":" + std::to_string(last));
     // The readable rule is chosen on step 0, so that every job of a render draws alike.

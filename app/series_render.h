@@ -40,7 +40,7 @@ struct SeriesRenderRequest {
     /// on the series' first step (step 0, also for a job's part) and replaces the method's.
     double minCoherence = 0.0;
     std::size_t firstStep = 0;                     ///< the steps rendered: firstStep..lastStep (a job's part)
-    std::size_t lastStep = ~std::size_t(0);        ///< inclusive; past the end = to the last step
+    std::optional<std::size_t> lastStep;           ///< inclusive (past the end: to the last step); none: the last
 };
 
 /// @brief Parses --frames "FIRST:LAST" (step indices from 0, inclusive) into @a request.

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace py = pybind11;
 using namespace ivis;
@@ -66,13 +67,34 @@ std::string scalarName(const py::object& scalar)
     return scalar.cast<std::string>();
 }
 
+/// An integer argument as Python's operator.index takes it (an int, a numpy integer), clamped to
+/// the range of long long beyond it (where the caller's range check refuses it); a bool, or
+/// anything else, raises TypeError naming @a name and @a what it must be.
+long long wholeNumber(const py::object& value, const std::string& name, const std::string& what)
+{
+    const bool isBool = py::isinstance<py::bool_>(value) ||
+                        py::str(value.get_type().attr("__name__")).cast<std::string>().rfind("bool", 0) == 0;
+    if (isBool || !PyIndex_Check(value.ptr()))
+        throw py::type_error(name + " must be " + what + ", got " +
+                             py::str(value.get_type().attr("__name__")).cast<std::string>());
+    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+    if (!index) throw py::error_already_set();
+    int overflow = 0;
+    const long long number = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+    if (overflow > 0) return std::numeric_limits<long long>::max();
+    if (overflow < 0) return std::numeric_limits<long long>::min();
+    return number;
+}
+
 /// hotspots= as a count: a bool (hotspots=True would draw one) and anything but a whole number are refused.
 int hotSpotCount(const py::object& hotSpots)
 {
-    if (py::isinstance<py::bool_>(hotSpots) || !py::isinstance<py::int_>(hotSpots))
-        throw py::type_error("hotspots must be a number of hot spots (0 to " + std::to_string(core::kMaxHotSpots) +
-                             "), got " + py::str(hotSpots.get_type().attr("__name__")).cast<std::string>());
-    return hotSpots.cast<int>();
+    const long long count =
+        wholeNumber(hotSpots, "hotspots", "a number of hot spots (0 to " + std::to_string(core::kMaxHotSpots) + ")");
+    if (count < 0 || count > core::kMaxHotSpots)
+        throw ValueError("hotspots " + py::str(hotSpots).cast<std::string>() + " must be 0 to " +
+                         std::to_string(core::kMaxHotSpots));
+    return int(count);
 }
 
 /// What a picture shows of its mesh: scalar=, cell_to_point=, hotspots= and cap_holes=, as `render`'s
@@ -181,7 +203,12 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
              "Of optimize(views=N > 1): writes the views side by side with one colour bar as PNG, as `inversevis "
              "optimize --views N -o` writes it.")
         .def(
-            "probe", [](const python::Picture& p, int x, int y) { return python::fromJson(p.probe(x, y)); },
+            "probe",
+            [](const python::Picture& p, const py::object& x, const py::object& y) {
+                const long long column = wholeNumber(x, "x", "a pixel's column (an integer)");
+                const long long row = wholeNumber(y, "y", "a pixel's row (an integer)");
+                return python::fromJson(p.probe(column, row));
+            },
             py::arg("x"), py::arg("y"),
             "What pixel (x, y) shows, x a column and y a row of the layers from the top left (rgba's colour bar "
             "margin not counted), as `render --probe X,Y` reports it: a dict with pixel, region ('background', "

@@ -3,7 +3,6 @@
 #include "python_errors.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/core/hot_spots.h>
 #include <ivis/core/show_array.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/vdb/cache_folder.h>
@@ -238,9 +237,6 @@ py::dict Mesh::data(core::Association association) const
 core::SurfaceField Mesh::shown(const core::SurfaceLoadOptions& load) const
 {
     const std::string& scalar = load.read.scalarName;
-    if (load.hotSpots < 0 || load.hotSpots > core::kMaxHotSpots)
-        throw ValueError("hotspots " + std::to_string(load.hotSpots) + " must be 0 to " +
-                         std::to_string(core::kMaxHotSpots));
     if (load.hotSpots > 0 && !scalar.empty())
         throw ValueError("scalar= and hotspots= exclude each other: the hot spots are the scalar shown");
     if (load.hotSpots > 0 && load.read.cellToPoint)

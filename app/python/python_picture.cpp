@@ -82,7 +82,7 @@ void Picture::saveViews(const std::string& path) const
     core::writePng(viewsFigure, path, transparent);
 }
 
-nlohmann::json Picture::probe(int x, int y) const
+nlohmann::json Picture::probe(long long x, long long y) const
 {
     const int width = result.image.width(), height = result.image.height();
     if (x < 0 || y < 0 || x >= width || y >= height)
@@ -94,7 +94,7 @@ nlohmann::json Picture::probe(int x, int y) const
         [&](core::Interrupter& interrupter) {
             const std::shared_ptr<const Scene> scene = mesh->scene(load, volume, &interrupter);
             const app::ProbeReport report = app::probeReport(*scene->render, look.method, camera, width, height,
-                                                             glm::ivec2(x, y), look.adaptive);
+                                                             glm::ivec2(int(x), int(y)), look.adaptive);
             probed = app::probeJson(report, scene->field);
         },
         py::none());

@@ -55,7 +55,7 @@ struct Picture {
     ///        left; rgba's colour bar margin not counted) shows, as `render --probe X,Y` reports it.
     ///        The GIL is released while its rays are traced again.
     /// @throw ValueError for a pixel outside the picture
-    nlohmann::json probe(int x, int y) const;
+    nlohmann::json probe(long long x, long long y) const;
     /// @brief The picture in grey with its tears in red, as `render --tear-map` writes it: height x
     ///        width x 3 uint8, sRGB.
     pybind11::array tearMap() const;

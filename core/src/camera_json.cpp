@@ -1,3 +1,4 @@
+#include <ivis/core/json_text.h>
 #include <ivis/core/camera_json.h>
 
 #include <ivis/core/atomic_file.h>
@@ -88,7 +89,7 @@ void writeCameraJson(const Camera& camera, const std::string& path, const Simila
     const nlohmann::json json = cameraFileJson(camera, meshUnits);
     writeAtomically(path, [&](const std::string& temporary) {
         std::ofstream out(temporary);
-        out << json.dump(2) << "\n";
+        out << jsonText(json, 2) << "\n";
         if (!out) throw std::runtime_error("write failed");
     });
 }

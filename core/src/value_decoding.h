@@ -18,4 +18,10 @@ std::vector<double> valuesFromBytes(const char* bytes, std::size_t count, ValueT
 /// Parses a whole token as a number ("nan", "inf" and a leading '+' allowed); false when it is not one.
 bool parseNumber(std::string_view token, double& value);
 
+/// Fails "<path>: <what>: value <i> (<v>) does not fit the array's type <Type>" unless @a array's type holds each
+/// of its values: any number for a float type, an integer within its range for an integer type
+/// (what VTK's stream reading that type reads whole: an ASCII "0.5" in an Int32 array, or "-1" in
+/// a UInt8 one, is not). Binary data always holds.
+void checkValuesFitType(const std::string& path, const std::string& what, const DataArray& array);
+
 }  // namespace ivis::core::detail

@@ -3,6 +3,7 @@
 // before each cell) or the one of file version 5 (OFFSETS and CONNECTIVITY).
 #include <ivis/core/mesh_formats.h>
 
+#include "value_decoding.h"
 #include "vtk_cells.h"
 #include "vtk_legacy_cursor.h"
 #include "vtk_xml_data_array.h"
@@ -257,6 +258,7 @@ private:
         if (components < 1 || components > 1024) fail(what + ": " + std::to_string(components) + " components");
         DataArray array{decodeName(name), *mAssociation, type.type, int(components), {}};
         array.values = arrayValues(mTuples * std::size_t(components), type, what);
+        checkValuesFitType(mPath, what, array);
         mMesh.arrays.push_back(std::move(array));
     }
 

@@ -2,6 +2,7 @@
 // numeric PointData and CellData array.
 #include <ivis/core/mesh_formats.h>
 
+#include "value_decoding.h"
 #include "vtk_cells.h"
 #include "vtk_xml_data_array.h"
 
@@ -160,6 +161,7 @@ private:
                 continue;
             }
             DataArray array = readVtkXmlDataArray(mPath, what, node, mEncoding, tuples, declaredBy);
+            checkValuesFitType(mPath, what, array);
             array.name = name;
             array.association = association;
             array.activeScalars = !activeFound && !active.empty() && name == active;

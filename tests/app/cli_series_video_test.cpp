@@ -111,7 +111,9 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
 {
     const std::string common = "render " + quoted(pvd()) + " --volume-res 48 --res 48x48 --fov 60 --theta 70 --phi 30 "
                                "--no-video --min-coherence 0.3 --cache-dir " + quoted(output(""));
-    ASSERT_EQ(test::runCli(common + " -o " + quoted(output("whole.png"))).status, 0);
+    const test::CliResult whole = test::runCli(common + " -o " + quoted(output("whole.png")));
+    ASSERT_EQ(whole.status, 0) << whole.err;
+    EXPECT_EQ(whole.err.find("--frames"), std::string::npos) << whole.err;  // not asked, not said
     for (const char* range : {"0:1", "2:9"}) {
         const test::CliResult job = test::runCli(common + " --frames " + range + " -o " + quoted(output("job.png")) +
                                                  " --stats-json " + quoted(output("job.json")));
@@ -127,7 +129,9 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
         const std::string suffix = "_000" + std::to_string(k) + ".png";
         EXPECT_EQ(core::readPng(output("job" + suffix)).pixels(), core::readPng(output("whole" + suffix)).pixels()) << k;
     }
-    expectBadInput(test::runCli(common + " --frames 3:1 -o " + quoted(output("bad.png"))), {"--frames '3:1'"});
+    for (const char* bad : {"3:1", "0:-1", "+1:2", "1: 2", "1", "0:99999999999"})
+        expectBadInput(test::runCli(common + " --frames '" + bad + "' -o " + quoted(output("bad.png"))),
+                       {"--frames '" + std::string(bad) + "': expected FIRST:LAST"});
     expectBadInput(test::runCli(common + " --frames 7:9 -o " + quoted(output("bad.png"))), {"the series has 5 steps"});
     expectBadInput(test::runCli("render " + quoted(pvd()) + " --frames 0:1 -o " + quoted(output("bad.png"))),
                    {"--frames: every job must use one camera"});

@@ -320,6 +320,11 @@ TEST(VtkLegacyReader, HeadersDatasetsAndKeywords)
     EXPECT_EQ(readError(dir, replaced(cube, "POINTS 8 float", "POINTS eight float")), "POINTS: 'eight' is not a count");
     EXPECT_EQ(readError(dir, replaced(cube, "VECTORS velocity float", "COLOR_SCALARS c 4000000000")),
               "COLOR_SCALARS c: 4000000000 components");
+    // ASCII values an integer array's type does not hold (VTK's stream would stop inside them).
+    EXPECT_EQ(readError(dir, replaced(cube, "cell_id 1 8 int\n0 ", "cell_id 1 8 int\n-0.5 ")),
+              "FIELD array cell_id: value 0 (-0.5) does not fit the array's type Int32");
+    EXPECT_EQ(readError(dir, replaced(cube, "cell_id 1 8 int\n0 ", "cell_id 1 8 unsigned_char\n-1 ")),
+              "FIELD array cell_id: value 0 (-1) does not fit the array's type UInt8");
 }
 
 TEST(VtkLegacyReader, TruncatedData)

@@ -160,6 +160,8 @@ TEST(VtkXmlReader, CountsThatDisagreeWithTheData)
     EXPECT_EQ(readError(dir, replaced(text, "0 3 2 1 ", "0 3 2 1.5 ")),
               "Polys connectivity: value 1.5 at position 3 is not an index");
     EXPECT_EQ(readError(dir, replaced(text, "0 3 2 1 ", "0 3 2 one ")), "Polys connectivity: 'one' is not a number");
+    EXPECT_EQ(readError(dir, replaced(text, "0 1 2 3 4 5 6 7 ", "0 1 2.5 3 4 5 6 7 ", "cell_id")),
+              "CellData array 'cell_id': value 2 (2.5) does not fit the array's type Int32");
     EXPECT_EQ(readError(dir, replaced(text, "NumberOfComponents=\"3\"", "NumberOfComponents=\"2\"", "Name=\"Points\"")),
               "Points: the data holds 12 tuples, but NumberOfPoints says 8");
     EXPECT_EQ(readError(dir, replaced(text, "NumberOfComponents=\"3\"", "NumberOfComponents=\"5\"", "Name=\"Points\"")),

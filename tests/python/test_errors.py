@@ -74,6 +74,9 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(hotspots=7), ValueError, "hotspots 7 must be 0 to 6"),
         (dict(hotspots=True), TypeError, "hotspots must be a number of hot spots (0 to 6), got bool"),
         (dict(hotspots="2"), TypeError, "hotspots must be a number of hot spots (0 to 6), got str"),
+        (dict(hotspots=np.bool_(True)), TypeError, "got bool"),
+        (dict(hotspots=2**64), ValueError, "hotspots 18446744073709551616 must be 0 to 6"),
+        (dict(hotspots=np.int64(-1)), ValueError, "hotspots -1 must be 0 to 6"),
         (dict(scalar="h", cell_to_point=True), inversevis.InputError,
          "cell_to_point averages a cell array; 'h' is a point array"),
         (dict(log=True, symmetric=True), ValueError, "log and symmetric exclude each other"),
@@ -88,6 +91,7 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         assert words in str(refused.value), arguments
     with pytest.raises(TypeError):
         inversevis.render(mesh, size="big")
+    assert inversevis.render(mesh, "front", hotspots=np.int64(2), size=(40, 40)).measures["pixels_direct"] > 0
 
 
 def test_colours_of_a_scalar_the_mesh_does_not_show_are_refused_as_the_cli_refuses_them(sphere, tmp_path):
