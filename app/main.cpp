@@ -7,6 +7,7 @@
 #include <ivis/core/log.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -48,6 +49,10 @@ int main(int argc, char** argv)
     } catch (const ivis::Cancelled& e) {
         std::cerr << "inversevis: " << e.what() << "\n";
         return 130;
+    } catch (const std::filesystem::filesystem_error& e) {  // a path the system refuses: too long, not permitted
+        std::cerr << "inversevis: error: " << (e.path1().empty() ? std::string("a path") : e.path1().string()) << ": "
+                  << e.code().message() << "\n";
+        return 2;
     } catch (const std::bad_alloc&) {  // a picture or volume larger than the memory (outputs not yet renamed)
         std::cerr << "inversevis: error: out of memory: a smaller --res, --spp or --volume-res needs less\n";
         return 2;

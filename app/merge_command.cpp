@@ -24,20 +24,57 @@
 namespace ivis::app {
 namespace {
 
-/// The results object of an evaluate --json file.
+/// Why @a entry (of method @a method) is not one evaluate writes, or "": a known method, its
+/// measures numbers from 0 to 1, its seconds keyed by resolutions.
+std::string entryProblem(const std::string& method, const nlohmann::json& entry)
+{
+    const std::vector<std::string> methods = render::methodNames();
+    if (std::find(methods.begin(), methods.end(), method) == methods.end()) return "no method is named " + method;
+    if (!entry.is_object() || !entry.contains("seconds") || !entry.at("seconds").is_object())
+        return "it holds no evaluation";
+    for (const char* key : {"visibility", "front_visibility", "voxel_visibility", "paper_literal", "coherence"}) {
+        const nlohmann::json* value = entry.contains(key) ? &entry.at(key) : nullptr;
+        if (value == nullptr || !value->is_number() || !(value->get<double>() >= 0.0 && value->get<double>() <= 1.0))
+            return std::string("its ") + key + " is not a number from 0 to 1";
+    }
+    for (const auto& [resolution, seconds] : entry.at("seconds").items())
+        if (resolution.empty() || resolution.find_first_not_of("0123456789") != std::string::npos ||
+            resolution.size() > 5 || !seconds.is_number())
+            return "its seconds are not numbers keyed by resolutions";
+    return "";
+}
+
+/// The results object of an evaluate --json file, each entry checked (and its tables made once,
+/// so that anything else amiss is found here, naming the file).
 nlohmann::json readPart(const std::string& path)
 {
+    if (std::filesystem::is_directory(path)) throw InputError(path + ": a folder, not an evaluate --json file");
     std::ifstream in(path);
     if (!in) throw InputError(path + (std::filesystem::exists(path) ? ": cannot open" : ": file not found"));
     nlohmann::json part = nlohmann::json::parse(in, nullptr, false);
     if (!part.is_object()) throw InputError(path + ": not the JSON of an evaluation");
     if (part.empty()) throw InputError(path + ": holds no evaluation (an empty object)");  // made empty tables
+    ReportLayout layout;
+    std::set<int> resolutions;
     for (const auto& [stem, methods] : part.items()) {
         if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
-        for (const auto& [method, entry] : methods.items())
-            if (!entry.is_object() || !entry.contains("visibility") || !entry.contains("seconds") ||
-                !entry.at("seconds").is_object())
-                throw InputError(path + ": " + stem + ":" + method + " holds no evaluation");
+        layout.stems.push_back(stem);
+        for (const auto& [method, entry] : methods.items()) {
+            if (const std::string problem = entryProblem(method, entry); !problem.empty())
+                throw InputError(path + ": " + stem + ":" + method + " is not an evaluation's (" + problem + ")");
+            if (std::find(layout.methods.begin(), layout.methods.end(), method) == layout.methods.end())
+                layout.methods.push_back(method);
+            for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
+        }
+    }
+    layout.optResolutions.assign(resolutions.begin(), resolutions.end());
+    try {
+        evaluationMarkdown(part, layout);
+    } catch (const nlohmann::json::exception& e) {
+        const std::string why = e.what();  // "[json.exception.type_error.302] type must be ..."
+        const std::size_t bracket = why.find("] ");
+        throw InputError(path + ": not the JSON of an evaluation (" +
+                         (bracket == std::string::npos ? why : why.substr(bracket + 2)) + ")");
     }
     return part;
 }

@@ -10,11 +10,39 @@ namespace ivis::core {
 
 namespace {
 
-/// A fresh temporary name beside @a path: "<path>.tmp.<pid>.<n>".
+/// A fresh temporary name beside @a path: "<path>.tmp.<pid>.<n>", its file name cut so that the
+/// whole stays within the 255 bytes a file name may have (a name near that limit is still written).
 std::string temporaryFor(const std::string& path)
 {
     static std::atomic<int> counter{0};
-    return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    constexpr std::size_t kNameMax = 255;
+    const std::string suffix = ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    const std::filesystem::path target(path);
+    std::string name = target.filename().string();
+    if (name.size() + suffix.size() > kNameMax) name.resize(kNameMax - suffix.size());
+    return (target.parent_path() / (name + suffix)).string();
+}
+
+/// Whether @a path is a device, FIFO or socket (/dev/stdout, /dev/null, a named pipe): such a
+/// target is written to as it is, since renaming a file over it would replace it.
+bool isStream(const std::string& path)
+{
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+           !std::filesystem::is_directory(status);
+}
+
+/// Calls @a write with @a path itself (a stream: isStream); a failure names it.
+void writeStream(const std::string& path, const std::function<void(const std::string&)>& write)
+{
+    try {
+        write(path);
+    } catch (const Cancelled&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(path + ": cannot write (" + e.what() + ")");
+    }
 }
 
 /// Calls @a write with @a temporary; on failure removes it and rethrows (naming @a path).
@@ -51,6 +79,7 @@ void writeTemporary(const std::string& temporary, const std::string& path,
 
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
 {
+    if (isStream(path)) return writeStream(path, write);
     writeTemporary(temporaryFor(path), path, write, /*rename=*/true);
 }
 
@@ -64,6 +93,7 @@ AtomicFileSet::~AtomicFileSet()
 
 void AtomicFileSet::write(const std::string& path, const std::function<void(const std::string&)>& write)
 {
+    if (isStream(path)) return writeStream(path, write);  // now: a stream cannot wait for the set
     const std::string temporary = temporaryFor(path);
     writeTemporary(temporary, path, write, /*rename=*/false);
     mFiles.emplace_back(temporary, path);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,6 +93,25 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
     EXPECT_EQ(apart.status, 0) << apart.err;
     test::writeFile(output("empty.json"), "{}");
     expectBadInput(test::runCli("merge " + quoted(output("empty.json"))), {"empty.json: holds no evaluation"});
+    // Parts that are not an evaluation's: each named, none an internal error.
+    expectBadInput(test::runCli("merge " + quoted(output(""))), {": a folder, not an evaluate --json file"});
+    const std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> broken = {
+        {[](nlohmann::json& j) { j["sphere"]["front"]["visibility"] = "high"; },
+         "sphere:front is not an evaluation's (its visibility is not a number from 0 to 1)"},
+        {[](nlohmann::json& j) { j["sphere"]["front"]["visibility"] = 7.5; },
+         "sphere:front is not an evaluation's (its visibility is not a number from 0 to 1)"},
+        {[](nlohmann::json& j) { j["sphere"]["front"].erase("coherence"); },
+         "sphere:front is not an evaluation's (its coherence is not a number from 0 to 1)"},
+        {[](nlohmann::json& j) { j["sphere"]["magic"] = j["sphere"]["front"]; },
+         "sphere:magic is not an evaluation's (no method is named magic)"},
+        {[](nlohmann::json& j) { j["sphere"]["front"]["seconds"] = {{"fast", 1.0}}; },
+         "sphere:front is not an evaluation's (its seconds are not numbers keyed by resolutions)"}};
+    for (const auto& [breaking, message] : broken) {
+        nlohmann::json part = nlohmann::json::parse(std::ifstream(output("p1.json")));
+        breaking(part);
+        test::writeFile(output("broken.json"), part.dump());
+        expectBadInput(test::runCli("merge " + quoted(output("broken.json"))), {"broken.json: " + message});
+    }
     // The tables written over a part (it was replaced, status 0).
     const std::string before = test::readFile(output("p1.json"));
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " --markdown " + quoted(output("p1.json"))),

@@ -136,6 +136,10 @@ TEST_F(Cli, WritingIntoAMissingFolderLeavesNothing)
     expectBadInput(runCli("render " + quoted(mesh) + " --volume-res 48 --res 32x32 -o /nonexistent/x.png"),
                    {"/nonexistent/x.png: cannot write"});
     EXPECT_FALSE(fs::exists("/nonexistent"));
+    // A name the file system cannot hold is one line too (it was an internal error).
+    const std::string tooLong = output(std::string(251, 'a') + ".png");
+    expectBadInput(runCli("render scene:sphere --volume-res 32 --res 32x32 -o " + quoted(tooLong)),
+                   {".png.camera.json: File name too long"});
 }
 
 // ----------------------------------------------------------------------------------------------

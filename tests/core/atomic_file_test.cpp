@@ -10,7 +10,10 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <sys/stat.h>
 
 namespace ivis::core {
 namespace {
@@ -77,6 +80,30 @@ TEST(AtomicFileSet, ANestedFailureIsReportedOnce)
         EXPECT_EQ(std::string(e.what()), dir.file("a.exr") + ": cannot write (File too large.)");
     }
     EXPECT_EQ(names(dir), std::vector<std::string>{});
+}
+
+// A name near the 255-byte limit still gets a temporary beside it (its suffix used to push it
+// past the limit), and a FIFO (as /dev/stdout may be) is written to, not replaced by a file.
+TEST(WriteAtomically, ALongNameFitsAndAStreamIsWrittenAsItIs)
+{
+    TempDir dir;
+    const std::string longName = std::string(250, 'n') + ".json";
+    writeAtomically(dir.file(longName), writing("long"));
+    EXPECT_EQ(names(dir), std::vector<std::string>{longName});
+    AtomicFileSet files;
+    files.write(dir.file(longName), writing("longer"));
+    files.commit();
+    EXPECT_EQ(test::readFile(dir.file(longName)), "longer");
+
+    const std::string fifo = dir.file("pipe");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] { received = test::readFile(fifo); });
+    writeAtomically(fifo, writing("through the pipe"));
+    reader.join();
+    EXPECT_EQ(received, "through the pipe");
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo)) << "replaced by a file";
+    EXPECT_EQ(names(dir), (std::vector<std::string>{longName, "pipe"}));
 }
 
 }  // namespace

@@ -12,7 +12,8 @@ namespace ivis::core {
 
 /// @brief Calls @a write with a temporary path beside @a path, then renames it to @a path.
 ///        On any failure the temporary is removed and InputError "<path>: cannot write (<why>)" is
-///        thrown; an existing file at @a path is left untouched.
+///        thrown; an existing file at @a path is left untouched. A device, FIFO or socket at
+///        @a path (/dev/stdout, a named pipe) is written to directly instead, never replaced.
 /// @param write writes the complete content to the path it is given; throws on failure
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
@@ -26,7 +27,8 @@ public:
     /// @brief Removes the temporaries of a set that was not committed.
     ~AtomicFileSet();
 
-    /// @brief Calls @a write with a temporary path beside @a path; commit() renames it to @a path.
+    /// @brief Calls @a write with a temporary path beside @a path; commit() renames it to @a path
+    ///        (a device, FIFO or socket at @a path is written to directly, at once).
     /// @throw InputError "<path>: cannot write (<why>)" when @a write fails (its temporary removed)
     void write(const std::string& path, const std::function<void(const std::string&)>& write);
     /// @brief Renames every temporary into place, in the order written.
