@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -25,13 +26,15 @@ namespace ivis::app {
 void parseFrameRange(const std::string& text, SeriesRenderRequest& request)
 {
     // Digits only: sscanf's %lu took "-1" as the largest number and skipped spaces and a '+'.
-    auto index = [](std::string_view digits, std::uint32_t& value) {
-        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-        return !digits.empty() && ec == std::errc() && end == digits.data() + digits.size() &&
-               std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    auto index = [](std::string_view digits, std::uint64_t& value) {
+        if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+            return false;
+        if (std::from_chars(digits.data(), digits.data() + digits.size(), value).ec != std::errc())
+            value = std::numeric_limits<std::uint64_t>::max();  // more digits than 64 bits: past any end
+        return true;
     };
     const std::size_t colon = text.find(':');
-    std::uint32_t first = 0, last = 0;
+    std::uint64_t first = 0, last = 0;
     if (colon == std::string::npos || !index(std::string_view(text).substr(0, colon), first) ||
         !index(std::string_view(text).substr(colon + 1), last) || first > last)
         throw InputError("--frames '" + text + "': expected FIRST:LAST, step indices from 0 with FIRST <= LAST (e.g. 0:99)");

@@ -64,17 +64,29 @@ std::string hexColour(const glm::vec3& linear)
     return text;
 }
 
+/// @a text as XML character data: markup escaped, and each byte that does not start a UTF-8
+/// character (a Latin-1 name or --units) or is a control character XML forbids as U+FFFD.
 std::string xmlEscaped(const std::string& text)
 {
     std::string out;
-    for (const char c : text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        for (std::size_t k = 1; k < length; ++k)
+            if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 0;
+        if (length == 0 || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')) {
+            out += "\xEF\xBF\xBD";
+            ++i;
+            continue;
+        }
         switch (c) {
         case '&': out += "&amp;"; break;
         case '<': out += "&lt;"; break;
         case '>': out += "&gt;"; break;
         case '"': out += "&quot;"; break;
-        default: out += c;
+        default: out.append(text, i, length);
         }
+        i += length;
     }
     return out;
 }

@@ -10,7 +10,18 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
     if (data.size() >= 84) {
         std::uint32_t count = 0;
         for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(data[80 + i]);
-        if (84 + 50 * std::uint64_t(count) == data.size()) return {count, true, {}};
+        if (84 + 50 * std::uint64_t(count) == data.size()) {
+            // Each facet: a normal, three corners (little-endian floats), two attribute bytes.
+            for (std::uint32_t f = 0; f < count; ++f)
+                for (int k = 3; k < 12; ++k) {
+                    std::uint32_t bits = 0;
+                    const std::size_t at = 84 + 50 * std::size_t(f) + 4 * std::size_t(k);
+                    for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(data[at + i]);
+                    if ((bits & 0x7F800000u) == 0x7F800000u)  // all exponent bits: inf or NaN
+                        failInput(path, "facet " + std::to_string(f) + " has a non-finite coordinate");
+                }
+            return {count, true, {}};
+        }
     }
     const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
     if (lowercase(start) != "solid") {

@@ -114,12 +114,12 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
     const test::CliResult whole = test::runCli(common + " -o " + quoted(output("whole.png")));
     ASSERT_EQ(whole.status, 0) << whole.err;
     EXPECT_EQ(whole.err.find("--frames"), std::string::npos) << whole.err;  // not asked, not said
-    for (const char* range : {"0:1", "2:9"}) {
+    for (const char* range : {"0:1", "2:99999999999999999999999"}) {
         const test::CliResult job = test::runCli(common + " --frames " + range + " -o " + quoted(output("job.png")) +
                                                  " --stats-json " + quoted(output("job.json")));
         ASSERT_EQ(job.status, 0) << job.err;
         EXPECT_EQ(job.err.find("the series has 5 steps; rendering 2:4") != std::string::npos,
-                  std::string(range) == "2:9")
+                  std::string(range) != "0:1")
             << job.err;
         const nlohmann::json stats = nlohmann::json::parse(test::readFile(output("job.json")));
         EXPECT_GT(stats.at("readable_rule").at("value").get<double>(), 0.1001) << "loosened beyond the default: " << range;
@@ -129,7 +129,7 @@ TEST_F(CliSeries, FrameRangeJobsGiveTheFramesOfOneRender)
         const std::string suffix = "_000" + std::to_string(k) + ".png";
         EXPECT_EQ(core::readPng(output("job" + suffix)).pixels(), core::readPng(output("whole" + suffix)).pixels()) << k;
     }
-    for (const char* bad : {"3:1", "0:-1", "+1:2", "1: 2", "1", "0:99999999999"})
+    for (const char* bad : {"3:1", "0:-1", "+1:2", "1: 2", "1", "2:"})
         expectBadInput(test::runCli(common + " --frames '" + bad + "' -o " + quoted(output("bad.png"))),
                        {"--frames '" + std::string(bad) + "': expected FIRST:LAST"});
     expectBadInput(test::runCli(common + " --frames 7:9 -o " + quoted(output("bad.png"))), {"the series has 5 steps"});

@@ -167,6 +167,10 @@ TEST(ColorBar, SvgHasTheRampAndEveryLabel)
     for (const ColorBarTick& t : layOutColorBar(content, 800, 600, LegendSide::Right).ticks)
         EXPECT_NE(svg.find(">" + t.label + "<"), std::string::npos) << t.label;
     EXPECT_EQ(svg.find("</svg>"), svg.size() - 7);
+    // A Latin-1 name and units that are not UTF-8, and a control byte: U+FFFD, so the SVG stays XML.
+    const ColorBarContent latin1{"inferno", {{0.0f, 5.0f}, false, false}, "pr\xe9ssion", "\xff\x01Pa"};
+    const std::string replaced = colorBarSvg(latin1, 800, 600, LegendSide::Right);
+    EXPECT_NE(replaced.find("pr\xEF\xBF\xBDssion [\xEF\xBF\xBD\xEF\xBF\xBDPa]"), std::string::npos);
 }
 
 TEST(ColorBar, RejectsAnUnknownSide)

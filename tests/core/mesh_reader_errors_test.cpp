@@ -189,6 +189,17 @@ TEST(MeshReader, NonFiniteCoordinates)
     std::memcpy(&ply[tetraVertexByte(1, 4)], &nan, sizeof nan);  // y of vertex 1
     writeFile(dir.file("nan.ply"), ply);
     expectReadError(dir.file("nan.ply"), "vertex 1 has a non-finite coordinate");
+
+    // A binary STL of two facets, the second with a NaN corner (it said "the mesh has no triangles").
+    std::string stl(80, ' ');
+    const std::uint32_t facets = 2;
+    stl.append(reinterpret_cast<const char*>(&facets), 4);
+    for (int f = 0; f < 2; ++f) {
+        const float values[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, f == 1 ? nan : 1.0f, 0};
+        stl.append(reinterpret_cast<const char*>(values), sizeof values).append(2, '\0');
+    }
+    writeFile(dir.file("nan.stl"), stl);
+    expectReadError(dir.file("nan.stl"), "facet 1 has a non-finite coordinate");
 }
 
 TEST(MeshReader, NonNumericValues)
