@@ -7,6 +7,7 @@
 #include "output_files.h"
 
 #include <ivis/core/errors.h>
+#include <ivis/core/json_text.h>
 #include <ivis/render/method_registry.h>
 
 #include <algorithm>
@@ -71,10 +72,7 @@ nlohmann::json readPart(const std::string& path)
     try {
         evaluationMarkdown(part, layout);
     } catch (const nlohmann::json::exception& e) {
-        const std::string why = e.what();  // "[json.exception.type_error.302] type must be ..."
-        const std::size_t bracket = why.find("] ");
-        throw InputError(path + ": not the JSON of an evaluation (" +
-                         (bracket == std::string::npos ? why : why.substr(bracket + 2)) + ")");
+        throw InputError(path + ": not the JSON of an evaluation (" + core::jsonErrorWords(e) + ")");
     }
     return part;
 }

@@ -4,6 +4,7 @@
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/json_text.h>
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/json_numbers.h>
 #include <ivis/render/method_json.h>
@@ -168,12 +169,7 @@ ViewFile detail::parseViewFile(const std::string& path, const std::string& text)
     try {
         return viewFromJson(nlohmann::json::parse(text));
     } catch (const std::exception& e) {
-        std::string why = e.what();
-        std::replace(why.begin(), why.end(), '\n', ' ');  // one line, whatever the parser quotes
-        // nlohmann's "[json.exception.out_of_range.403] key 'camera' not found": the words only.
-        if (why.rfind("[json.exception.", 0) == 0 && why.find("] ") != std::string::npos)
-            why = why.substr(why.find("] ") + 2);
-        throw InputError(path + ": bad view file (" + why + ")");
+        throw InputError(path + ": bad view file (" + core::jsonErrorWords(e) + ")");
     }
 }
 

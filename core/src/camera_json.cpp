@@ -1,14 +1,15 @@
-#include <ivis/core/json_text.h>
 #include <ivis/core/camera_json.h>
 
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/json_text.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <type_traits>
 
 namespace ivis::core {
 namespace {
@@ -19,11 +20,24 @@ glm::vec<N, double> readVector(const nlohmann::json& json, const char* key, cons
 {
     if (!json.contains(key)) return fallback;
     const auto& v = json.at(key);
-    if (!v.is_array() || v.size() != N)
-        throw std::invalid_argument(std::string("'") + key + "' must be " + (N == 2 ? "[x, y]" : "[x, y, z]"));
+    if (!v.is_array() || v.size() != N || !std::all_of(v.begin(), v.end(), [](const auto& c) { return c.is_number(); }))
+        throw std::invalid_argument(std::string("'") + key + "' must be " + (N == 2 ? "[x, y]" : "[x, y, z]") +
+                                    " of numbers");
     glm::vec<N, double> vector;
     for (glm::length_t i = 0; i < N; ++i) vector[i] = v[i].get<double>();
     return vector;
+}
+
+/// The number (or, for a bool @a fallback, true or false) under @a key, or @a fallback when there is none.
+template <typename T>
+T readValue(const nlohmann::json& json, const char* key, T fallback)
+{
+    if (!json.contains(key)) return fallback;
+    const nlohmann::json& v = json.at(key);
+    if (std::is_same_v<T, bool> ? !v.is_boolean() : !v.is_number())
+        throw std::invalid_argument(std::string("'") + key + "' must be " +
+                                    (std::is_same_v<T, bool> ? "true or false" : "a number"));
+    return v.get<T>();
 }
 
 }  // namespace
@@ -51,9 +65,9 @@ Camera cameraFromJson(const nlohmann::json& json)
     camera.eye = readVector(json, "eye", camera.eye);
     camera.target = readVector(json, "target", camera.target);
     camera.up = readVector(json, "up", camera.up);
-    camera.fovYDeg = json.value("fov_y_deg", camera.fovYDeg);
-    camera.orthographic = json.value("orthographic", camera.orthographic);
-    camera.orthoHalfHeight = json.value("ortho_half_height", camera.orthoHalfHeight);
+    camera.fovYDeg = readValue(json, "fov_y_deg", camera.fovYDeg);
+    camera.orthographic = readValue(json, "orthographic", camera.orthographic);
+    camera.orthoHalfHeight = readValue(json, "ortho_half_height", camera.orthoHalfHeight);
     camera.windowCentre = readVector(json, "window_centre", camera.windowCentre);
     camera.validate();
     return camera;
@@ -71,9 +85,7 @@ Camera detail::parseCameraJson(const std::string& path, const std::string& text)
     try {
         return cameraFromJson(nlohmann::json::parse(text));
     } catch (const std::exception& e) {
-        std::string why = e.what();
-        std::replace(why.begin(), why.end(), '\n', ' ');  // one line, whatever the parser quotes
-        throw InputError(path + ": bad camera file (" + why + ")");
+        throw InputError(path + ": bad camera file (" + jsonErrorWords(e) + ")");
     }
 }
 

@@ -244,7 +244,18 @@ TEST_F(Cli, BadCameraFile)
     expectRejected(render(mesh, "--camera " + quoted(text)), {text + ": bad camera file"});
     const std::string shape = input("shape.json");
     writeFile(shape, R"({"eye": [1, 2], "target": [0, 0, 0]})");
-    expectRejected(render(mesh, "--camera " + quoted(shape)), {shape + ": bad camera file ('eye' must be [x, y, z])"});
+    expectRejected(render(mesh, "--camera " + quoted(shape)),
+                   {shape + ": bad camera file ('eye' must be [x, y, z] of numbers)"});
+    // A value of the wrong type names its key (nlohmann's "[json.exception.type_error.302] type
+    // must be number, but is string" named none).
+    writeFile(shape, R"({"eye": [0, 0, 2.5], "fov_y_deg": "wide"})");
+    expectRejected(render(mesh, "--camera " + quoted(shape)), {shape + ": bad camera file ('fov_y_deg' must be a number)"});
+    writeFile(shape, R"({"eye": [0, "0", 2.5]})");
+    expectRejected(render(mesh, "--camera " + quoted(shape)),
+                   {shape + ": bad camera file ('eye' must be [x, y, z] of numbers)"});
+    writeFile(shape, R"({"eye": [0, 0, 2.5], "orthographic": 1})");
+    expectRejected(render(mesh, "--camera " + quoted(shape)),
+                   {shape + ": bad camera file ('orthographic' must be true or false)"});
 }
 
 TEST_F(Cli, BadFlagFailsBeforeTheMeshIsReadAndLogged)
