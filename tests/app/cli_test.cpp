@@ -249,7 +249,8 @@ TEST_F(Cli, BadCameraFile)
     // A value of the wrong type names its key (nlohmann's "[json.exception.type_error.302] type
     // must be number, but is string" named none).
     writeFile(shape, R"({"eye": [0, 0, 2.5], "fov_y_deg": "wide"})");
-    expectRejected(render(mesh, "--camera " + quoted(shape)), {shape + ": bad camera file ('fov_y_deg' must be a number)"});
+    expectRejected(render(mesh, "--camera " + quoted(shape)),
+                   {shape + ": bad camera file ('fov_y_deg' must be a number)"});
     writeFile(shape, R"({"eye": [0, "0", 2.5]})");
     expectRejected(render(mesh, "--camera " + quoted(shape)),
                    {shape + ": bad camera file ('eye' must be [x, y, z] of numbers)"});
