@@ -165,7 +165,11 @@ Command addEvaluateCommand(CLI::App& app)
         ->allow_extra_args(false);
 
     return {command, [options] {
-        for (const std::string& m : options->methods) render::methodInfo(m);  // validate names first
+        for (auto m = options->methods.begin(); m != options->methods.end(); ++m) {
+            render::methodInfo(*m);  // validate names first
+            if (std::find(m + 1, options->methods.end(), *m) != options->methods.end())
+                throw InputError("--methods: " + *m + " is given twice");  // it made two equal columns
+        }
         rejectListsGivenWithSpaces(options->meshes);
         if (options->optResolutions.empty()) throw InputError("--opt-res: give at least one resolution");
         for (auto r = options->optResolutions.begin(); r != options->optResolutions.end(); ++r)

@@ -32,6 +32,8 @@ std::string readFileBytes(const std::string& path)
     }
     if (!fs::exists(status)) failInput(path, "file not found");
     if (fs::is_directory(status)) failInput(path, "is a directory, not a file");
+    // Opening a FIFO waits for a writer, and a device's size is unknown: only files are read.
+    if (!fs::is_regular_file(status)) failInput(path, "not a regular file (a pipe or device), which is not read");
 
     std::ifstream in(path, std::ios::binary);
     if (!in) failInput(path, "cannot read file (" + systemMessage(errno) + ")");

@@ -125,6 +125,8 @@ TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
                    {"inversevis: file not found, and a method's name: --methods takes them comma-separated"});
     expectBadInput(runCli("evaluate --opt-res 16 100 scene:sphere --volume-res 48"),
                    {"100: file not found, and a number: --opt-res takes them comma-separated"});
+    expectBadInput(runCli("evaluate --methods front,front scene:sphere --volume-res 48"),
+                   {"--methods: front is given twice"});
 }
 
 TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)

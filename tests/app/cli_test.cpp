@@ -42,6 +42,10 @@ TEST_F(Cli, MissingFile)
 TEST_F(Cli, UnreadableFile)
 {
     expectMeshRejected(mInputs.path(), {mInputs.path() + ": is a directory, not a file"});
+    const std::string pipe = input("mesh.ply");  // opening a FIFO would wait for a writer for ever
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    expectMeshRejected(pipe, {pipe + ": not a regular file (a pipe or device)"});
+    fs::remove(pipe);
 
     const std::string path = input("locked.obj");
     writeFile(path, kTriangleObj);

@@ -7,7 +7,8 @@
 namespace ivis::core::detail {
 
 /// The bytes of @a path.
-/// @throw InputError "<path>: file not found", "is a directory, not a file" or "cannot read file (...)"
+/// @throw InputError "<path>: file not found", "is a directory, not a file", "not a regular file
+///        (a pipe or device) ..." or "cannot read file (...)"
 std::string readFileBytes(const std::string& path);
 
 }  // namespace ivis::core::detail
