@@ -17,6 +17,8 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <string>
+#include <utility>
 
 namespace ivis::vdb {
 namespace {
@@ -227,6 +229,40 @@ TEST(MeshToLevelSet, ResultIndependentOfThreadCount)
     for (auto it = many.phi->cbeginValueOn(); it; ++it) {
         ASSERT_EQ(*it, phi.getValue(it.getCoord()));
         ASSERT_EQ(many.triangle->tree().getValue(it.getCoord()), tri.getValue(it.getCoord()));
+    }
+}
+
+// Each pass of exact closest points hears a request to stop at every leaf: counted per 64 leaves
+// of each range TBB hands out (ranges of a few leaves), a Ctrl-C went unheard for whole passes and
+// the volume was built and cached anyway.
+TEST(MeshToLevelSet, EveryPassStopsWhenAskedWithinALeaf)
+{
+    /// Asks to stop at the first poll of the pass named @a stage, and counts the polls after it.
+    class StopIn : public core::Interrupter {
+    public:
+        explicit StopIn(std::string stage) : mStage(std::move(stage)) {}
+        void start(const char* name) override { mIn = name != nullptr && std::string(name).rfind(mStage, 0) == 0; }
+        bool wasInterrupted(int) override
+        {
+            if (!mIn) return false;
+            ++polls;
+            return true;
+        }
+        std::atomic<int> polls{0};
+
+    private:
+        std::string mStage;
+        std::atomic<bool> mIn{false};
+    };
+    VolumeOptions options = atResolution(320);
+    options.farFieldResolution = 80;
+    const core::TriangleMesh mesh = core::makeSphere(3).mesh;
+    for (const char* stage : {"closest points", "far field"}) {
+        StopIn stop(stage);
+        EXPECT_THROW(buildSurfaceVolume(mesh, options, &stop), Cancelled) << stage;
+        // Each thread stops at its next leaf: a few polls, not one per leaf of the pass.
+        EXPECT_GE(stop.polls.load(), 1) << stage;
+        EXPECT_LE(stop.polls.load(), 64) << stage;
     }
 }
 

@@ -77,9 +77,10 @@ public:
     LeafPassProgress(const LeafPassProgress&) = delete;
     LeafPassProgress& operator=(const LeafPassProgress&) = delete;
 
-    /// Counts @a leaves more done; true once the pass is to stop.
+    /// Counts @a leaves more done; true once the pass is to stop (a Ctrl-C, or the interrupter asks).
     bool advance(std::size_t leaves)
     {
+        if (mStop) return true;  // the rest of the pass skips its leaves without asking again
         const std::size_t done = mDone += leaves;
         if (mInterrupter && mInterrupter->wasInterrupted(int(100 * done / mLeafCount))) mStop = true;
         return mStop;
@@ -142,9 +143,10 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
     LeafPassProgress progress(interrupter, "closest points N=" + std::to_string(volume.options.resolution),
                               leaves.leafCount());
     tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
-        std::size_t done = 0;
-        for (auto leaf = range.begin(); leaf; ++leaf, ++done) {
-            if (done % 64 == 63 && progress.advance(64)) return;
+        // Each leaf counts (the ranges TBB hands out hold a few leaves each: counted per 64 leaves
+        // of a range, a Ctrl-C went unheard for the whole pass).
+        for (auto leaf = range.begin(); leaf; ++leaf) {
+            if (progress.advance(1)) return;
             Int32Tree::LeafNodeType* triangleLeaf = volume.triangle->tree().probeLeaf(leaf->origin());
             Vec3STree::LeafNodeType* baryLeaf = volume.barycentric->tree().probeLeaf(leaf->origin());
             Vec3STree::LeafNodeType* gradientLeaf = volume.gradient->tree().probeLeaf(leaf->origin());
@@ -182,9 +184,10 @@ void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& 
     tree::LeafManager<FloatTree> leaves(phi.tree());
     LeafPassProgress progress(interrupter, "far field N=" + std::to_string(lattice.resolution), leaves.leafCount());
     tbb::parallel_for(leaves.leafRange(), [&](const tree::LeafManager<FloatTree>::LeafRange& range) {
-        std::size_t done = 0;
-        for (auto leaf = range.begin(); leaf; ++leaf, ++done) {
-            if (done % 64 == 63 && progress.advance(64)) return;
+        // Each leaf counts (the ranges TBB hands out hold a few leaves each: counted per 64 leaves
+        // of a range, a Ctrl-C went unheard for the whole pass).
+        for (auto leaf = range.begin(); leaf; ++leaf) {
+            if (progress.advance(1)) return;
             Vec3STree::LeafNodeType* gradientLeaf = gradient.tree().probeLeaf(leaf->origin());
             IVIS_CHECK(gradientLeaf);
             for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
