@@ -1,11 +1,12 @@
 // `inversevis info MESH`: what a mesh file (or a time series) carries.
 #include "commands.h"
 
-#include <ivis/core/json_text.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/json_text.h>
 #include <ivis/core/mesh_reader.h>
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/surface_source.h>
+#include <ivis/core/utf8.h>
 
 #include <nlohmann/json.hpp>
 
@@ -76,14 +77,9 @@ std::string padded(const std::string& text, std::size_t width)
 {
     std::size_t columns = 0;
     for (std::size_t i = 0; i < text.size();) {
-        const unsigned char lead = static_cast<unsigned char>(text[i]);
-        std::size_t length = lead < 0x80 ? 1 : lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
-        for (std::size_t k = 1; k < length; ++k)  // a byte that is not UTF-8 (Latin-1) shows as one
-            if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 1;
-        std::uint32_t c = length == 1 ? lead : lead & (0x7F >> length);
-        for (std::size_t k = 1; k < length; ++k) c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
-        columns += columnsOf(c);
-        i += length;
+        const std::size_t length = core::utf8Length(text, i);  // a byte that is not UTF-8 shows as one
+        columns += length == 0 ? 1 : columnsOf(core::utf8CodePoint(text, i, length));
+        i += length == 0 ? 1 : length;
     }
     return text + std::string(columns < width ? width - columns : 0, ' ');
 }

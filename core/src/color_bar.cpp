@@ -2,6 +2,7 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/font.h>
+#include <ivis/core/utf8.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,9 +72,7 @@ std::string xmlEscaped(const std::string& text)
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-        for (std::size_t k = 1; k < length; ++k)
-            if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 0;
+        const std::size_t length = utf8Length(text, i);
         if (length == 0 || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')) {
             out += "\xEF\xBF\xBD";
             ++i;

@@ -51,6 +51,37 @@ TEST_F(Cli, InfoListsPointAndCellArrays)
     EXPECT_NE(text.out.find("pressure_cell         cell   Float32  1 component"), std::string::npos) << text.out;
 }
 
+// info's columns line up in a terminal whatever the names' bytes: "τ_w" is 4 bytes in 3 columns,
+// "壁面" 6 bytes in 4 columns (wide characters), a Latin-1 "pré" 3 bytes in 3; an array of NaN
+// only has no range (min 0 max 0 read as a constant array) and JSON null, its name as U+FFFD
+// where it is not UTF-8 (that made info --json an internal error).
+TEST_F(Cli, InfoColumnsAlignForAnyNameAndNaNOnlyHasNoRange)
+{
+    const std::string path = input("names.vtk");
+    std::string arrays;
+    for (const char* name : {"ab", "\xcf\x84_w", "\xe5\xa3\x81\xe9\x9d\xa2", "pr%E9"})
+        arrays += std::string("SCALARS ") + name + " float 1\nLOOKUP_TABLE default\n1 2 3\n";
+    writeFile(path, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+                    "POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\n" + arrays +
+                    "SCALARS gone float 1\nLOOKUP_TABLE default\nnan nan nan\n");
+    const CliResult text = runCli("info " + quoted(path));
+    ASSERT_EQ(text.status, 0) << text.err;
+    const std::pair<const char*, std::size_t> pointAt[] = {
+        {"    ab ", 26}, {"    \xcf\x84_w", 27}, {"    \xe5\xa3\x81", 28}, {"    pr\xe9", 26}};
+    for (const auto& [start, byte] : pointAt) {
+        const std::size_t line = text.out.find(start);
+        ASSERT_NE(line, std::string::npos) << start;
+        EXPECT_EQ(text.out.find(" point ", line), line + byte - 1) << start;  // the column after the padding
+    }
+    EXPECT_NE(text.out.find("gone                  point  Float32  1 component   no finite value  (3 NaN)"),
+              std::string::npos) << text.out;
+    const CliResult json = runCli("info " + quoted(path) + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const nlohmann::json info = nlohmann::json::parse(json.out);
+    EXPECT_EQ(info.at("arrays")[3].at("name"), "pr\xef\xbf\xbd");
+    EXPECT_TRUE(info.at("arrays")[4].at("min").is_null() && info.at("arrays")[4].at("max").is_null());
+}
+
 TEST_F(Cli, InfoListsTheStepsOfASeriesAndSdfTakesOneStep)
 {
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
