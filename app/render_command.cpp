@@ -296,6 +296,10 @@ Command addRenderCommand(CLI::App& app)
                                "--camera-out", "--view-out"})
         legendOnly->excludes(command->get_option(output));
     legendOnly->excludes(probe);
+    // Nor does the bar depend on the view or how rays are traced (these were accepted and ignored).
+    for (const char* unused : {"--no-legend", "--theta", "--phi", "--fov", "--ortho", "--camera", "--method", "--spp",
+                               "--full-trace"})
+        if (CLI::Option* option = command->get_option_no_throw(unused)) legendOnly->excludes(option);
     command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,

@@ -319,6 +319,9 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
     expectRejected("evaluate scene:sphere --volume-res 48 --picture-res 32", {"--picture-res requires --pictures"});
     expectRejected(renderLegendOnly("scene:sphere", output("bar.svg"), "-o " + quoted(output("x.png"))),
                    {"--output excludes --legend-only"});
+    for (const char* ignored : {"--no-legend", "--theta 30", "--spp 4", "--method mirror", "--ortho"})
+        expectRejected(renderLegendOnly("scene:sphere", output("bar.svg"), ignored),
+                       {std::string(ignored).substr(0, std::string(ignored).find(' ')) + " excludes --legend-only"});
     expectRejected(renderLegendOnly(sharedMesh("vtk/artery_series/artery.pvd"), output("bar.svg"), "--range-per-frame"),
                    {"--legend-only excludes --range-per-frame"});
     // --pictures is a folder: naming the same path as a table is refused before the evaluation (it
