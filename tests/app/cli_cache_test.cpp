@@ -42,6 +42,10 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     const test::CliResult elsewhere = test::runCli("sdf scene:sphere --volume-res 48 --cache-dir " + quoted(output("c")));
     ASSERT_EQ(elsewhere.status, 0) << elsewhere.err;
     EXPECT_NE(test::runCli("cache list --cache-dir " + quoted(output("c"))).out.find("in 1 file"), std::string::npos);
+    // sdf -o writes its own file: a cache folder beside it would be ignored (it was, without a word).
+    expectBadInput(
+        test::runCli("sdf scene:sphere --volume-res 48 -o " + quoted(output("v.vdb")) + " --cache-dir /missing"),
+        {"--output excludes --cache-dir"});
     expectBadInput(test::runCli("cache"), {"subcommand"});
 }
 
