@@ -40,6 +40,13 @@ int main(int argc, char** argv)
         if (app.get_subcommands().empty() && word != argv + argc) {  // CLI11 says only "A subcommand is required"
             message = std::string("'") + *word + "' is not a command; the commands are";
             for (const auto& command : commands) message += " " + command.parser->get_name();
+        } else if (app.get_subcommands().size() == 1) {  // a command of commands (cache) without one of its own
+            const CLI::App* parent = app.get_subcommands().front();
+            const std::vector<const CLI::App*> own = parent->get_subcommands({});
+            if (!own.empty() && parent->get_subcommands().empty() && e.get_name() == "RequiredError") {
+                message = parent->get_name() + " needs one of its commands:";
+                for (const CLI::App* command : own) message += " " + command->get_name();
+            }
         }
         std::cerr << "inversevis: error: " << message << "\n";
         return 2;

@@ -46,7 +46,10 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(
         test::runCli("sdf scene:sphere --volume-res 48 -o " + quoted(output("v.vdb")) + " --cache-dir /missing"),
         {"--output excludes --cache-dir"});
-    expectBadInput(test::runCli("cache"), {"subcommand"});
+    // The commands of cache are named (CLI11 said only "A subcommand is required").
+    for (const char* command : {"cache", "cache purge", "cache --cache-dir /tmp"})
+        expectBadInput(test::runCli(command), {"cache needs one of its commands: list clear"});
+    expectBadInput(test::runCli("cache --bogus list"), {"--bogus"});  // the option is what is wrong here
 }
 
 TEST_F(Cli, AnUnusableCacheFolderBuildsAndKeepsNothing)
