@@ -15,6 +15,9 @@ namespace {
 const glm::vec3 kInk = linearFromSrgb(glm::vec3(0.13f));  // text, frame and ticks
 constexpr int kSvgStops = 64;                             // gradient stops of the SVG ramp
 
+constexpr int kMaxLinesPerPart = 2;         // lines for the title, and for the units, before an ellipsis
+constexpr const char* kEllipsis = "\xE2\x80\xA6";  // U+2026
+
 std::string titleText(const ColorBarContent& content)
 {
     const std::string bracketed = content.units.empty() ? "" : "[" + content.units + "]";
@@ -22,15 +25,62 @@ std::string titleText(const ColorBarContent& content)
     return content.title + " " + bracketed;
 }
 
-// Title lines: one line, or title and units on two when one line is wider than @a width.
+// The characters of @a text as byte counts (a byte that starts no UTF-8 character counts as one).
+std::vector<std::size_t> characterEnds(const std::string& text)
+{
+    std::vector<std::size_t> ends;
+    for (std::size_t i = 0; i < text.size();) ends.push_back(i += std::max<std::size_t>(1, utf8Length(text, i)));
+    return ends;
+}
+
+// The longest start of @a text (whole characters) no wider than @a width after @a suffix is added.
+std::string fittingStart(const std::string& text, const std::string& suffix, int width, int fontPixels)
+{
+    std::string kept;
+    for (const std::size_t end : characterEnds(text)) {
+        if (Font::standard().measure(text.substr(0, end) + suffix, fontPixels).width > width) break;
+        kept = text.substr(0, end);
+    }
+    return kept;
+}
+
+// @a text in lines no wider than @a width: broken between words, within a word where one word is
+// wider, and at most kMaxLinesPerPart lines, the last ending in an ellipsis where text is left.
+std::vector<std::string> wrappedLines(const std::string& text, int width, int fontPixels)
+{
+    const Font& font = Font::standard();
+    std::vector<std::string> lines;
+    std::string rest = text;
+    while (!rest.empty()) {
+        if (font.measure(rest, fontPixels).width <= width) {
+            lines.push_back(rest);
+            break;
+        }
+        if (int(lines.size()) + 1 == kMaxLinesPerPart) {
+            lines.push_back(fittingStart(rest, kEllipsis, width, fontPixels) + kEllipsis);
+            break;
+        }
+        std::string line = fittingStart(rest, "", width, fontPixels);
+        const std::size_t space = rest[line.size()] == ' ' ? std::string::npos : line.rfind(' ');
+        if (space != std::string::npos && space > 0) line.resize(space);  // the word cut goes to the next line
+        if (line.empty()) line = rest.substr(0, characterEnds(rest).front());  // one character wider than the bar
+        lines.push_back(line);
+        rest.erase(0, std::min(rest.size(), rest.find_first_not_of(' ', line.size())));
+    }
+    return lines;
+}
+
+// Title lines: one line, or title and units on lines of their own when one line is wider than
+// @a width, each wrapped to it.
 std::vector<std::string> titleLines(const ColorBarContent& content, int width, int fontPixels)
 {
     const std::string joined = titleText(content);
     if (joined.empty()) return {};
-    if (content.title.empty() || content.units.empty() ||
-        Font::standard().measure(joined, fontPixels).width <= width)
-        return {joined};
-    return {content.title, "[" + content.units + "]"};
+    if (content.title.empty() || content.units.empty()) return wrappedLines(joined, width, fontPixels);
+    if (Font::standard().measure(joined, fontPixels).width <= width) return {joined};
+    std::vector<std::string> lines = wrappedLines(content.title, width, fontPixels);
+    for (const std::string& l : wrappedLines("[" + content.units + "]", width, fontPixels)) lines.push_back(l);
+    return lines;
 }
 
 // The ticks whose labels do not collide: range ends first, then the others in order, each kept
@@ -134,7 +184,8 @@ ColorBarDrawing layOutColorBar(const ColorBarContent& content, int pictureWidth,
         const std::vector<std::string> lines = titleLines(content, std::max(blockWidth, pictureWidth / 4), em);
         int contentWidth = blockWidth;
         for (const std::string& l : lines) contentWidth = std::max(contentWidth, font.measure(l, em).width);
-        const int titleHeight = int(lines.size()) * lineHeight + (lines.empty() ? 0 : gap);
+        // Below the title, room for the top tick's label, which stands half a line above the bar.
+        const int titleHeight = int(lines.size()) * lineHeight + (lines.empty() ? 0 : gap + line.ascent / 2 + 1);
         d.width = 2 * pad + contentWidth;
         d.height = std::max(pictureHeight, 2 * pad + titleHeight + length + lineHeight);
         const int top = (d.height - (titleHeight + length)) / 2;  // title and bar centred as one group

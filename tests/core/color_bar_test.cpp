@@ -142,7 +142,10 @@ INSTANTIATE_TEST_SUITE_P(SizesAndSides, ColorBarMargin,
 TEST(ColorBar, KeptTickLabelsDoNotOverlap)
 {
     for (const LegendSide side : {LegendSide::Right, LegendSide::Bottom}) {
-        const ColorBarContent content{"viridis", {{1e-9f, 1e3f}, true, false}, "", ""};
+        // Beside a vertical bar the title's lines count too: the top tick's label stands above the bar.
+        const bool vertical = side == LegendSide::Right;
+        const ColorBarContent content{"viridis", {{1e-9f, 1e3f}, true, false}, vertical ? "pressure" : "",
+                                      vertical ? "Pa" : ""};
         const ColorBarDrawing d = layOutColorBar(content, 500, 500, side);
         std::vector<std::pair<int, int>> spans;  // along the bar
         for (const ColorBarDrawing::Text& t : d.labels) {
@@ -154,6 +157,38 @@ TEST(ColorBar, KeptTickLabelsDoNotOverlap)
         for (std::size_t i = 1; i < spans.size(); ++i) EXPECT_LE(spans[i - 1].second, spans[i].first + 2);
         EXPECT_TRUE(std::any_of(d.ticks.begin(), d.ticks.end(), [](const ColorBarTick& t) { return t.label == "10⁻⁹"; }));
         EXPECT_TRUE(std::any_of(d.ticks.begin(), d.ticks.end(), [](const ColorBarTick& t) { return t.label == "1000"; }));
+    }
+}
+
+TEST(ColorBar, LongTitlesAndUnitsWrapWithinTheBarsWidth)
+{
+    const std::string title = "wall shear stress magnitude averaged over the cardiac cycle at peak systole, "
+                              "normalised by its average over the whole aneurysm sac and the parent artery";
+    const std::string units(500, 'x');  // one word wider than any bar
+    const std::string ellipsis = "\xE2\x80\xA6";
+    const ColorBarContent plain{"viridis", {{0.0f, 5.0f}, false, false}, "p", "Pa"};
+    for (const LegendSide side : {LegendSide::Right, LegendSide::Bottom}) {
+        const ColorBarContent content{"viridis", {{0.0f, 5.0f}, false, false}, title, units};
+        const ColorBarDrawing d = layOutColorBar(content, 1000, 1000, side);
+        const ColorBarDrawing p = layOutColorBar(plain, 1000, 1000, side);
+        const int limit = side == LegendSide::Bottom ? d.gradient.x1 - d.gradient.x0 : std::max(p.width, 1000 / 4);
+        std::vector<std::string> lines;  // the title's, not the ticks'
+        for (const ColorBarDrawing::Text& t : d.labels) {
+            EXPECT_LE(Font::standard().measure(t.text, d.fontPixels).width, limit) << t.text;
+            if (std::none_of(d.ticks.begin(), d.ticks.end(), [&](const ColorBarTick& k) { return k.label == t.text; }))
+                lines.push_back(t.text);
+        }
+        if (side == LegendSide::Right) {
+            EXPECT_LE(d.width, limit + 2 * d.fontPixels);
+        }
+        // Two lines of the title, broken between its words, then two of the units, cut within the
+        // one word and at the end, each part's second line ending in an ellipsis.
+        ASSERT_EQ(lines.size(), 4u);
+        EXPECT_EQ(title.rfind(lines[0] + " ", 0), 0u);
+        EXPECT_EQ(lines[1].substr(lines[1].size() - 3), ellipsis);
+        EXPECT_EQ(title.find(lines[1].substr(0, lines[1].size() - 3), lines[0].size() + 1), lines[0].size() + 1);
+        EXPECT_EQ(lines[2], "[" + std::string(lines[2].size() - 1, 'x'));
+        EXPECT_EQ(lines[3], std::string(lines[3].size() - 3, 'x') + ellipsis);
     }
 }
 
