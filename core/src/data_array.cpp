@@ -33,11 +33,12 @@ std::size_t valueTypeSize(ValueType type)
     return kSizes[int(type)];
 }
 
-std::pair<double, double> finiteRange(const DataArray& array, int component)
+std::pair<double, double> finiteRange(const DataArray& array, int component, const std::vector<char>& keep)
 {
     double lo = std::numeric_limits<double>::infinity();
     double hi = -lo;
     for (std::size_t t = 0; t < array.tuples(); ++t) {
+        if (!keep.empty() && (t >= keep.size() || !keep[t])) continue;
         const double v = array.at(t, component);
         if (!std::isfinite(v)) continue;
         lo = std::min(lo, v);

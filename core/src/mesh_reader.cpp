@@ -205,12 +205,21 @@ MeshInfo describeMesh(const std::string& path)
 
 std::vector<ArrayInfo> describeArrays(const SurfaceField& field)
 {
+    // The cells a triangle comes from: a line or vertex cell's value, or a volume's inner cell's, is never drawn.
+    std::vector<char> cellDrawn;
+    for (const std::uint32_t cell : field.triangleCells) {
+        if (cell >= cellDrawn.size()) cellDrawn.resize(std::size_t(cell) + 1, 0);
+        cellDrawn[cell] = 1;
+    }
+    const std::vector<char> everyTuple;  // a point array's: its unused points are dropped already
     std::vector<ArrayInfo> infos;
     const DataArray* shown = field.arrays.empty() ? nullptr : &defaultArray(field);
     for (const DataArray& array : field.arrays) {
         ArrayInfo a{array.name, array.association, array.type, array.components, 0.0, 0.0, 0, &array == shown};
-        std::tie(a.min, a.max) = finiteRange(array, array.defaultComponent());
-        for (std::size_t t = 0; t < array.tuples(); ++t) a.nanCount += std::isnan(array.at(t, kMagnitude)) ? 1 : 0;
+        const std::vector<char>& drawn = array.association == Association::Cell ? cellDrawn : everyTuple;
+        std::tie(a.min, a.max) = finiteRange(array, array.defaultComponent(), drawn);
+        for (std::size_t t = 0; t < array.tuples(); ++t)
+            if (drawn.empty() || (t < drawn.size() && drawn[t])) a.nanCount += std::isnan(array.at(t, kMagnitude)) ? 1 : 0;
         infos.push_back(a);
     }
     return infos;

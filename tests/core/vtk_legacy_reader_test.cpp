@@ -142,6 +142,10 @@ void expectCube(const SurfaceField& field, const MeshReadReport& report, const s
     EXPECT_EQ(field.arrays[2].association, Association::Cell);
     EXPECT_EQ(field.arrays[2].type, ValueType::Int32);
     EXPECT_EQ(field.arrays[2].values, kZeroToSeven);
+    // `info` gives the range a picture can draw: cells 0 and 1 (the vertex and the line) are not drawn.
+    const std::vector<ArrayInfo> info = describeArrays(field);
+    EXPECT_EQ(std::make_pair(info[2].min, info[2].max), std::make_pair(2.0, 7.0));
+    EXPECT_EQ(std::make_pair(info[0].min, info[0].max), std::make_pair(0.0, 7.0));  // a point array: every point
     EXPECT_EQ(report.notes,
               std::vector<std::string>{"left out 1 vertex cell and 1 line cell: only surfaces are shown"});
 }

@@ -51,8 +51,9 @@ const char* valueTypeName(ValueType type);
 /// @brief Bytes one value of @a type takes in a binary file.
 std::size_t valueTypeSize(ValueType type);
 
-/// @brief Finite (min, max) of component @a component (or kMagnitude) over all tuples, ignoring
-///        NaN and infinities; {NaN, NaN} when there is none (an array of NaN only).
-std::pair<double, double> finiteRange(const DataArray& array, int component);
+/// @brief Finite (min, max) of component @a component (or kMagnitude) over the tuples @a keep marks
+///        (all when it is empty; tuples beyond it are not kept), ignoring NaN and infinities;
+///        {NaN, NaN} when there is none (an array of NaN only).
+std::pair<double, double> finiteRange(const DataArray& array, int component, const std::vector<char>& keep = {});
 
 }  // namespace ivis::core

@@ -44,6 +44,8 @@ struct ArrayInfo {
     Association association = Association::Point;
     ValueType type = ValueType::Float32;
     int components = 1;
+    /// The figures below are of the tuples a picture can draw: every point (the file's unused points
+    /// are dropped), the cells some triangle comes from (not line or vertex cells, nor a volume's inner cells).
     double min = 0.0;  ///< finite minimum of the default component (DataArray::defaultComponent); NaN if none
     double max = 0.0;  ///< finite maximum of the same; NaN if none
     std::size_t nanCount = 0;  ///< tuples with a NaN component
