@@ -166,7 +166,14 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
                                        std::to_string(mesh.arrays().size()) + " arrays>");
         });
 
-    py::class_<python::Picture, std::shared_ptr<python::Picture>>(m, "Picture", "A rendered picture (render()).")
+    py::class_<python::Picture, std::shared_ptr<python::Picture>> picture(m, "Picture", "A rendered picture (render()).");
+    // A Picture comes from render() or optimize(): one from Picture.__new__ would hold nothing a method can read.
+    reinterpret_cast<PyTypeObject*>(picture.ptr())->tp_new = [](PyTypeObject*, PyObject*, PyObject*) -> PyObject* {
+        PyErr_SetString(PyExc_TypeError, "inversevis.Picture objects come from render() and optimize()");
+        return nullptr;
+    };
+    PyType_Modified(reinterpret_cast<PyTypeObject*>(picture.ptr()));
+    picture
         .def_property_readonly("rgba", &python::Picture::rgba,
                                "(height, width, 4) uint8: the PNG's pixels, sRGB, with the colour bar's margin.")
         .def_property_readonly(

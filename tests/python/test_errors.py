@@ -181,3 +181,11 @@ def test_the_scalar_energy_of_a_scalar_without_values_is_refused(sphere):
     with pytest.raises(inversevis.InputError, match="the scalar energy needs values of 'z', which has none"):
         inversevis.optimize(mesh, scalar="z", energy="scalar", opt_res=16, steps=1, size=(60, 60),
                             volume_resolution=48)
+
+
+def test_a_picture_is_made_only_by_render_and_optimize():
+    # Picture.__new__ made an object with nothing inside, whose methods then read garbage or crashed.
+    with pytest.raises(TypeError, match="come from render"):
+        inversevis.Picture()
+    with pytest.raises(TypeError):  # Python's own check: the type's __new__ is not object's
+        inversevis.Picture.__new__(inversevis.Picture)
