@@ -2,25 +2,55 @@
 /// @brief Value checks for command-line options that CLI11's own do not make.
 #pragma once
 
+#include <ivis/core/errors.h>
+
 #include <CLI/CLI.hpp>
 
 #include <string>
 
 namespace ivis::app {
 
-/// @brief CLI::Range for floating-point options that also refuses NaN (CLI::Range compares, and
-///        every comparison with NaN is false, so "--polish nan" passed it).
-inline CLI::Validator finiteRange(double lo, double hi)
+namespace detail {
+
+/// The check of finiteRange and positiveUpTo: a number from @a lo (or above it) to @a hi.
+inline CLI::Validator numberRange(double lo, double hi, bool loIncluded)
 {
-    const std::string range = "[" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]";
+    const std::string range =
+        (loIncluded ? "[" : "(") + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]";
     return CLI::Validator(
-        [lo, hi, range](std::string& text) -> std::string {
+        [lo, hi, loIncluded, range](std::string& text) -> std::string {
             double value = 0.0;
             if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
-            if (!(value >= lo && value <= hi)) return "Value " + text + " not in range " + range;
+            if (!((loIncluded ? value >= lo : value > lo) && value <= hi))
+                return "Value " + text + " not in range " + range;
             return {};
         },
         "FLOAT in " + range);
+}
+
+}  // namespace detail
+
+/// @brief CLI::Range for floating-point options that also refuses NaN (CLI::Range compares, and
+///        every comparison with NaN is false, so "--polish nan" passed it).
+inline CLI::Validator finiteRange(double lo, double hi) { return detail::numberRange(lo, hi, true); }
+
+/// @brief finiteRange(0, hi) without 0 itself: a length that must not vanish.
+inline CLI::Validator positiveUpTo(double hi) { return detail::numberRange(0.0, hi, false); }
+
+/// @brief Refuses an option's value made of commas only ("--opt-res ,," or "--methods=,"): CLI11
+///        drops a comma-separated list's empty items, so such an option took the next argument.
+/// @throw InputError naming the option
+inline void rejectEmptyLists(int argc, const char* const* argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        const std::size_t equals = argument.rfind("--", 0) == 0 ? argument.find('=') : std::string::npos;
+        const bool value = equals != std::string::npos || (i > 1 && argv[i - 1][0] == '-');
+        const std::string text = equals != std::string::npos ? argument.substr(equals + 1) : argument;
+        if (value && !text.empty() && text.find_first_not_of(',') == std::string::npos)
+            throw InputError((equals != std::string::npos ? argument.substr(0, equals) : std::string(argv[i - 1])) +
+                             ": '" + text + "' lists nothing (give the items comma-separated, e.g. 100,1000)");
+    }
 }
 
 }  // namespace ivis::app

@@ -132,7 +132,7 @@ Command addEvaluateCommand(CLI::App& app)
         ->allow_extra_args(false)
         ->capture_default_str();
     command->add_option("--opt-res", options->optResolutions, "Optimisation resolutions, comma-separated")
-        ->check(CLI::Range(4, 8192))
+        ->check(optimizationResolutionRange())
         ->delimiter(',')
         ->allow_extra_args(false)
         ->capture_default_str();
@@ -246,6 +246,15 @@ Command addEvaluateCommand(CLI::App& app)
                     throw InputError(options->json + ": " + stem + ":" + method + " was evaluated with " + difference +
                                      " in this run; --resume continues an evaluation with its options");
         }
+        // The tables show all the --json file holds: the meshes and methods it kept from other runs first.
+        std::vector<std::string> keptStems;
+        for (const auto& [stem, methods] : results.items()) {
+            if (std::find(layout.stems.begin(), layout.stems.end(), stem) == layout.stems.end()) keptStems.push_back(stem);
+            for (const auto& [method, entry] : methods.items())
+                if (std::find(layout.methods.begin(), layout.methods.end(), method) == layout.methods.end())
+                    layout.methods.push_back(method);
+        }
+        layout.stems.insert(layout.stems.begin(), keptStems.begin(), keptStems.end());
         if (!options->pictures.empty()) std::filesystem::create_directories(options->pictures);
         core::ProgressBar progress(core::logLevel() <= core::LogLevel::Info);
         const std::string cacheFolder = vdb::optionalCacheFolder(options->cacheDir);

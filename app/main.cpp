@@ -1,4 +1,5 @@
 // The `inversevis` command-line program: parses arguments and maps errors to exit statuses.
+#include "cli_checks.h"
 #include "commands.h"
 #include "version.h"
 
@@ -29,6 +30,7 @@ int main(int argc, char** argv)
                                                        ivis::app::addCacheCommand(app)};
     ivis::core::installInterruptHandler();
     try {
+        ivis::app::rejectEmptyLists(argc, argv);
         app.parse(argc, argv);
         if (quiet) ivis::core::setLogLevel(ivis::core::LogLevel::Warning);
         for (const auto& command : commands)

@@ -56,7 +56,8 @@ void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, co
     reachOption = command.add_option("--reach", volume.farFieldReach,
                                      "Exterior distance the far field covers (normalised; default 0.6, or more when the "
                                      "method's rays need it: inversevis-wrap's hull offset + 0.4, another curved-ray "
-                                     "method's + 0.6; sdf: the default method's)");
+                                     "method's + 0.6; sdf: the default method's)")
+                      ->check(positiveUpTo(vdb::kMaxFarFieldReach));
     command.add_option("--distance", distance, "Distance sign: auto (unsigned for open meshes), signed, unsigned")
         ->check(CLI::IsMember({"auto", "signed", "unsigned"}))
         ->capture_default_str();

@@ -9,6 +9,11 @@
 
 namespace ivis::app {
 
+CLI::Validator optimizationResolutionRange()
+{
+    return CLI::Range(optimize::kMinOptimizationResolution, optimize::kMaxOptimizationResolution);
+}
+
 void OptimizationOptions::addTo(CLI::App& command)
 {
     mCommand = &command;
@@ -45,7 +50,7 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--ascent-res", ascentResolution,
                        "Rays per side of each view's parameter ascent when below --opt-res (the view energy stays at "
                        "--opt-res; the best view's parameters are ascended again there)")
-        ->check(CLI::Range(4, 8192));
+        ->check(optimizationResolutionRange());
     command.add_option("--alpha-scan", alphaScan,
                        "Try this many values of the method's scanned parameter (inversevis: alpha) evenly over its "
                        "bounds before each ascent and start from the best (beyond the paper; default none)")
@@ -57,7 +62,7 @@ void OptimizationOptions::addTo(CLI::App& command)
         ->capture_default_str();
     command.add_option("--finalist-res", finalistResolution,
                        "Rays per side of the finalists' measurement (none when not above the optimisation's)")
-        ->check(CLI::Range(4, 8192))
+        ->check(optimizationResolutionRange())
         ->capture_default_str();
     command.add_option("--min-coherence", minCoherence,
                        "Readable rule: at the best view, the loosest rule for drawing rays (inversevis-wrap: "

@@ -3,6 +3,7 @@
 ///        schedule and the parameter ascent.
 #pragma once
 
+#include <ivis/optimize/energy.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 
 #include <CLI/CLI.hpp>
@@ -16,6 +17,9 @@
 #include <vector>
 
 namespace ivis::app {
+
+/// @brief CLI11's check of an optimisation resolution (rays per side), as the energy takes it.
+CLI::Validator optimizationResolutionRange();
 
 /// @brief Energy, annealing and ascent settings as given on the command line.
 struct OptimizationOptions {

@@ -59,7 +59,7 @@ Command addOptimizeCommand(CLI::App& app)
     options->view.addTo(*command);
     options->optimization.addTo(*command);
     command->add_option("--opt-res", options->optResolution, "Optimisation resolution (rays per side)")
-        ->check(CLI::Range(4, 8192))
+        ->check(optimizationResolutionRange())
         ->capture_default_str();
     command
         ->add_option("-o,--output", options->output,

@@ -36,11 +36,16 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
             throw ValueError("gamma " + core::shortNumber(*request.gamma) + " must lie in [0, 1000]");
         o.gamma = *request.gamma;
     }
-    if (request.optResolution < 4 || request.optResolution > 8192)
-        throw ValueError("opt_res " + std::to_string(request.optResolution) + " is out of range (4 to 8192)");
-    if (request.ascentResolution < 0 || (request.ascentResolution > 0 && request.ascentResolution < 4) ||
+    if (request.optResolution < optimize::kMinOptimizationResolution ||
+        request.optResolution > optimize::kMaxOptimizationResolution)
+        throw ValueError("opt_res " + std::to_string(request.optResolution) + " is out of range (" +
+                         std::to_string(optimize::kMinOptimizationResolution) + " to " +
+                         std::to_string(optimize::kMaxOptimizationResolution) + ")");
+    if (request.ascentResolution < 0 ||
+        (request.ascentResolution > 0 && request.ascentResolution < optimize::kMinOptimizationResolution) ||
         (request.ascentResolution > 0 && request.ascentResolution >= request.optResolution))
-        throw ValueError("ascent_res " + std::to_string(request.ascentResolution) + " must lie from 4 to below opt_res (" +
+        throw ValueError("ascent_res " + std::to_string(request.ascentResolution) + " must lie from " +
+                         std::to_string(optimize::kMinOptimizationResolution) + " to below opt_res (" +
                          std::to_string(request.optResolution) + "; 0: the ascent at opt_res)");
     o.ascentResolution = request.ascentResolution;
     if (request.steps < 0 || request.steps > 1000000)

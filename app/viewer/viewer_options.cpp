@@ -75,8 +75,10 @@ void ViewerOptions::validate()
     if (frames < 1 || frames > 100000) throw ValueError("--frames " + std::to_string(frames) + " must be at least 1");
     if (benchmarkFrames < 2 || benchmarkFrames > 100000)
         throw ValueError("--benchmark-frames " + std::to_string(benchmarkFrames) + " must be at least 2");
-    if (optResolution < 8 || optResolution > 2000)
-        throw ValueError("--opt-res " + std::to_string(optResolution) + " is out of range (8 to 2000)");
+    if (optResolution < optimize::kMinOptimizationResolution || optResolution > optimize::kMaxOptimizationResolution)
+        throw ValueError("--opt-res " + std::to_string(optResolution) + " is out of range (" +
+                         std::to_string(optimize::kMinOptimizationResolution) + " to " +
+                         std::to_string(optimize::kMaxOptimizationResolution) + ")");
     if (textureBudgetMiB < 16 || textureBudgetMiB > 65536)
         throw ValueError("--texture-budget " + std::to_string(textureBudgetMiB) + " is out of range (16 to 65536 MiB)");
     if (!(playRate >= 0.1 && playRate <= 60.0))

@@ -127,6 +127,10 @@ TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
                    {"100: file not found, and a number: --opt-res takes them comma-separated"});
     expectBadInput(runCli("evaluate --methods front,front scene:sphere --volume-res 48"),
                    {"--methods: front is given twice"});
+    // A list of commas only: CLI11 dropped its empty items and took the next argument as the list.
+    expectBadInput(runCli("evaluate --opt-res ,, --methods front scene:sphere --volume-res 48"),
+                   {"--opt-res: ',,' lists nothing"});
+    expectBadInput(runCli("evaluate --methods=, scene:sphere --volume-res 48"), {"--methods: ',' lists nothing"});
 }
 
 TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
@@ -152,6 +156,16 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
         << "deterministic for the seed";
     EXPECT_EQ(test::readFile(output("e.md")).substr(0, tables.find("## Viewpoint")), tables.substr(0, tables.find("## Viewpoint")))
         << "the same tables (the seconds may differ)";
+    // Resumed with one mesh and one method, the tables still show every mesh and method the file holds.
+    const std::string torusOnly = "evaluate scene:torus --volume-res 48 --methods inversevis --opt-res 16 --steps 1 "
+                                  "--display-res 32 --cache-dir " + quoted(output("")) + " --json " +
+                                  quoted(output("e.json")) + " --resume";
+    const CliResult one = runCli(torusOnly);
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_NE(one.err.find("torus: kept from"), std::string::npos) << one.err;
+    const std::string first = one.out.substr(0, one.out.find("\n\n", one.out.find("|---")));  // the first table
+    for (const std::string& row : {"| Surface | inversevis | front |", "\n| sphere | ", "\n| torus | "})
+        EXPECT_NE(first.find(row), std::string::npos) << row << " in\n" << one.out;
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
     // Resumed with other options, the kept meshes' figures would not be this run's (they were kept).
     nlohmann::json another = nlohmann::json::parse(std::ifstream(output("e.json")));  // another mesh of its name

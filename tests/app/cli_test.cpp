@@ -194,6 +194,9 @@ TEST_F(Cli, HullOffsetBeyondAGivenReachNamesBothAndTheDefaultReachFollowsTheHull
     const std::string mesh = sharedMesh("vampy_artery_cfd_pressure.ply");
     expectRejected(render(mesh, "--hull-offset 0.7 --reach 0.7"), {"--hull-offset 0.7", "--reach 0.7"});
     expectRejected(render(mesh, "--method inversevis --hull-offset 0.7 --reach 0.6"), {"--hull-offset 0.7", "--reach 0.6"});
+    // A reach outside (0, 2] names the option (it said only "far-field reach -1.000000 is out of range").
+    for (const char* reach : {"-1", "0", "2.5", "nan"})
+        expectRejected(render(mesh, std::string("--reach ") + reach), {"--reach: "});
     EXPECT_EQ(runCli(render(mesh, "--hull-offset 0.7 --reach 0.8")).status, 0);
     // Without --reach the far field reaches as far as the method's rays need.
     EXPECT_EQ(runCli(render(mesh, "--hull-offset 1.5")).status, 0);

@@ -37,8 +37,10 @@ const char* toString(EnergyKind kind) { return kind == EnergyKind::Scalar ? "sca
 EnergyEvaluator::EnergyEvaluator(const RenderScene& scene, const EnergyOptions& options)
     : mScene(scene), mOptions(options)
 {
-    if (options.resolution < 4 || options.resolution > 8192)
-        throw ValueError("optimisation resolution " + std::to_string(options.resolution) + " is out of range (4 to 8192)");
+    if (options.resolution < kMinOptimizationResolution || options.resolution > kMaxOptimizationResolution)
+        throw ValueError("optimisation resolution " + std::to_string(options.resolution) + " is out of range (" +
+                         std::to_string(kMinOptimizationResolution) + " to " +
+                         std::to_string(kMaxOptimizationResolution) + ")");
     if (options.kind == EnergyKind::Scalar && !scene.field().hasScalar())
         throw InputError(scene.field().sourcePath + ": the scalar energy needs a scalar field (--scalar NAME)");
     if (options.kind == EnergyKind::Scalar) {

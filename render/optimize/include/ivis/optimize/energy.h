@@ -33,6 +33,10 @@ EnergyKind parseEnergyKind(const std::string& name);
 /// @brief Name of a kind.
 const char* toString(EnergyKind kind);
 
+/// Rays per image side an optimisation resolution may have, at least and at most.
+inline constexpr int kMinOptimizationResolution = 4;
+inline constexpr int kMaxOptimizationResolution = 8192;
+
 /// @brief How the energy is measured.
 struct EnergyOptions {
     EnergyKind kind = EnergyKind::Visibility;
