@@ -1,5 +1,6 @@
 // `inversevis cache list|clear`: the volume caches in the cache folder shared by every command and
 // the viewer.
+#include "cli_checks.h"
 #include "commands.h"
 #include "mesh_options.h"
 
@@ -57,7 +58,7 @@ Command addCacheCommand(CLI::App& app)
 {
     auto cacheDir = std::make_shared<std::string>();
     CLI::App* command = app.add_subcommand("cache", "List or clear the volume caches shared by every command and the viewer");
-    command->add_option("--cache-dir", *cacheDir, kCacheDirHelp);
+    command->add_option("--cache-dir", *cacheDir, kCacheDirHelp)->check(nonEmpty());
     CLI::App* list = command->add_subcommand("list", "Each cached volume with its size, and the total");
     CLI::App* clear = command->add_subcommand(
         "clear", "Remove every cached volume (and leftover temporaries): the files named as this program names them");

@@ -37,6 +37,13 @@ inline CLI::Validator finiteRange(double lo, double hi) { return detail::numberR
 /// @brief finiteRange(0, hi) without 0 itself: a length that must not vanish.
 inline CLI::Validator positiveUpTo(double hi) { return detail::numberRange(0.0, hi, false); }
 
+/// @brief Refuses an empty value ("--cache-dir $DIR" with DIR unset would name the default folder).
+inline CLI::Validator nonEmpty()
+{
+    return CLI::Validator(
+        [](std::string& text) -> std::string { return text.empty() ? "empty (an unset shell variable?)" : ""; }, "");
+}
+
 /// @brief Refuses an option's value made of commas only ("--opt-res ,," or "--methods=,"): CLI11
 ///        drops a comma-separated list's empty items, so such an option took the next argument.
 /// @throw InputError naming the option

@@ -1,6 +1,7 @@
 // `inversevis evaluate MESH...`: the paper's Table 1 with the measures (docs/measures.md) at each method's best
 // view (surface visibility with its front-only part, paper-literal visibility, mapping coherence and,
 // with a scalar, hot-spot reveal) and Table 2 (viewpoint optimisation seconds per resolution).
+#include "cli_checks.h"
 #include "commands.h"
 #include "json_output.h"
 #include "mesh_options.h"
@@ -158,7 +159,7 @@ Command addEvaluateCommand(CLI::App& app)
     command->add_option("--picture-res", options->pictureResolution, "Size of those pictures (default: --display-res)")
         ->needs(pictures)
         ->check(CLI::Range(16, 8192));
-    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp)->check(nonEmpty());
     command->add_option("--only", options->only,
                         "Evaluate only MESH:METHOD (the mesh's file stem; repeatable): one job of an evaluation spread "
                         "over a cluster; `inversevis merge` joins the parts' --json files into the tables")

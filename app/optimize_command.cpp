@@ -80,7 +80,7 @@ Command addOptimizeCommand(CLI::App& app)
     command->add_option("--view-out", options->viewOut,
                         "View file of the best view: camera, method and optimised parameters, scalar, colour "
                         "(default: <output>.view.json; `render --view` reproduces the picture, the viewer loads it)");
-    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp)->check(nonEmpty());
     options->seriesFlags = {
         command
             ->add_option("--fps", options->fps,

@@ -300,7 +300,7 @@ Command addRenderCommand(CLI::App& app)
     for (const char* unused : {"--no-legend", "--theta", "--phi", "--fov", "--ortho", "--camera", "--method", "--spp",
                                "--full-trace"})
         if (CLI::Option* option = command->get_option_no_throw(unused)) legendOnly->excludes(option);
-    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp);
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp)->check(nonEmpty());
     options->seriesFlags = {
         command->add_flag("--range-per-frame", options->rangePerFrame,
                           "Series: each frame's colour range is its own step's data range (default: one range over "
@@ -320,6 +320,8 @@ Command addRenderCommand(CLI::App& app)
                           "Series: no MP4 (by default one is made when ffmpeg is on PATH)")
             ->excludes("--fps")};
     legendOnly->excludes("--range-per-frame");  // the bar alone has one scale: the series' (no frame's own)
+    // A view file holds one colour range (it was written as [0, 1], which no frame had).
+    command->get_option("--range-per-frame")->excludes("--view-out");
 
     return {command, [options, command] {
         options->view.rangeOfEachPicture = options->rangePerFrame;

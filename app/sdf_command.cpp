@@ -1,4 +1,5 @@
 // `inversevis sdf MESH`: build or reuse the cached sparse volume and report it.
+#include "cli_checks.h"
 #include "commands.h"
 #include "mesh_options.h"
 #include "output_files.h"
@@ -32,7 +33,7 @@ Command addSdfCommand(CLI::App& app)
     command->add_option("-o,--output", options->output,
                         "Volume file (default: <mesh>.<mesh hash>.res<N>.reach<R>[.band<B>][.signed|.unsigned].vdb in the cache folder, where render, "
                         "optimize, evaluate and the viewer find it)");
-    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp)
+    command->add_option("--cache-dir", options->cacheDir, kCacheDirHelp)->check(nonEmpty())
         ->excludes("--output");  // -o writes the volume to its own file: no cache folder is used
     command->add_flag("--json", options->json, "Print one JSON object");
 

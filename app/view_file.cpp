@@ -4,6 +4,7 @@
 
 #include <ivis/core/camera_json.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/file_bytes.h>
 #include <ivis/core/json_text.h>
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/json_numbers.h>
@@ -13,8 +14,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 
 namespace ivis::app {
 namespace {
@@ -159,9 +158,7 @@ nlohmann::json viewToJson(const ViewFile& view)
 
 ViewFile readViewFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open view file");
-    return detail::parseViewFile(path, std::string(std::istreambuf_iterator<char>(in), {}));
+    return detail::parseViewFile(path, core::detail::readFileBytes(path));  // a folder or pipe named, not read
 }
 
 ViewFile detail::parseViewFile(const std::string& path, const std::string& text)

@@ -282,7 +282,7 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             request.parameters = parameters;
             return said(python::renderMesh(mesh, request, progress));
         },
-        py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
+        py::arg("mesh").none(false), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("cell_to_point") = false, py::arg("hotspots") = 0,
         py::arg("cap_holes") = false, py::arg("theta") = py::none(), py::arg("phi") = py::none(),
         py::arg("fov") = py::none(), py::arg("ortho") = false,
@@ -367,7 +367,7 @@ surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: N
             request.views = views;
             return said(python::optimizeMesh(mesh, request, progress));
         },
-        py::arg("mesh"), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
+        py::arg("mesh").none(false), py::arg("method") = render::defaultMethod()->name(), py::kw_only(),
         py::arg("scalar") = py::none(), py::arg("cell_to_point") = false, py::arg("hotspots") = 0,
         py::arg("cap_holes") = false, py::arg("energy") = "visibility", py::arg("gamma") = py::none(),
         py::arg("opt_res") = 100, py::arg("ascent_res") = 0, py::arg("steps") = 20, py::arg("seed") = 1,

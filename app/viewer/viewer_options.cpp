@@ -1,5 +1,6 @@
 #include "viewer_options.h"
 
+#include "../cli_checks.h"
 #include "../output_files.h"
 #include "../probe_report.h"
 
@@ -62,7 +63,7 @@ void ViewerOptions::addTo(CLI::App& app)
                  "Orbit 360 degrees in --benchmark-frames frames, drawn as while the camera moves, then rest; print the "
                  "frames per second and the time to the full picture");
     app.add_option("--benchmark-frames", benchmarkFrames, "Frames of the benchmark orbit")->capture_default_str();
-    app.add_option("--cache-dir", cacheDir, kCacheDirHelp);
+    app.add_option("--cache-dir", cacheDir, kCacheDirHelp)->check(nonEmpty());
     app.add_option("--texture-budget", textureBudgetMiB, "GPU memory for the volume textures, MiB")
         ->capture_default_str();
 }

@@ -2,13 +2,13 @@
 
 #include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/file_bytes.h>
 #include <ivis/core/json_text.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
-#include <iterator>
 #include <type_traits>
 
 namespace ivis::core {
@@ -75,9 +75,7 @@ Camera cameraFromJson(const nlohmann::json& json)
 
 Camera readCameraJson(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open camera file");
-    return detail::parseCameraJson(path, std::string(std::istreambuf_iterator<char>(in), {}));
+    return detail::parseCameraJson(path, detail::readFileBytes(path));  // a folder or pipe named, not read
 }
 
 Camera detail::parseCameraJson(const std::string& path, const std::string& text)

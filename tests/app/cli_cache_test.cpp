@@ -46,6 +46,9 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(
         test::runCli("sdf scene:sphere --volume-res 48 -o " + quoted(output("v.vdb")) + " --cache-dir /missing"),
         {"--output excludes --cache-dir"});
+    // An empty folder (an unset shell variable) is refused: it named the default folder, which clear would empty.
+    for (const char* command : {"cache clear --cache-dir ''", "sdf scene:sphere --volume-res 48 --cache-dir ''"})
+        expectBadInput(test::runCli(command), {"--cache-dir: empty"});
     // The commands of cache are named (CLI11 said only "A subcommand is required").
     for (const char* command : {"cache", "cache purge", "cache --cache-dir /tmp"})
         expectBadInput(test::runCli(command), {"cache needs one of its commands: list clear"});

@@ -313,6 +313,9 @@ TEST_F(CliSeries, BadSeriesWriteNothing)
     // Said first: "give --view, --camera or --fov" came before it.
     expectRejected(render(arteryStep("0200"), "--frames 0:1"), {"--frames: applies to a time series"});
     expectRejected(render(pvd(), "--range-per-frame --range 0 1"), {"excludes"});
+    // A view file holds one range: with each frame's own it held [0, 1], which no frame had.
+    expectRejected(render(pvd(), "--range-per-frame --view-out " + quoted(output("v.json"))),
+                   {"--view-out excludes --range-per-frame"});
     // One mesh's values for every step (each frame showed them alike).
     const std::string values = input("values.txt");
     test::writeFile(values, "1\n");

@@ -189,3 +189,12 @@ def test_a_picture_is_made_only_by_render_and_optimize():
         inversevis.Picture()
     with pytest.raises(TypeError):  # Python's own check: the type's __new__ is not object's
         inversevis.Picture.__new__(inversevis.Picture)
+
+
+def test_none_for_a_mesh_or_a_folder_for_a_view_file_is_refused(tmp_path):
+    with pytest.raises(TypeError):  # it crashed the interpreter
+        inversevis.render(None)
+    with pytest.raises(TypeError):
+        inversevis.optimize(None, "front")
+    with pytest.raises(inversevis.InputError, match=str(tmp_path) + ": is a directory"):
+        inversevis.read_view(tmp_path)  # a RuntimeError that did not name it
