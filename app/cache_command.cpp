@@ -9,12 +9,17 @@
 #include <ivis/core/log.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <signal.h>
+#include <sys/types.h>
 
 namespace ivis::app {
 namespace {
@@ -43,6 +48,17 @@ std::vector<CacheEntry> cacheEntries(const std::string& folder)
     return entries;
 }
 
+/// True for a temporary ("<volume>.tmp.<pid>.<n>") whose writer still runs on this machine: a
+/// command building that volume now (removing it made that command fail).
+bool isBeingWritten(const fs::path& path)
+{
+    const std::string name = path.filename().string();
+    const std::size_t tmp = name.rfind(".tmp.");
+    if (tmp == std::string::npos) return false;
+    const long pid = std::strtol(name.c_str() + tmp + 5, nullptr, 10);
+    return pid > 0 && (::kill(pid_t(pid), 0) == 0 || errno == EPERM);
+}
+
 std::string humanBytes(std::uintmax_t bytes)
 {
     char text[32];
@@ -69,21 +85,31 @@ Command addCacheCommand(CLI::App& app)
     return {command, [cacheDir, list, clear] {
         const std::string folder = vdb::cacheFolder(*cacheDir, false);
         const std::vector<CacheEntry> entries = cacheEntries(folder);
-        std::uintmax_t total = 0;
-        for (const CacheEntry& e : entries) total += e.bytes;
         if (list->parsed()) {
+            std::uintmax_t total = 0;
+            for (const CacheEntry& e : entries) total += e.bytes;
             for (const CacheEntry& e : entries)
                 std::printf("%10s  %s\n", humanBytes(e.bytes).c_str(), e.path.filename().string().c_str());
             std::printf("%10s  in %zu file%s in %s\n", humanBytes(total).c_str(), entries.size(),
                         entries.size() == 1 ? "" : "s", folder.c_str());
         } else if (clear->parsed()) {
+            std::size_t removed = 0, writing = 0;
+            std::uintmax_t freed = 0;
             for (const CacheEntry& e : entries) {
+                if (isBeingWritten(e.path)) {
+                    ++writing;
+                    continue;
+                }
                 std::error_code error;
                 if (!fs::remove(e.path, error) && error)
                     throw InputError(e.path.string() + ": cannot remove (" + error.message() + ")");
+                ++removed;
+                freed += e.bytes;
             }
-            core::logInfo("removed " + std::to_string(entries.size()) + " cached volume" +
-                          (entries.size() == 1 ? "" : "s") + " (" + humanBytes(total) + ") from " + folder);
+            core::logInfo("removed " + std::to_string(removed) + " cached volume" + (removed == 1 ? "" : "s") + " (" +
+                          humanBytes(freed) + ") from " + folder +
+                          (writing == 0 ? std::string()
+                                        : "; kept " + std::to_string(writing) + " being written by a running command"));
         }
     }};
 }

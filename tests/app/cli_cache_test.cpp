@@ -6,6 +6,8 @@
 
 #include <filesystem>
 
+#include <unistd.h>
+
 namespace ivis::app {
 namespace {
 
@@ -46,6 +48,19 @@ TEST_F(Cli, CommandsShareOneCacheFolderThatCacheListsAndClears)
     expectBadInput(
         test::runCli("sdf scene:sphere --volume-res 48 -o " + quoted(output("v.vdb")) + " --cache-dir /missing"),
         {"--output excludes --cache-dir"});
+    // A temporary whose writer still runs is kept (removing it made a render fail); one an
+    // interrupted write left is removed.
+    const std::string live = output("c") + "/sphere.res48.vdb.tmp." + std::to_string(::getpid()) + ".0";
+    const std::string dead = output("c") + "/sphere.res48.vdb.tmp.2147483646.0";  // beyond any pid_max
+    test::writeFile(live, "x");
+    test::writeFile(dead, "x");
+    const test::CliResult spared = test::runCli("cache clear --cache-dir " + quoted(output("c")));
+    ASSERT_EQ(spared.status, 0) << spared.err;
+    EXPECT_NE(spared.err.find("removed 2 cached volumes"), std::string::npos) << spared.err;
+    EXPECT_NE(spared.err.find("kept 1 being written by a running command"), std::string::npos) << spared.err;
+    EXPECT_TRUE(fs::exists(live));
+    EXPECT_FALSE(fs::exists(dead));
+    fs::remove(live);
     // An empty folder (an unset shell variable) is refused: it named the default folder, which clear would empty.
     for (const char* command : {"cache clear --cache-dir ''", "sdf scene:sphere --volume-res 48 --cache-dir ''"})
         expectBadInput(test::runCli(command), {"--cache-dir: empty"});
@@ -84,7 +99,8 @@ TEST_F(Cli, CacheClearRemovesOnlyCaches)
     const std::vector<std::string> caches = {"sphere.0123456789abcdef.res48.reach1.vdb",
                                              "sphere.0123456789abcdef.res48.vdb",  // the name before the reach
                                              "sphere.res48.vdb",                   // and before the hash
-                                             "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.42.0",
+                                             // a temporary of a pid beyond any pid_max: no writer runs
+                                             "sphere.0123456789abcdef.res48.reach0.6.vdb.tmp.2147483645.0",
                                              "sphere.0123456789abcdef.res48.reach1.band4.5.unsigned.vdb"};
     const std::vector<std::string> others = {"my_simulation.vdb", "results.vdb.tmp.1.0", "sphere.res48x.vdb",
                                              "notes.txt"};
