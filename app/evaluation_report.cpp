@@ -152,6 +152,9 @@ std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b,
     const std::set<std::string> meshSettings{"mesh hash",  "--scalar",    "--scalar-file", "--cell-to-point",
                                              "--hotspots", "--cap-holes", "--distance"};
     auto shown = [](const nlohmann::json& value) { return value.is_null() ? std::string("unset") : value.dump(); };
+    // --views is written only above 1 (and every method has it): an entry without it had one view.
+    auto views = [](const nlohmann::json& s) { return s.contains("--views") ? s.at("--views") : nlohmann::json(1); };
+    if (views(a) != views(b)) return "--views " + shown(views(a)) + " against " + shown(views(b));
     // A flag one entry lacks is not its method's (--alpha-scan of a method without alpha).
     for (const auto& [flag, value] : a.items())
         if (b.contains(flag) && (sameMesh || meshSettings.count(flag) == 0) && value != b.at(flag))

@@ -56,6 +56,12 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
                    {"other.json: torus:front was evaluated with --steps 2 against 1 in", "p1.json (sphere:front); merge "
                                                                                          "parts of one evaluation"});
+    // --views is recorded only above 1: a part of one view against one of two (they were joined).
+    other = nlohmann::json::parse(std::ifstream(output("p2.json")));
+    other.at("torus").at("front").at("settings")["--views"] = 2;
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"other.json: torus:front was evaluated with --views 2 against 1 in"});
     // Two meshes of one file name (patient01/surface.vtp, patient02/surface.vtp) are not one row.
     other = nlohmann::json::parse(std::ifstream(output("p2.json")));
     other.at("torus").at("front").at("settings")["mesh hash"] = "0123456789abcdef";
