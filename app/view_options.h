@@ -106,10 +106,10 @@ struct ViewOptions {
     }
     /// @brief True when a camera is given: --camera, --view, --theta or --phi.
     bool givesCamera() const { return !cameraFile.empty() || !viewFile.empty() || given("--theta") || given("--phi"); }
+    /// @brief True when option @a name (of the command these options were added to) was given.
+    bool given(const char* name) const;
 
 private:
-    /// True when option @a name was given on the command line.
-    bool given(const char* name) const;
 
     CLI::App* mCommand = nullptr;
     mutable std::shared_ptr<const ViewFile> mView;  ///< --view's file, once read

@@ -34,7 +34,10 @@ void ViewerOptions::addTo(CLI::App& app)
                    "Window width in pixels (headless: the picture's width; the colour bar's margin is added beside it, "
                    "as render's --res)")
         ->capture_default_str();
-    app.add_option("--height", height, "Window height in pixels (headless: the picture's height)")->capture_default_str();
+    app.add_option("--height", height,
+                   "Window height in pixels (headless: the picture's height; a --screenshot of a --view: the view's "
+                   "size unless given)")
+        ->capture_default_str();
     app.add_option("--screenshot", screenshot,
                    "Render without input, write this PNG and exit; of a series, one per step, numbered as render "
                    "numbers frames (shot_0000.png, ...), each step shown as the time slider shows it");
@@ -70,9 +73,6 @@ void ViewerOptions::addTo(CLI::App& app)
 
 void ViewerOptions::validate()
 {
-    if (width < 16 || height < 16 || width > 8192 || height > 8192)
-        throw ValueError("--width/--height " + std::to_string(width) + "x" + std::to_string(height) +
-                         " is out of range (16 to 8192 each)");
     if (frames < 1 || frames > 100000) throw ValueError("--frames " + std::to_string(frames) + " must be at least 1");
     if (benchmarkFrames < 2 || benchmarkFrames > 100000)
         throw ValueError("--benchmark-frames " + std::to_string(benchmarkFrames) + " must be at least 2");
@@ -87,14 +87,21 @@ void ViewerOptions::validate()
     if (play && headless())
         throw InputError("--play: --screenshot already shows every step of a series in turn, and --benchmark orbits one");
     if (!regionPng.empty() && screenshot.empty()) throw InputError("--region-png needs --screenshot");
-    if (!probe.empty()) {
-        if (benchmark) throw InputError("--probe: the benchmark orbits; probe a screenshot or the window");
-        parseProbePixel(probe, width, height);
-    }
+    if (!probe.empty() && benchmark) throw InputError("--probe: the benchmark orbits; probe a screenshot or the window");
     checkOutputFiles({{screenshot, "--screenshot", {".png"}},
                       {regionPng, "--region-png", {".png"}},
                       {uiScreenshot, "--ui-screenshot", {".png"}}},
                      readFiles(sources, mesh.load.read.scalarFile, view.cameraFile, view.viewFile));
+    // A screenshot of a view file is the view's picture, sized as `render --view` sizes it (the
+    // window's default size was taken instead).
+    if (const ViewFile* v = view.view(); v && !screenshot.empty()) {
+        if (!view.given("--width")) width = v->width;
+        if (!view.given("--height")) height = v->height;
+    }
+    if (width < 16 || height < 16 || width > 8192 || height > 8192)
+        throw ValueError("--width/--height " + std::to_string(width) + "x" + std::to_string(height) +
+                         " is out of range (16 to 8192 each)");
+    if (!probe.empty()) parseProbePixel(probe, width, height);
     mesh.fitReachTo({view.renderOptions().method});
     view.camera();  // reads --camera or --view now: a bad file fails alone, before the mesh's notes
     if (int(!screenshot.empty()) + int(!uiScreenshot.empty()) + int(benchmark) > 1)

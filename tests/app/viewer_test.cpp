@@ -196,11 +196,14 @@ TEST(Viewer, ViewFileShowsTheCpuPicture)
     const CliResult cpu = runCli("render scene:vessel-tree --view '" + dir.file("v.json") + "' --no-legend" + cache +
                                  " -o '" + dir.file("cpu.png") + "' --exr '" + dir.file("cpu.exr") + "'");
     ASSERT_EQ(cpu.status, 0) << cpu.err;
-    const RunResult run = runViewer("scene:vessel-tree --view '" + dir.file("v.json") + "' --width 256 --height 256 --frames 2 "
+    // The screenshot takes the view's size (256 x 256), as render --view does.
+    const RunResult run = runViewer("scene:vessel-tree --view '" + dir.file("v.json") + "' --frames 2 "
                                     "--no-legend --screenshot '" + dir.file("gpu.png") + "' --region-png '" +
                                         dir.file("gpu-region.png") + "'" + cache,
                                     true, dir);
     ASSERT_EQ(run.status, 0) << run.output;
+    const core::Image screenshot = core::readPng(dir.file("gpu.png"));
+    ASSERT_EQ(std::make_pair(screenshot.width(), screenshot.height()), std::make_pair(256, 256));
     const Agreement a = agreement(core::readPng(dir.file("cpu.png")), core::readExrChannel(dir.file("cpu.exr"), "region"),
                                   core::readPng(dir.file("gpu.png")), core::readPng(dir.file("gpu-region.png")));
     std::cout << "[ viewer   ] view file: regions agree on " << 100.0 * a.regionAgreement << "% of pixels; mean colour "
