@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,7 +57,7 @@ bool isBeingWritten(const fs::path& path)
     const std::size_t tmp = name.rfind(".tmp.");
     if (tmp == std::string::npos) return false;
     const long pid = std::strtol(name.c_str() + tmp + 5, nullptr, 10);
-    return pid > 0 && (::kill(pid_t(pid), 0) == 0 || errno == EPERM);
+    return pid > 0 && pid <= std::numeric_limits<pid_t>::max() && (::kill(pid_t(pid), 0) == 0 || errno == EPERM);
 }
 
 std::string humanBytes(std::uintmax_t bytes)
