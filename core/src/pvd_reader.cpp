@@ -50,6 +50,8 @@ std::vector<TimeStep> detail::parsePvd(const std::string& path, std::string text
         if (part != "0") failInput(path, where + " is part " + part + " of its time step; one part per step is read");
         step.path = (folder / file).string();
         std::error_code ec;
+        if (std::filesystem::is_directory(step.path, ec))
+            failInput(path, where + " names '" + file + "', which is a folder");
         if (!std::filesystem::is_regular_file(step.path, ec)) {
             failInput(path, where + " names '" + file + "', which does not exist");
         }

@@ -217,6 +217,7 @@ RawMesh readVtkXml(const std::string& path, std::string data)
     }
 
     const pugi::xml_node dataset = root.child(type.c_str());
+    if (!dataset) failInput(path, "the file's type is " + type + " but it holds no <" + type + "> element");
     const auto pieces = dataset.children("Piece");
     const std::size_t pieceCount = std::size_t(std::distance(pieces.begin(), pieces.end()));
     if (pieceCount != 1) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 namespace ivis::core {
@@ -82,6 +83,7 @@ TEST(PvdReader, BadCollectionsNameTheFileAndTheProblem)
 {
     TempDir dir;
     writeFile(dir.file("a.vtp"), "");
+    std::filesystem::create_directory(dir.file("steps.vtp"));
     const struct {
         const char* text;
         const char* problem;
@@ -90,6 +92,8 @@ TEST(PvdReader, BadCollectionsNameTheFileAndTheProblem)
          "DataSet 0 names 'missing.vtp', which does not exist"},
         {"<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"1\"/></Collection></VTKFile>",
          "DataSet 0 has no file"},
+        {"<VTKFile type=\"Collection\"><Collection><DataSet file=\"steps.vtp\"/></Collection></VTKFile>",
+         "DataSet 0 names 'steps.vtp', which is a folder"},
         {"<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"one\" file=\"a.vtp\"/></Collection></VTKFile>",
          "DataSet 0 has the timestep 'one', which is not a finite number"},
         {"<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"nan\" file=\"a.vtp\"/></Collection></VTKFile>",

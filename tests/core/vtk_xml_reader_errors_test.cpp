@@ -204,6 +204,9 @@ TEST(VtkXmlReader, MalformedFiles)
               "VTK XML type 'ImageData' is not read (PolyData and UnstructuredGrid are)");
     EXPECT_EQ(readError(dir, replaced(text, "</Piece>", "</Piece><Piece NumberOfPoints=\"0\"/>")),
               "the PolyData has 2 pieces; files with one piece are read");
+    // It said "the UnstructuredGrid has 0 pieces".
+    EXPECT_EQ(readError(dir, replaced(text, "type=\"PolyData\"", "type=\"UnstructuredGrid\"")),
+              "the file's type is UnstructuredGrid but it holds no <UnstructuredGrid> element");
     EXPECT_EQ(readError(dir, replaced(text, "header_type=\"UInt32\"", "compressor=\"vtkLZ4DataCompressor\"")),
               "compressor 'vtkLZ4DataCompressor' is not supported (vtkZLibDataCompressor is)");
     EXPECT_EQ(readError(dir, replaced(text, "header_type=\"UInt32\"", "header_type=\"UInt16\"")),
