@@ -37,6 +37,21 @@ inline CLI::Validator finiteRange(double lo, double hi) { return detail::numberR
 /// @brief finiteRange(0, hi) without 0 itself: a length that must not vanish.
 inline CLI::Validator positiveUpTo(double hi) { return detail::numberRange(0.0, hi, false); }
 
+/// @brief A whole number from 0 to 2^64 - 1 written in digits (CLI11 read "-1" as 2^64 - 1 and
+///        2^64 as 2^64 - 1, so three seeds gave one run).
+inline CLI::Validator unsigned64()
+{
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::string expected = "is not a whole number from 0 to 18446744073709551615";
+            if (text.empty() || text.size() > 20 || text.find_first_not_of("0123456789") != std::string::npos ||
+                (text.size() == 20 && text > "18446744073709551615"))
+                return "'" + text + "' " + expected;
+            return {};
+        },
+        "");
+}
+
 /// @brief Refuses an empty value ("--cache-dir $DIR" with DIR unset would name the default folder).
 inline CLI::Validator nonEmpty()
 {

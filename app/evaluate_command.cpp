@@ -188,7 +188,7 @@ Command addEvaluateCommand(CLI::App& app)
         const vdb::VolumeOptions volumeOptions = options->mesh.volumeOptions();
         if (options->resume && options->json.empty()) throw InputError("--resume needs --json (the results to resume)");
         // --json may name the results --resume reads: that file is meant to be rewritten.
-        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}},
+        checkOutputFiles({jsonOutput(options->json, "--json"), markdownOutput(options->markdown, "--markdown")},
                          readFiles(options->meshes, options->mesh.load.read.scalarFile, "", ""));
         if (!options->pictures.empty()) {
             checkOutputFolder(options->pictures);

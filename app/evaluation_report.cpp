@@ -9,6 +9,17 @@
 namespace ivis::app {
 namespace {
 
+/// @a name as a Markdown table cell: '|' escaped, which would end the cell, and line breaks as spaces.
+std::string tableCell(const std::string& name)
+{
+    std::string cell;
+    for (char c : name) {
+        if (c == '|') cell += "\\|";
+        else cell += c == '\n' || c == '\r' ? ' ' : c;
+    }
+    return cell;
+}
+
 std::string percent(double fraction)
 {
     char buffer[16];
@@ -68,7 +79,7 @@ std::string methodTable(const nlohmann::json& results, const ReportLayout& layou
     text << "\n";
     for (const std::string& stem : layout.stems) {
         if (!results.contains(stem)) continue;
-        text << "| " << stem << " |";
+        text << "| " << tableCell(stem) << " |";
         for (const auto& m : layout.methods) {
             const nlohmann::json& row = results.at(stem);
             text << " " << (row.contains(m) ? cell(row.at(m)) : std::string("-")) << " |";  // -: not evaluated
@@ -90,7 +101,7 @@ std::string secondsTable(const nlohmann::json& results, const ReportLayout& layo
     text << "\n";
     for (const std::string& stem : layout.stems) {
         if (!results.contains(stem)) continue;
-        text << "| " << stem << " |";
+        text << "| " << tableCell(stem) << " |";
         for (const auto& m : layout.methods)
             for (int r : layout.optResolutions) {
                 const nlohmann::json& row = results.at(stem);

@@ -57,7 +57,7 @@ int main(int argc, char** argv)
         return 2;
     } catch (const ivis::Cancelled& e) {
         std::cerr << "inversevis: " << e.what() << "\n";
-        return 130;
+        return ivis::core::interruptExitStatus();
     } catch (const std::filesystem::filesystem_error& e) {  // a path the system refuses: too long, not permitted
         std::cerr << "inversevis: error: " << (e.path1().empty() ? std::string("a path") : e.path1().string()) << ": "
                   << e.code().message() << "\n";

@@ -95,7 +95,7 @@ Command addMergeCommand(CLI::App& app)
     return {command, [options] {
         std::vector<InputFile> parts;
         for (const std::string& part : options->parts) parts.push_back({part, "a part"});
-        checkOutputFiles({{options->json, "--json", {}}, {options->markdown, "--markdown", {}}}, parts);
+        checkOutputFiles({jsonOutput(options->json, "--json"), markdownOutput(options->markdown, "--markdown")}, parts);
         nlohmann::json results = nlohmann::json::object();
         ReportLayout layout;
         std::set<std::string> methodsSeen;

@@ -29,7 +29,9 @@ void OptimizationOptions::addTo(CLI::App& command)
     command.add_option("--opt-visibility-res", optVisibilityResolution,
                        "Voxels per side of the optimised visibility grid (default: opt-res / 2, at most --visibility-res)")
         ->check(CLI::Range(8, 8192));
-    command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")->capture_default_str();
+    command.add_option("--seed", seed, "Annealing seed (results are deterministic for a seed)")
+        ->check(unsigned64())
+        ->capture_default_str();
     command.add_option("--steps", steps, "Annealing proposals after the start view")
         ->check(CLI::Range(0, 1000000))
         ->capture_default_str();

@@ -94,15 +94,16 @@ Command addOptimizeCommand(CLI::App& app)
         options->view.viewIsStart = true;  // --view's angles start the search, whose views are framed
         std::vector<OutputFile> outputs = {
             {options->output, "-o", {".png"}},
-            {options->json, "--json", {}},
+            jsonOutput(options->json, "--json"),
             {options->plot, "--plot", {".png"}},
             {options->exr, "--exr", {".exr"}},
-            {options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut,
-             options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
-            {options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
-             options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out", {}}};
+            jsonOutput(options->cameraOut.empty() ? options->output + ".camera.json" : options->cameraOut,
+                       options->cameraOut.empty() ? "the camera file (-o's name + .camera.json)" : "--camera-out"),
+            jsonOutput(options->viewOut.empty() ? options->output + ".view.json" : options->viewOut,
+                       options->viewOut.empty() ? "the view file (-o's name + .view.json)" : "--view-out")};
         for (int k = 2; k <= options->views; ++k)
-            outputs.push_back({options->output + ".view" + std::to_string(k) + ".json", "a further view's view file (--views)", {}});
+            outputs.push_back(jsonOutput(options->output + ".view" + std::to_string(k) + ".json",
+                                         "a further view's view file (--views)"));
         const std::vector<InputFile> inputs = readFiles(options->sources, options->mesh.load.read.scalarFile,
                                                         options->view.cameraFile, options->view.viewFile);
         checkOutputFiles(outputs, inputs);
@@ -136,7 +137,7 @@ Command addOptimizeCommand(CLI::App& app)
             checkSeriesOutputFiles(frames, series->steps().size(), outputs, inputs);
             const SeriesSurvey survey = surveySeries(*series);
             options->view.checkColourFlags(survey.scalar, series->source());
-            seriesScale = options->view.colorScaleRequest().resolve(survey.sample);
+            seriesScale = options->view.colorScaleRequest().resolve(survey.sample, series->source());
             // Silent, as the survey: the frames load the steps again and say their notes (a refused
             // series says only why).
             const core::ScopedLogLevel silent(core::LogLevel::Silent);

@@ -11,6 +11,13 @@
 
 namespace ivis::app {
 
+OutputFile jsonOutput(const std::string& path, const std::string& option) { return {path, option, {".json"}, true}; }
+
+OutputFile markdownOutput(const std::string& path, const std::string& option)
+{
+    return {path, option, {".md", ".markdown"}, true};
+}
+
 void checkOutputFolder(const std::string& path)
 {
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -55,14 +62,6 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
         checkOutputFolder(output.path);
         if (std::filesystem::is_directory(output.path))
             throw InputError(output.path + ": " + output.option + " names a folder, not a file");
-        if (!output.extensions.empty()) {
-            const std::string extension = core::lowerCaseExtension(output.path);
-            if (std::find(output.extensions.begin(), output.extensions.end(), extension) == output.extensions.end()) {
-                std::string names;
-                for (const std::string& e : output.extensions) names += (names.empty() ? "" : " or ") + e;
-                throw InputError(output.path + ": " + output.option + " writes " + names + " files (name it so)");
-            }
-        }
         const std::filesystem::path file = fileOf(output.path);
         if (const auto named = seen.find(file); named != seen.end())
             throw InputError(output.path + ": named by both " + named->second->option + " and " + output.option +
@@ -71,6 +70,22 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
             throw InputError(output.path + ": " + output.option + " would overwrite " + input->second->option +
                              ", which this command reads");
         seen.emplace(file, &output);
+    }
+    // Names are checked after: that a file is named twice, or is read, says more than its extension.
+    const auto isStream = [](const std::string& path) {
+        std::error_code error;
+        const std::filesystem::file_status status = std::filesystem::status(path, error);
+        return !error && (std::filesystem::is_character_file(status) || std::filesystem::is_fifo(status) ||
+                          std::filesystem::is_socket(status));
+    };
+    for (const OutputFile& output : outputs) {
+        if (output.path.empty() || output.extensions.empty() || (output.stream && isStream(output.path))) continue;
+        const std::string extension = core::lowerCaseExtension(output.path);
+        if (std::find(output.extensions.begin(), output.extensions.end(), extension) == output.extensions.end()) {
+            std::string names;
+            for (const std::string& e : output.extensions) names += (names.empty() ? "" : " or ") + e;
+            throw InputError(output.path + ": " + output.option + " writes " + names + " files (name it so)");
+        }
     }
 }
 

@@ -9,12 +9,19 @@
 namespace ivis::app {
 
 /// @brief A file a command writes: its path (empty: not asked for), the option that names it and
-///        the extensions its format takes (empty: any, as for JSON and Markdown).
+///        the extensions its format takes (empty: any).
 struct OutputFile {
     std::string path;
     std::string option;
     std::vector<std::string> extensions;
+    bool stream = false;  ///< text that may go to a stream (/dev/stdout, a named pipe), whatever its name
 };
+
+/// @brief A JSON file a command writes: named .json, or a stream.
+OutputFile jsonOutput(const std::string& path, const std::string& option);
+
+/// @brief A Markdown file a command writes: named .md or .markdown, or a stream.
+OutputFile markdownOutput(const std::string& path, const std::string& option);
 
 /// @brief Checks, before any work, that the folder of output file @a path exists (outputs never
 ///        create folders, so a mistyped -o leaves nothing behind).
@@ -34,7 +41,8 @@ std::vector<InputFile> readFiles(const std::vector<std::string>& meshes, const s
                                  const std::string& cameraFile, const std::string& viewFile);
 
 /// @brief Checks each of @a outputs that is asked for: its folder exists, it is not a folder, its name ends in one of
-///        its extensions (in any case: -o writes PNG, so "x.jpg" would be a PNG misnamed), no two
+///        its extensions (in any case: -o writes PNG, so "x.jpg" would be a PNG misnamed; a JSON
+///        file named "fig.png" would replace a figure) unless it is a stream that may be, no two
 ///        name the same file (one would overwrite the other), and none names one of @a inputs.
 /// @throw InputError naming the file and the problem
 void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<InputFile>& inputs = {});

@@ -97,7 +97,7 @@ void renderSeriesPictures(RenderFlags& flags, const RenderPlan& plan, core::Prog
         throw InputError(series.source() + ": no scalar to draw a colour bar of (see --scalar)");
     request.stepScales = survey.stepScales;
     if (!flags.rangePerFrame || !flags.legendOnly.empty())
-        request.scale = flags.view.colorScaleRequest().resolve(survey.sample);
+        request.scale = flags.view.colorScaleRequest().resolve(survey.sample, series.source());
     if (!flags.legendOnly.empty()) {
         render::RenderOptions legend = plan.asked;
         legend.shading.scale = *request.scale;
@@ -331,11 +331,11 @@ Command addRenderCommand(CLI::App& app)
         plan.outputs = {
             {options->output, "-o", {".png"}},
             {options->exr, "--exr", {".exr"}},
-            {options->statsJson, "--stats-json", {}},
-            {defaultCamera ? options->output + ".camera.json" : options->cameraOut,
-             defaultCamera ? "the camera file (-o's name + .camera.json)" : "--camera-out", {}},
+            jsonOutput(options->statsJson, "--stats-json"),
+            jsonOutput(defaultCamera ? options->output + ".camera.json" : options->cameraOut,
+                       defaultCamera ? "the camera file (-o's name + .camera.json)" : "--camera-out"),
             {options->legendOnly, "--legend-only", {".svg", ".png"}},
-            {options->viewOut, "--view-out", {}},
+            jsonOutput(options->viewOut, "--view-out"),
             {options->tearMap, "--tear-map", {".png"}},
             {options->unseenMap, "--unseen-map", {".png"}}};
         plan.inputs = readFiles(options->sources, options->mesh.load.read.scalarFile, options->view.cameraFile,

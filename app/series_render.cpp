@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string_view>
@@ -182,6 +183,8 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
             video = path;
         }
     }
+    if (const std::string path = videoPath(request.png); video.is_null() && std::filesystem::exists(path))
+        core::logWarning(path + ": an earlier run's video, which does not show these frames (left as it was)");
 
     const glm::dvec2 angles = camera.angles();
     nlohmann::json stats = {{"series", series.source()},

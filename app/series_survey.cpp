@@ -45,7 +45,7 @@ SeriesSurvey surveySeries(core::SurfaceSeries& series, const core::ColorScaleReq
         survey.meshHashes.push_back(core::meshHash(field.mesh));
         survey.scalar = survey.scalar || field.hasScalar();
         const std::size_t stride = std::max<std::size_t>(1, field.values.size() * steps / kSurveySampleSize);
-        if (eachStep) survey.stepScales.push_back(eachStep->resolve(field.values));
+        if (eachStep) survey.stepScales.push_back(eachStep->resolve(field.values, field.sourcePath));
         for (std::size_t i = 0; i < field.values.size(); ++i) {
             const float v = field.values[i];
             if (!std::isfinite(v)) continue;

@@ -235,7 +235,7 @@ render::RenderOptions ViewOptions::renderOptions(const core::SurfaceField& field
 {
     checkColourFlags(field.hasScalar(), field.sourcePath);
     render::RenderOptions options = renderOptions();
-    options.shading.scale = colorScaleRequest().resolve(field.values);
+    options.shading.scale = colorScaleRequest().resolve(field.values, field.sourcePath);
     options.scalarName = field.name;
     return options;
 }

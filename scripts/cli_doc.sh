@@ -30,7 +30,8 @@ what each option means in depth: the pages each section names. The benchmark pro
 `inversevis-bench` is described in [performance.md](performance.md).
 
 Every command prints errors as one line, `inversevis: error: <file>: <problem>`, and exits with
-status 2 on bad input; Ctrl-C stops it within a second with status 130, leaving no partial output.
+status 2 on bad input; Ctrl-C stops it within a second with status 130, leaving no partial output
+(SIGTERM and SIGHUP too, with status 143 and 129: `timeout`, Slurm's time limit, a closed terminal).
 
 HEADER
   section "inversevis" "The program's commands and its global flags (\`-q\`, \`--version\`)." "$cli"

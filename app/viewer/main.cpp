@@ -56,7 +56,7 @@ int main(int argc, char** argv)
         return 2;
     } catch (const ivis::Cancelled& e) {
         std::cerr << "inversevis-view: " << e.what() << "\n";
-        return 130;
+        return ivis::core::interruptExitStatus();
     } catch (const ivis::InternalError& e) {
         std::cerr << "inversevis-view: internal error: " << e.what() << "\n";
         return 1;

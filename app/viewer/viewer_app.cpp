@@ -52,7 +52,8 @@ ViewerApp::ViewerApp(const ViewerOptions& options, core::SurfaceField field,
     mShowLegend = render.legend;
     mOutline = render.outline;
     const core::ColorScaleRequest scaleRequest = mOptions.view.colorScaleRequest();
-    mDataScale = scaleRequest.resolve(mSeries ? mSurvey.sample : mField->values);
+    mDataScale = scaleRequest.resolve(mSeries ? mSurvey.sample : mField->values,
+                                      mSeries ? mSeries->source() : mField->sourcePath);
     if (mSeries) mShading.scale = mDataScale;  // one scale for every step
     mOptimiser.optimization = mOptions.optimization;
     mOptimiser.resolution = mOptions.optResolution;

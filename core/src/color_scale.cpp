@@ -63,7 +63,7 @@ void ColorScaleRequest::validate() const
         throw ValueError("--log needs a positive range; --range " + rangeText(range->lo, range->hi) + " is not");
 }
 
-ColorScale ColorScaleRequest::resolve(const std::vector<float>& values) const
+ColorScale ColorScaleRequest::resolve(const std::vector<float>& values, const std::string& source) const
 {
     validate();
     ColorScale scale;
@@ -74,7 +74,8 @@ ColorScale ColorScaleRequest::resolve(const std::vector<float>& values) const
     } else {
         const std::vector<float> kept = finiteValues(values, log);
         if (log && kept.empty() && !values.empty())
-            throw ValueError("--log: the scalar has no positive value to put on a logarithmic scale");
+            throw ValueError((source.empty() ? "" : source + ": ") +
+                             "--log: the scalar has no positive value to put on a logarithmic scale");
         if (percentiles) {
             scale.range = {float(percentile(kept, percentiles->first)), float(percentile(kept, percentiles->second))};
             if (kept.empty()) scale.range = {0.0f, 0.0f};

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -194,10 +195,12 @@ ScalarRange scalarRangeFromUser(double lo, double hi)
     const double biggest = std::numeric_limits<float>::max();
     auto valid = [&](double v) { return std::isfinite(v) && std::abs(v) <= biggest; };
     std::ostringstream text;
-    text << "invalid range [" << lo << ", " << hi << "]: ";
+    text << std::setprecision(15) << "invalid range [" << lo << ", " << hi << "]: ";
     if (!valid(lo) || !valid(hi))
         throw ValueError(text.str() + "both ends must be finite numbers of magnitude at most 3.4e38 (single precision)");
-    if (!(float(lo) < float(hi))) throw ValueError(text.str() + "lo must be less than hi");
+    if (!(lo < hi)) throw ValueError(text.str() + "lo must be less than hi");
+    if (!(float(lo) < float(hi)))
+        throw ValueError(text.str() + "lo and hi are one number in single precision, which the colours are mapped in");
     return {float(lo), float(hi)};
 }
 

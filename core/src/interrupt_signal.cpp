@@ -2,34 +2,40 @@
 
 #include <atomic>
 #include <csignal>
+#include <initializer_list>
 
 namespace ivis::core {
 namespace {
 
-std::atomic<bool> gInterrupted{false};
+std::atomic<int> gSignal{0};  ///< the signal received, 0 before one
 
-extern "C" void onInterrupt(int /*signal*/)
+extern "C" void onInterrupt(int signal)
 {
-    gInterrupted = true;
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the program at once
+    gSignal = signal;
+    std::signal(signal, SIG_DFL);  // a second one ends the program at once
 }
 
 }  // namespace
 
-void installInterruptHandler() { std::signal(SIGINT, onInterrupt); }
+void installInterruptHandler()
+{
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, onInterrupt);
+}
 
-bool interruptRequested() { return gInterrupted; }
+bool interruptRequested() { return gSignal != 0; }
+
+int interruptExitStatus() { return 128 + (gSignal != 0 ? int(gSignal) : SIGINT); }
 
 ScopedInterruptHandler::ScopedInterruptHandler()
 {
-    gInterrupted = false;
+    gSignal = 0;
     mPrevious = std::signal(SIGINT, onInterrupt);
 }
 
 ScopedInterruptHandler::~ScopedInterruptHandler()
 {
     std::signal(SIGINT, mPrevious == SIG_ERR ? SIG_DFL : mPrevious);
-    gInterrupted = false;
+    gSignal = 0;
 }
 
 }  // namespace ivis::core

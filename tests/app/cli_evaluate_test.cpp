@@ -39,6 +39,19 @@ TEST_F(Cli, EvaluateTakesTheMeshAndVolumeOptions)
     EXPECT_TRUE(nlohmann::json::parse(std::ifstream(output("e.json"))).contains("vampy_artery_cfd_pressure"));
 }
 
+TEST_F(Cli, EvaluateTablesEscapeAMeshNameThatWouldSplitACell)
+{
+    const std::string mesh = input("left|right.obj");  // its '|' added a column to every row
+    test::writeFile(mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    const CliResult result = runCli("evaluate " + quoted(mesh) + " --volume-res 32 --methods front --opt-res 16 "
+                                    "--steps 0 --display-res 32 --cache-dir " + quoted(output("")) + " --markdown " +
+                                    quoted(output("e.md")));
+    ASSERT_EQ(result.status, 0) << result.err;
+    const std::string tables = test::readFile(output("e.md"));
+    EXPECT_NE(tables.find("\n| left\\|right | "), std::string::npos) << tables;
+    EXPECT_EQ(tables.find("| left|right |"), std::string::npos) << tables;
+}
+
 TEST_F(Cli, EvaluateReportsTheMeasuresOfEveryMethod)
 {
     const CliResult result = runCli("evaluate scene:sphere --hotspots 2 --volume-res 64 --methods front,inversevis "
@@ -131,6 +144,10 @@ TEST_F(Cli, EvaluateTakesItsMeshesAfterItsListOptions)
     expectBadInput(runCli("evaluate --opt-res ,, --methods front scene:sphere --volume-res 48"),
                    {"--opt-res: ',,' lists nothing"});
     expectBadInput(runCli("evaluate --methods=, scene:sphere --volume-res 48"), {"--methods: ',' lists nothing"});
+    // A seed out of range: "-1" and 2^64 both ran as 2^64 - 1.
+    for (const char* seed : {"-1", "18446744073709551616", "1e3"})
+        expectBadInput(runCli(std::string("optimize scene:sphere --volume-res 48 --seed ") + seed),
+                       {std::string("'") + seed + "' is not a whole number from 0 to 18446744073709551615"});
 }
 
 TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
@@ -164,7 +181,7 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
     ASSERT_EQ(one.status, 0) << one.err;
     EXPECT_NE(one.err.find("torus: kept from"), std::string::npos) << one.err;
     const std::string first = one.out.substr(0, one.out.find("\n\n", one.out.find("|---")));  // the first table
-    for (const std::string& row : {"| Surface | inversevis | front |", "\n| sphere | ", "\n| torus | "})
+    for (const char* row : {"| Surface | inversevis | front |", "\n| sphere | ", "\n| torus | "})
         EXPECT_NE(first.find(row), std::string::npos) << row << " in\n" << one.out;
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
     // Resumed with other options, the kept meshes' figures would not be this run's (they were kept).

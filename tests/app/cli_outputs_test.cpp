@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <csignal>
@@ -22,6 +23,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -41,6 +43,13 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     expectRejected("optimize scene:sphere --volume-res 48 -o " + quoted(output("b.exr")), {"b.exr: -o writes .png"});
     expectRejected(render("scene:sphere", "--stats-json " + quoted(output("x.png"))),
                    {output("x.png") + ": named by both -o and --stats-json"});
+    // JSON and Markdown are named so too: `--view-out fig.png` replaced a figure with JSON.
+    expectRejected(render("scene:sphere", "--view-out " + quoted(output("fig.png"))),
+                   {output("fig.png") + ": --view-out writes .json files (name it so)"});
+    expectRejected(render("scene:sphere", "--camera-out " + quoted(output("c.exr"))),
+                   {"c.exr: --camera-out writes .json"});
+    expectRejected("merge " + quoted(output("none.json")) + " --markdown " + quoted(output("t.txt")),
+                   {output("t.txt") + ": --markdown writes .md or .markdown files"});
     expectRejected(render("scene:sphere", "--camera-out " + quoted(output("c.json")) + " --view-out " +
                                               quoted(output(".") + "/c.json")),
                    {"named by both --camera-out and --view-out"});
@@ -66,15 +75,13 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
                          "<DataSet timestep=\"1\" file=\"m2.obj\"/></Collection></VTKFile>");
     expectRejected(render(pvd, "--stats-json " + quoted(step)),
                    {step + ": --stats-json would overwrite a step of " + pvd + ", which this command reads"});
+    // (A JSON output cannot name a frame or the video: it is named .json.)
     expectRejected(render(pvd, "--no-video --stats-json " + quoted(output("x_0001.png"))),
-                   {"x_0001.png: named by both --stats-json and -o (frame 1)"});
-    expectRejected(render(pvd, "--exr " + quoted(output("x.exr")) + " --view-out " + quoted(output("x_0000.exr"))),
-                   {"x_0000.exr: named by both --view-out and --exr (frame 0)"});
-    expectRejected(render(pvd, "--camera-out " + quoted(output("x.mp4"))),
-                   {"x.mp4: named by both --camera-out and the video (-o's name as .mp4)"});
-    expectRejected("optimize " + quoted(pvd) + " --volume-res 48 -o " + quoted(output("b.png")) + " --json " +
+                   {"x_0001.png: --stats-json writes .json files"});
+    expectRejected(render(pvd, "--camera-out " + quoted(output("x.mp4"))), {"x.mp4: --camera-out writes .json files"});
+    expectRejected("optimize " + quoted(pvd) + " --volume-res 48 -o " + quoted(output("b.png")) + " --plot " +
                        quoted(output("b_0000.png")),
-                   {"b_0000.png: named by both --json and -o (frame 0)"});
+                   {"b_0000.png: named by both --plot and -o (frame 0)"});
     test::writeFile(input("v.json"), "{}");
     expectRejected(render("scene:sphere", "--view-out " + quoted(input("v.json")) + " --view " +
                                               quoted(input("v.json"))),
@@ -82,12 +89,20 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     fs::create_directory(input("folder.png"));
     expectRejected(render("scene:sphere", "--tear-map " + quoted(input("folder.png"))),
                    {input("folder.png") + ": --tear-map names a folder, not a file"});
-    // Any case of the extension, and any name for JSON.
+    // Any case of the extension; JSON into a named pipe (or /dev/stdout), whatever its name.
+    const std::string pipe = output("stats");
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] { received = test::readFile(pipe); });
     const CliResult upper = runCli("render scene:sphere --volume-res 48 --res 32x32 --cache-dir " + quoted(output("")) +
-                                   " -o " + quoted(output("X.PNG")) + " --stats-json " + quoted(output("stats.txt")));
+                                   " -o " + quoted(output("X.PNG")) + " --stats-json " + quoted(pipe));
+    // Had the command never opened the pipe, the reader would wait for ever: open it for it.
+    if (const int unblock = ::open(pipe.c_str(), O_WRONLY | O_NONBLOCK); unblock >= 0) ::close(unblock);
+    reader.join();
     EXPECT_EQ(upper.status, 0) << upper.err;
     EXPECT_TRUE(fs::exists(output("X.PNG")));
-    EXPECT_TRUE(fs::exists(output("stats.txt")));
+    EXPECT_TRUE(nlohmann::json::accept(received)) << received;
+    EXPECT_TRUE(fs::is_fifo(pipe));
 }
 
 /// The command prefix that gives the CLI about 2 GB of memory; its sanitizer reports, if any, go

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -354,22 +355,25 @@ TEST_F(CliSeries, OptimizeFindsOneViewForTheWholeSeries)
     EXPECT_FALSE(std::filesystem::exists(output("best.png")));
 }
 
-TEST_F(CliSeries, CtrlCAfterSomeFramesLeavesNoFrame)
+TEST_F(CliSeries, CtrlCOrABatchSystemsStopAfterSomeFramesLeavesNoFrame)
 {
-    const test::Child child = test::startCli(renderSeries(quoted(pvd()), "--no-video", "1600x1600"));
-    // Wait until two frames are done (and held back under temporary names), then press Ctrl-C. The
-    // wait is generous: a sanitizer build renders a frame in about 30 s.
-    const auto start = std::chrono::steady_clock::now();
-    while (test::readFile(child.err).find("frame 2/5") == std::string::npos &&
-           std::chrono::steady_clock::now() - start < std::chrono::seconds(300))
-        usleep(20000);
-    ASSERT_NE(test::readFile(child.err).find("frame 2/5"), std::string::npos) << test::readFile(child.err);
-    kill(child.pid, SIGINT);
-    const CliResult result = test::waitCli(child);
-    ASSERT_EQ(result.status, 130) << result.err;
-    // The volume cache is a cache; of the outputs, nothing.
-    for (const std::string& name : contents(mOutputs.path()))
-        EXPECT_EQ(name.substr(name.size() - 4), ".vdb") << name << " left behind";
+    // SIGTERM is what Slurm sends at a job's time limit, and `timeout`; it left the frames' temporaries.
+    for (const auto& [signal, status] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+        const test::Child child = test::startCli(renderSeries(quoted(pvd()), "--no-video", "1600x1600"));
+        // Wait until two frames are done (and held back under temporary names), then stop it. The
+        // wait is generous: a sanitizer build renders a frame in about 30 s.
+        const auto start = std::chrono::steady_clock::now();
+        while (test::readFile(child.err).find("frame 2/5") == std::string::npos &&
+               std::chrono::steady_clock::now() - start < std::chrono::seconds(300))
+            usleep(20000);
+        ASSERT_NE(test::readFile(child.err).find("frame 2/5"), std::string::npos) << test::readFile(child.err);
+        kill(child.pid, signal);
+        const CliResult result = test::waitCli(child);
+        ASSERT_EQ(result.status, status) << result.err;
+        // The volume cache is a cache; of the outputs, nothing.
+        for (const std::string& name : contents(mOutputs.path()))
+            EXPECT_EQ(name.substr(name.size() - 4), ".vdb") << name << " left behind after signal " << signal;
+    }
 }
 
 }  // namespace

@@ -80,6 +80,14 @@ TEST_F(CliSeries, VideoWhenFfmpegIsOnPathAndFramesAlone)
     }
     for (const std::string& name : contents(mOutputs.path())) EXPECT_EQ(name.find(".tmp."), std::string::npos) << name;
     EXPECT_FALSE(std::filesystem::exists(output("f.mp4")));
+
+    // An earlier run's video beside new frames: said to be stale (it was left without a word).
+    test::writeFile(output("f.mp4"), "an older video");
+    const CliResult noVideo = runCli(renderSeries(quoted(pvd()), "--no-video"));
+    ASSERT_EQ(noVideo.status, 0) << noVideo.err;
+    EXPECT_NE(noVideo.err.find(output("f.mp4") + ": an earlier run's video, which does not show these frames"),
+              std::string::npos)
+        << noVideo.err;
 }
 
 TEST_F(CliSeries, RealFfmpegWritesAnMp4OfTheSeriesFramesOnly)

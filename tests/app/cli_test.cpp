@@ -329,9 +329,9 @@ TEST_F(Cli, FlagsThatDoNothingHereAreRefused)
                    {"--legend-only excludes --range-per-frame"});
     // --pictures is a folder: naming the same path as a table is refused before the evaluation (it
     // ran, wrote the pictures, then failed to write the table).
-    expectRejected("evaluate scene:sphere --volume-res 48 --pictures " + quoted(output("p")) + " --markdown " +
-                       quoted(output("p")),
-                   {output("p") + ": --pictures and --markdown name the same path"});
+    expectRejected("evaluate scene:sphere --volume-res 48 --pictures " + quoted(output("p.md")) + " --markdown " +
+                       quoted(output("p.md")),
+                   {output("p.md") + ": --pictures and --markdown name the same path"});
     expectRejected("evaluate scene:sphere --volume-res 48 --opt-res 16,24,16", {"--opt-res: 16 is given twice"});
     expectRejected("merge " + quoted(input("missing.json")), {input("missing.json") + ": file not found"});
     // sdf shows no scalar, and says nothing of one (it named the array a picture would show).

@@ -108,6 +108,12 @@ TEST(ColorScaleRequest, RejectsContradictions)
     request = {};
     request.log = true;
     EXPECT_THROW(request.resolve({-3.0f, -1.0f, 0.0f}), ValueError);
+    try {  // the data's problem names its file, as every other one does
+        request.resolve({-3.0f, -1.0f, 0.0f}, "strip.vtk");
+        ADD_FAILURE() << "not refused";
+    } catch (const ValueError& e) {
+        EXPECT_STREQ(e.what(), "strip.vtk: --log: the scalar has no positive value to put on a logarithmic scale");
+    }
 }
 
 }  // namespace

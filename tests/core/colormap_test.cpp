@@ -172,6 +172,14 @@ TEST(ScalarRange, FromUserValidates)
     } catch (const ValueError& e) {
         EXPECT_STREQ(e.what(), "invalid range [3, 1]: lo must be less than hi");
     }
+    // Ends apart in double but one float: it printed "invalid range [1, 1]: lo must be less than hi".
+    try {
+        scalarRangeFromUser(1.0, 1.00000001);
+        ADD_FAILURE() << "not refused";
+    } catch (const ValueError& e) {
+        EXPECT_STREQ(e.what(), "invalid range [1, 1.00000001]: lo and hi are one number in single precision, "
+                               "which the colours are mapped in");
+    }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <ivis/core/colormap.h>
 
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,8 +42,9 @@ struct ColorScaleRequest {
     ///        percentiles of the values (of the positive ones on a log scale), else their minimum
     ///        and maximum (the smallest positive value as the low end on a log scale); then
     ///        widened symmetrically about 0 when asked.
+    /// @param source the file or series the values are of, which that message names ("" for none)
     /// @throw ValueError for a log scale over data without a positive value
-    ColorScale resolve(const std::vector<float>& values) const;
+    ColorScale resolve(const std::vector<float>& values, const std::string& source = "") const;
 };
 
 /// @brief The @a percent-th percentile (0..100) of the finite @a values by linear interpolation

@@ -1,17 +1,21 @@
 /// @file interrupt_signal.h
-/// @brief Ctrl-C for long runs: SIGINT sets a flag that the program's interrupters read, so the
-///        running operation stops at its next check, removes its temporary files and the program
-///        exits with status 130; a second Ctrl-C ends the program at once.
+/// @brief Ctrl-C and a batch system's stop for long runs: SIGINT, SIGTERM or SIGHUP sets a flag
+///        that the program's interrupters read, so the running operation stops at its next check,
+///        removes its temporary files and the program exits with status 128 + the signal (130 for
+///        Ctrl-C, 143 for SIGTERM, which Slurm and `timeout` send); a second one ends it at once.
 #pragma once
 
 namespace ivis::core {
 
-/// @brief Installs the SIGINT handler (once per process).
+/// @brief Installs the handler of SIGINT, SIGTERM and SIGHUP (once per process).
 void installInterruptHandler();
 
-/// @brief True once SIGINT was received after installInterruptHandler() (or while a
-///        ScopedInterruptHandler lives).
+/// @brief True once one of those signals was received after installInterruptHandler() (or SIGINT
+///        while a ScopedInterruptHandler lives).
 bool interruptRequested();
+
+/// @brief The exit status of a run the signal stopped: 128 + its number (130 before any).
+int interruptExitStatus();
 
 /// @brief While alive, SIGINT sets the flag interruptRequested() reads (cleared when it starts)
 ///        instead of whatever handled SIGINT before, which is put back at the end: a library call
