@@ -11,8 +11,8 @@ class InputError(ValueError):
 class Mesh:
     def __init__(
         self,
-        vertices: npt.NDArray[np.floating],
-        faces: npt.NDArray[np.integer],
+        vertices: Union[npt.NDArray[np.floating], Sequence[Sequence[float]]],
+        faces: Union[npt.NDArray[np.integer], Sequence[Sequence[int]]],
         point_data: Optional[Mapping[str, npt.NDArray[Any]]] = None,
         cell_data: Optional[Mapping[str, npt.NDArray[Any]]] = None,
     ) -> None: ...

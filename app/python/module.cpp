@@ -110,6 +110,31 @@ core::SurfaceLoadOptions shownBy(const py::object& scalar, bool cellToPoint, con
     return load;
 }
 
+/// Makes `Type.__new__(Type)` with no arguments raise TypeError @a message. pybind11 gives an object
+/// made so, never passed to __init__, uninitialised memory as its value, which any method then reads.
+/// With arguments (`Type(...)` of a subclass calls __new__ so, then __init__) it makes the object as
+/// before; `Type(...)` itself calls the tp_new slot, which stays pybind11's.
+void refuseBareNew(const py::handle& type, const char* message)
+{
+    auto* typeObject = reinterpret_cast<PyTypeObject*>(type.ptr());
+    const newfunc make = typeObject->tp_new;
+    py::cpp_function guarded(
+        [typeObject, make, message](const py::handle& cls, const py::args& args,
+                                    const py::kwargs& kwargs) -> py::object {
+            if (args.empty() && kwargs.empty()) throw py::type_error(message);
+            if (!PyType_Check(cls.ptr()) || !PyType_IsSubtype(reinterpret_cast<PyTypeObject*>(cls.ptr()), typeObject))
+                throw py::type_error(std::string("__new__'s first argument must be ") + typeObject->tp_name +
+                                     " or a subclass of it");
+            PyObject* made = make(reinterpret_cast<PyTypeObject*>(cls.ptr()), args.ptr(), kwargs.ptr());
+            if (!made) throw py::error_already_set();
+            return py::reinterpret_steal<py::object>(made);
+        },
+        py::name("__new__"));
+    if (PyDict_SetItemString(typeObject->tp_dict, "__new__", py::staticmethod(guarded).ptr()) != 0)
+        throw py::error_already_set();
+    PyType_Modified(typeObject);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(inversevis, m)
@@ -119,13 +144,16 @@ PYBIND11_MODULE(inversevis, m)
               "those of `inversevis render` with the same arguments (docs/python.md).";
     python::registerErrors(m);
 
-    py::class_<python::Mesh, std::shared_ptr<python::Mesh>>(m, "Mesh", R"(A surface mesh with its point and cell arrays.
+    py::class_<python::Mesh, std::shared_ptr<python::Mesh>> mesh(m, "Mesh",
+                                                                 R"(A surface mesh with its point and cell arrays.
 
 Mesh(vertices, faces, point_data=None, cell_data=None): vertices an (n, 3) float32 or float64
 array, faces an (m, 3) int32 or int64 array of vertex indices from 0, point_data and cell_data
-dicts of arrays with n (or m) rows: (n,) for a scalar, (n, k) for k components. Mesh.read(path)
-reads a file instead. Renders of one mesh share its volumes (and the command line's cache).)")
-        .def(py::init([](const py::array& vertices, const py::array& faces, const py::object& pointData,
+dicts of arrays with n (or m) rows: (n,) for a scalar, (n, k) for k components; nested lists are read
+as numpy.asarray reads them (the vertices as float64). Mesh.read(path)
+reads a file instead. Renders of one mesh share its volumes (and the command line's cache).)");
+    refuseBareNew(mesh, "inversevis.Mesh objects come from Mesh(vertices, faces, ...) and Mesh.read(path)");
+    mesh.def(py::init([](const py::object& vertices, const py::object& faces, const py::object& pointData,
                          const py::object& cellData) {
                  auto dictOf = [](const py::object& o, const char* name) {
                      if (o.is_none()) return py::dict();

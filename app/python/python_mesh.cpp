@@ -36,6 +36,22 @@ py::array nativeOrder(const py::array& array)
     return array.attr("astype")(array.dtype().attr("newbyteorder")("="));
 }
 
+/// @a given as an array: a numpy array as it is; a nested list or tuple, or an object numpy reads
+/// as an array (`__array__`), converted (to float64 when @a floating). TypeError naming @a what
+/// and @a expected for anything else (None, a string, a number), ValueError for a ragged list.
+py::array arrayOf(const py::object& given, const std::string& what, const std::string& expected, bool floating)
+{
+    if (py::isinstance<py::array>(given)) return py::reinterpret_borrow<py::array>(given);
+    const bool sequence = py::isinstance<py::list>(given) || py::isinstance<py::tuple>(given);
+    if (!sequence && !py::hasattr(given, "__array__"))
+        throw py::type_error(what + " must be " + expected + ", got " +
+                             py::str(py::type::handle_of(given).attr("__name__")).cast<std::string>());
+    const py::array array = floating && sequence ? py::array_t<double, py::array::forcecast>::ensure(given)
+                                                 : py::array::ensure(given);
+    if (!array) throw py::value_error(what + " must be " + expected + ", got a sequence numpy cannot read as one");
+    return array;
+}
+
 /// The value type of a numeric dtype; throws TypeError naming @a what for any other.
 core::ValueType valueType(const py::array& array, const std::string& what)
 {
@@ -153,21 +169,33 @@ std::shared_ptr<Mesh> Mesh::read(const std::string& source)
     return mesh;
 }
 
-std::shared_ptr<Mesh> Mesh::fromArrays(const py::array& givenVertices, const py::array& givenFaces,
+std::shared_ptr<Mesh> Mesh::fromArrays(const py::object& givenVertices, const py::object& givenFaces,
                                        const py::dict& pointData, const py::dict& cellData)
 {
-    const py::array vertices = nativeOrder(givenVertices), faces = nativeOrder(givenFaces);
+    const std::string vertexArray = "a float32 or float64 array of shape (n, 3)";
+    const std::string faceArray = "an int32 or int64 array of shape (m, 3) (vertex indices from 0)";
+    const py::array vertices = nativeOrder(arrayOf(givenVertices, "vertices", vertexArray, true));
+    const py::array faces = nativeOrder(arrayOf(givenFaces, "faces", faceArray, false));
     const char vertexKind = vertices.dtype().kind();
     if (vertices.ndim() != 2 || vertices.shape(1) != 3 || vertexKind != 'f' ||
         (vertices.itemsize() != 4 && vertices.itemsize() != 8))
-        throw py::value_error("vertices must be a float32 or float64 array of shape (n, 3), got " + described(vertices));
+        throw py::value_error("vertices must be " + vertexArray + ", got " + described(vertices));
     const char faceKind = faces.dtype().kind();
     if (faces.ndim() != 2 || faces.shape(1) != 3 || (faceKind != 'i' && faceKind != 'u') || faces.itemsize() < 4)
-        throw py::value_error("faces must be an int32 or int64 array of shape (m, 3) (vertex indices from 0), got " +
-                              described(faces));
+        throw py::value_error("faces must be " + faceArray + ", got " + described(faces));
     std::vector<glm::vec3> positions(std::size_t(vertices.shape(0)));
     static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
     flattenInto(vertices, &positions[0].x);
+    if (faceKind == 'u' && faces.itemsize() == 8) {  // an index above int64's range would wrap to a negative one
+        const std::vector<std::uint64_t> indices = flattened<std::uint64_t>(faces);
+        const auto count = std::uint64_t(vertices.shape(0));
+        const auto beyond =
+            std::find_if(indices.begin(), indices.end(), [count](std::uint64_t i) { return i >= count; });
+        if (beyond != indices.end())
+            throw InputError("Mesh: face " + std::to_string((beyond - indices.begin()) / 3) + " references vertex " +
+                             std::to_string(*beyond) + " but the mesh has " + std::to_string(vertices.shape(0)) +
+                             " vertices");
+    }
     std::vector<std::int64_t> triangles = flattened<std::int64_t>(faces);
     std::vector<core::DataArray> arrays = dataArrays(pointData, core::Association::Point, vertices.shape(0));
     for (core::DataArray& array : dataArrays(cellData, core::Association::Cell, faces.shape(0)))

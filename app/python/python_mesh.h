@@ -36,10 +36,11 @@ public:
     /// @throw InputError naming the file and the problem
     static std::shared_ptr<Mesh> read(const std::string& source);
     /// @brief A mesh of @a vertices (n x 3, float32 or float64) and @a faces (m x 3, int32 or int64),
-    ///        with point arrays (n or n x k) and cell arrays (m or m x k) by name.
+    ///        numpy arrays or nested lists (converted), with point arrays (n or n x k) and cell arrays
+    ///        (m or m x k) by name.
     /// @throw pybind11::value_error / type_error naming the bad argument; InputError for non-finite
     ///        coordinates or indices out of range
-    static std::shared_ptr<Mesh> fromArrays(const pybind11::array& vertices, const pybind11::array& faces,
+    static std::shared_ptr<Mesh> fromArrays(const pybind11::object& vertices, const pybind11::object& faces,
                                             const pybind11::dict& pointData, const pybind11::dict& cellData);
 
     /// @brief Where it came from: the file, scene:<name>, or "Mesh" for arrays.

@@ -72,6 +72,7 @@ void Picture::save(const std::string& path) const
 
 void Picture::saveView(const std::string& path) const
 {
+    if (core::lowerCaseExtension(path) != ".json") throw ValueError(path + ": a view file is saved as .json");
     app::writeViewFile(app::viewOfPicture(camera, look, load, meshUnits), path);
 }
 

@@ -31,7 +31,8 @@ render::ParameterValues parameterValues(const py::dict& parameters, const std::s
             std::string known;
             for (const render::ParameterSpec& spec : info.parameters) known += (known.empty() ? "" : ", ") + spec.key;
             throw py::type_error(function + "() got an unexpected keyword argument '" + name +
-                                 "' (neither one of its arguments nor a parameter of " + method + ": " + known + ")");
+                                 "' (neither one of its arguments nor a parameter of " + method +
+                                 (known.empty() ? ", which has none)" : ": " + known + ")"));
         }
         if (py::isinstance<py::bool_>(value)) throw py::type_error(name + " must be a number or numbers, not a bool");
         if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
@@ -133,7 +134,7 @@ void PictureLook::colourBy(const Mesh& mesh, const core::SurfaceField& field)
 {
     checkColourKeywords(mesh, field);
     try {
-        options.shading.scale = scale.resolve(field.values);
+        options.shading.scale = scale.resolve(field.values, mesh.source());
     } catch (const ValueError& e) {
         throw ValueError(asKeywords(e.what(), {"--log"}));
     }
@@ -151,7 +152,14 @@ std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const Re
     optimize::PictureRequest picture;
     picture.framed = !request.fov && !request.camera;
     if (request.camera) {
-        const std::string text = py::module_::import("json").attr("dumps")(*request.camera).cast<std::string>();
+        std::string text;
+        try {  // allow_nan=False: a NaN or infinity is refused here, as a camera file cannot hold one
+            const py::object dumps = py::module_::import("json").attr("dumps");
+            text = dumps(*request.camera, py::arg("allow_nan") = false).cast<std::string>();
+        } catch (const py::error_already_set& e) {
+            throw ValueError(std::string("camera: not a camera (a camera file's JSON, as Picture.camera): ") +
+                             (e.matches(PyExc_ValueError) ? "its numbers must be finite" : e.what()));
+        }
         try {
             picture.camera = core::cameraFromJson(nlohmann::json::parse(text));
         } catch (const std::exception& e) {

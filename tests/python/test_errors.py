@@ -23,6 +23,15 @@ def sphere():
     (np.array([[0, 0, 0], [1, 0, 0], [0, np.nan, 0]]), np.array([[0, 1, 2]]), inversevis.InputError,
      "vertex 2 has a non-finite coordinate"),
     (np.eye(3), np.array([[0, 1, 1]]), inversevis.InputError, "mesh has no triangles"),
+    # uint64 above int64's range was read as -1
+    (np.eye(3), np.array([[0, 1, 2**64 - 1]], dtype=np.uint64), inversevis.InputError,
+     "face 0 references vertex 18446744073709551615 but the mesh has 3 vertices"),
+    # not arrays: the messages held pybind11's repr of every argument (megabytes for a real mesh)
+    (None, [[0, 1, 2]], TypeError, "vertices must be a float32 or float64 array of shape (n, 3), got NoneType"),
+    ("mesh.ply", [[0, 1, 2]], TypeError, "vertices must be a float32 or float64 array of shape (n, 3), got str"),
+    (np.eye(3), 7, TypeError, "faces must be an int32 or int64 array of shape (m, 3) (vertex indices from 0), got int"),
+    ([[0, 0], [1, 0, 0]], [[0, 1, 2]], ValueError, "got a sequence numpy cannot read as one"),
+    (np.eye(3), [[0.0, 1.0, 2.0]], ValueError, "faces must be an int32 or int64 array of shape (m, 3)"),
 ])
 def test_bad_arrays_are_refused_with_a_clear_message(vertices, faces, error, words):
     with pytest.raises(error) as refused:
@@ -84,6 +93,10 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(range_percentile=(50, 10)), ValueError, "range_percentile [50, 10]: expected 0 <= LO < HI <= 100"),
         (dict(fov=30, ortho=True), ValueError, "fov= and ortho= exclude each other"),
         (dict(camera={"eye": [0, 0, 2.5]}, ortho=True), ValueError, "camera= is the whole view"),
+        # it was nlohmann's parse error of Python's "NaN"
+        (dict(camera={"eye": [float("nan"), 0, 2.5]}), ValueError, "not a camera (a camera file's JSON, as "
+                                                                   "Picture.camera): its numbers must be finite"),
+        (dict(method="front", alpha=1), TypeError, "nor a parameter of front, which has none)"),
     ]
     for arguments, error, words in cases:
         with pytest.raises(error) as refused:
@@ -131,6 +144,8 @@ def test_save_refuses_other_formats_and_writes_nothing(tmp_path):
         picture.save(str(tmp_path / "p.jpg"))
     with pytest.raises(inversevis.InputError):
         picture.save(str(tmp_path / "no" / "folder" / "p.png"))
+    with pytest.raises(ValueError, match=r"view file is saved as \.json"):  # JSON in a .png replaced a figure
+        picture.save_view(tmp_path / "figure.png")
     assert list(tmp_path.iterdir()) == []
 
 
@@ -189,6 +204,27 @@ def test_a_picture_is_made_only_by_render_and_optimize():
         inversevis.Picture()
     with pytest.raises(TypeError):  # Python's own check: the type's __new__ is not object's
         inversevis.Picture.__new__(inversevis.Picture)
+
+
+def test_a_mesh_is_made_only_with_its_arrays_or_from_a_file():
+    # Mesh.__new__ without __init__ made an object whose uninitialised memory crashed its first method.
+    with pytest.raises(TypeError, match="come from Mesh"):
+        inversevis.Mesh.__new__(inversevis.Mesh)
+
+    class Named(inversevis.Mesh):  # a subclass is still made and initialised
+        pass
+
+    named = Named([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    assert isinstance(named, inversevis.Mesh) and named.faces.tolist() == [[0, 1, 2]]
+    with pytest.raises(TypeError, match="come from Mesh"):
+        Named.__new__(Named)
+
+
+def test_nested_lists_are_read_as_arrays():
+    listed = inversevis.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], ((0, 1, 2),))
+    arrays = inversevis.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.float64), np.array([[0, 1, 2]], np.int32))
+    assert np.array_equal(listed.vertices, arrays.vertices)
+    assert np.array_equal(listed.faces, arrays.faces)
 
 
 def test_none_for_a_mesh_or_a_folder_for_a_view_file_is_refused(tmp_path):
