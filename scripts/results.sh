@@ -35,8 +35,7 @@ two_views() {  # STEM MESH [FLAGS...]
   local stem=$1 mesh=$2
   shift 2
   [ -f "$work/views/$stem.json" ] && return 0
-  "$cli" -q optimize "$mesh" "$@" --views 2 -o "$work/views/$stem.png" --json "$work/views/$stem.json.tmp"
-  mv "$work/views/$stem.json.tmp" "$work/views/$stem.json"
+  "$cli" -q optimize "$mesh" "$@" --views 2 -o "$work/views/$stem.png" --json "$work/views/$stem.json"
 }
 for stem in armadillo_50k cow rocker_arm neptune_30k sphere_ico5 stanford_bunny vmtk_aorta_segment lasc2013_b003_left_atrium; do
   two_views "$stem" "$SHARED/$stem.ply" --hotspots 2
@@ -52,8 +51,7 @@ for mesh in "$SHARED"/*.ply scene:vessel-tree "$WIDER"/*.ply; do
   stem=$(basename "${mesh#scene:}" .ply)
   [ -f "$work/hot-spots/$stem.json" ] && continue
   "$cli" -q optimize "$mesh" --hotspots 2 --energy scalar -o "$work/hot-spots/$stem.png" \
-    --json "$work/hot-spots/$stem.json.tmp"
-  mv "$work/hot-spots/$stem.json.tmp" "$work/hot-spots/$stem.json"
+    --json "$work/hot-spots/$stem.json"
 done
 minutes=$(( ($(date +%s) - start + 59) / 60 ))
 
