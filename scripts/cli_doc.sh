@@ -39,7 +39,7 @@ HEADER
   section "inversevis sdf" "Builds and caches the mesh's volume, or writes it as a \`.vdb\` ([volume.md](volume.md))." "$cli" sdf
   section "inversevis render" "One picture, or one per step of a time series, with its EXR layers, camera, view file, measures and probes ([rendering.md](rendering.md), [measures.md](measures.md), [methods/](methods/))." "$cli" render
   section "inversevis optimize" "The best view and parameters of a method, its picture and view file, and several views ([optimisation.md](optimisation.md))." "$cli" optimize
-  section "inversevis evaluate" "Every method at its own optimum on several meshes: the paper's Tables 1 and 2 ([results.md](results.md), [measures.md](measures.md))." "$cli" evaluate
+  section "inversevis evaluate" "Every method at its own optimum on several meshes: the paper's Tables 1 and 2 ([results.md](results.md), [measures.md](measures.md)), printed on stdout as Markdown (\`-q\` quiets the log on stderr, not them) and written to \`--json\` and \`--markdown\`." "$cli" evaluate
   section "inversevis merge" "Joins the JSON of several \`evaluate\` runs into its tables ([cluster.md](cluster.md))." "$cli" merge
   section "inversevis cache" "The cached volumes every command and the viewer share ([volume.md](volume.md))." "$cli" cache
   section "inversevis cache list" "Each cached volume with its size." "$cli" cache list
