@@ -184,7 +184,7 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
         }
     }
     if (const std::string path = videoPath(request.png); video.is_null() && std::filesystem::exists(path))
-        core::logWarning(path + ": an earlier run's video, which does not show these frames (left as it was)");
+        core::logWarning(path + ": an earlier run's video, not made again from these frames (left as it was)");
 
     const glm::dvec2 angles = camera.angles();
     nlohmann::json stats = {{"series", series.source()},

@@ -85,7 +85,7 @@ TEST_F(CliSeries, VideoWhenFfmpegIsOnPathAndFramesAlone)
     test::writeFile(output("f.mp4"), "an older video");
     const CliResult noVideo = runCli(renderSeries(quoted(pvd()), "--no-video"));
     ASSERT_EQ(noVideo.status, 0) << noVideo.err;
-    EXPECT_NE(noVideo.err.find(output("f.mp4") + ": an earlier run's video, which does not show these frames"),
+    EXPECT_NE(noVideo.err.find(output("f.mp4") + ": an earlier run's video, not made again from these frames"),
               std::string::npos)
         << noVideo.err;
 }
