@@ -242,7 +242,16 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
             [](const python::Picture& p, const py::object& x, const py::object& y) {
                 const long long column = wholeNumber(x, "x", "a pixel's column (an integer)");
                 const long long row = wholeNumber(y, "y", "a pixel's row (an integer)");
-                return python::fromJson(p.probe(column, row));
+                try {
+                    return python::fromJson(p.probe(column, row));
+                } catch (const ValueError& e) {  // the message names the pixel as given, not as clamped
+                    const std::string clamped = "probe(" + std::to_string(column) + ", " + std::to_string(row) + ")";
+                    std::string message = e.what();
+                    if (message.rfind(clamped, 0) == 0)
+                        message = "probe(" + py::str(x).cast<std::string>() + ", " + py::str(y).cast<std::string>() +
+                                  ")" + message.substr(clamped.size());
+                    throw ValueError(message);
+                }
             },
             py::arg("x"), py::arg("y"),
             "What pixel (x, y) shows, x a column and y a row of the layers from the top left (rgba's colour bar "

@@ -40,6 +40,8 @@ def test_a_pixel_outside_the_picture_is_refused(tree):
         tree.probe(0, -1)
     with pytest.raises(ValueError, match=r"probe\(2147483648, 0\): outside"):
         tree.probe(2**31, 0)
+    with pytest.raises(ValueError, match=r"probe\(1180591620717411303424, -1180591620717411303424\): outside"):
+        tree.probe(2**70, -2**70)  # it named the pixel as clamped to 64 bits
     with pytest.raises(TypeError, match="x must be a pixel's column \\(an integer\\), got float"):
         tree.probe(1.5, 0)
     assert tree.probe(np.int64(10), np.int32(10))["pixel"] == [10, 10]  # numpy integers, as indices are
