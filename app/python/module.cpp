@@ -207,7 +207,8 @@ reads a file instead. Renders of one mesh share its volumes (and the command lin
         .def_property_readonly(
             "layers", [](const py::object& self) { return self.cast<const python::Picture&>().layers(self); },
             "The EXR's layers by name ('depth', 'region' (0 background, 1 direct, 2 indirect), 'triangle', 'P.X', "
-            "'P.Y', 'P.Z' (normalised units), 'scalar', 'steps'): (height, width) float32 views of the picture.")
+            "'P.Y', 'P.Z' (normalised units), 'scalar', 'steps'): (height, width) float32 read-only views of the "
+            "picture.")
         .def_property_readonly("camera", [](const python::Picture& p) { return python::fromJson(core::cameraFileJson(p.camera, p.meshUnits)); },
                                "The camera, as the camera file `render` writes (render(camera=...) takes it back).")
         .def_property_readonly("method", [](const python::Picture& p) { return python::fromJson(p.method); },

@@ -6,6 +6,7 @@
 #include "../optimization_options.h"
 #include "../several_views.h"
 
+#include <ivis/core/camera.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/number_text.h>
 #include <ivis/optimize/coherence.h>
@@ -63,7 +64,7 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
                              request.energy);
         o.hotSpotViews = *request.hotSpotViews;
     }
-    if (request.look.minCoherence < 0.0 || request.look.minCoherence > 1.0)
+    if (!(request.look.minCoherence >= 0.0 && request.look.minCoherence <= 1.0))  // NaN too
         throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
     // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
     const std::string& rule = method->info().readableRuleParameter;
@@ -89,7 +90,11 @@ std::shared_ptr<Picture> optimizeMesh(const std::shared_ptr<Mesh>& drawn, const 
         if (!std::isfinite(request.start->first) || !std::isfinite(request.start->second))
             throw ValueError("start (" + core::shortNumber(request.start->first) + ", " +
                              core::shortNumber(request.start->second) + "): theta and phi must be finite degrees");
-        startAngles = glm::dvec2(request.start->first, request.start->second);
+        // As `optimize --theta --phi` starts: the angles of the camera they place (theta -30 is 30
+        // on the other side), so that both search alike.
+        startAngles = core::Camera::fromAngles(request.start->first, request.start->second, core::kCameraDistance,
+                                               core::kDefaultFovYDeg)
+                          .angles();
     }
 
     // What the scalar shown allows, before anything is built.

@@ -52,10 +52,13 @@ py::dict Picture::layers(const py::object& self) const
 {
     py::dict layers;
     const py::ssize_t height = result.layers.height(), width = result.layers.width();
-    for (const auto& [name, values] : result.layers.channels())
-        layers[py::str(name)] = py::array(py::dtype::of<float>(), {height, width},
-                                          {py::ssize_t(sizeof(float)) * width, py::ssize_t(sizeof(float))},
-                                          values.data(), self);
+    for (const auto& [name, values] : result.layers.channels()) {
+        py::array layer(py::dtype::of<float>(), {height, width},
+                        {py::ssize_t(sizeof(float)) * width, py::ssize_t(sizeof(float))}, values.data(), self);
+        // Read-only: a write changed the picture's layers but not what probe() and the maps read.
+        layer.attr("flags").attr("writeable") = false;
+        layers[py::str(name)] = layer;
+    }
     return layers;
 }
 

@@ -110,7 +110,7 @@ PictureLook pictureLook(const RenderRequest& request)
     } catch (const ValueError& e) {
         throw ValueError(asKeywords(e.what(), {"--range-percentile", "--range", "--symmetric", "--log"}));
     }
-    if (request.minCoherence < 0.0 || request.minCoherence > 1.0)
+    if (!(request.minCoherence >= 0.0 && request.minCoherence <= 1.0))  // NaN too
         throw ValueError("min_coherence " + std::to_string(request.minCoherence) + " must lie in [0, 1]");
     look.volume = volumeFor(method, request.volumeResolution);
     const std::pair<bool, const char*> colourKeywords[] = {

@@ -74,6 +74,7 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(scalar="nope"), inversevis.InputError, "nope"),
         (dict(range=(1.0, 0.0)), ValueError, "range"),
         (dict(min_coherence=2.0), ValueError, "min_coherence"),
+        (dict(min_coherence=float("nan")), ValueError, "min_coherence nan must lie in [0, 1]"),  # it turned the rule off
         (dict(spp=0), ValueError, "spp 0"),
         (dict(camera={"target": [0, 0, 0]}), ValueError, "camera"),
         (dict(volume_resolution=3), ValueError, "resolution"),

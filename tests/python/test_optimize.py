@@ -89,6 +89,10 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     started = inversevis.optimize(mesh, "inversevis", seed=7, start=(45.0, 120.0), **SMALL)
     assert started.optimization["visited"][0]["theta"] == pytest.approx(45.0)
     assert started.optimization["visited"][0]["phi"] == pytest.approx(120.0)
+    # A start beyond the pole is the command line's: theta -30 is 30 on the other side (it was taken as given).
+    over = inversevis.optimize(mesh, "inversevis", seed=7, start=(-30.0, 10.0), **SMALL)
+    assert over.optimization["visited"][0]["theta"] == pytest.approx(30.0)
+    assert over.optimization["visited"][0]["phi"] == pytest.approx(-170.0)
     # A render() picture carries no search.
     assert inversevis.render(mesh, "front", size=(40, 40), volume_resolution=64).optimization is None
 

@@ -57,6 +57,8 @@ def test_the_pictures_arrays_are_its_files(tmp_path):
     assert np.isfinite(picture.layers["P.X"][indirect]).all()
     assert np.isnan(picture.layers["P.X"][region == 0.0]).all()
     assert 0.9 < picture.measures["coherence"] <= 1.0
+    with pytest.raises(ValueError, match="read-only"):  # a write changed them but not what probe() reads
+        picture.layers["depth"][0, 0] = 1.0
     # The camera reproduces the picture: fixed, not framed again.
     again = inversevis.render(inversevis.Mesh.read("scene:vessel-tree"), "inversevis", size=(120, 90),
                               camera=picture.camera)
