@@ -12,8 +12,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
 
 namespace ivis::app {
 namespace {
@@ -46,6 +48,33 @@ float finiteFloat(const nlohmann::json& json, const char* what)
     return json.get<float>();
 }
 
+/// @a json's member @a key, which must be an object (the JSON library's "key 'KEY' not found"
+/// when it is missing).
+const nlohmann::json& objectAt(const nlohmann::json& json, const char* key)
+{
+    const nlohmann::json& member = json.at(key);
+    if (!member.is_object()) throw std::invalid_argument(std::string("'") + key + "' must be an object");
+    return member;
+}
+
+/// @a json's member @a key as a bool, or @a fallback when it is missing and one is given.
+bool flagAt(const nlohmann::json& json, const char* key, std::optional<bool> fallback = std::nullopt)
+{
+    if (fallback && !json.contains(key)) return *fallback;
+    const nlohmann::json& member = json.at(key);
+    if (!member.is_boolean()) throw std::invalid_argument(std::string("'") + key + "' must be true or false");
+    return member.get<bool>();
+}
+
+/// @a json's member @a key as a string, or @a fallback when it is missing and one is given.
+std::string textAt(const nlohmann::json& json, const char* key, std::optional<std::string> fallback = std::nullopt)
+{
+    if (fallback && !json.contains(key)) return *fallback;
+    const nlohmann::json& member = json.at(key);
+    if (!member.is_string()) throw std::invalid_argument(std::string("'") + key + "' must be a string");
+    return member.get<std::string>();
+}
+
 ViewFile viewFromJson(const nlohmann::json& json)
 {
     if (!json.is_object()) throw std::invalid_argument("expected a JSON object");
@@ -63,31 +92,34 @@ ViewFile viewFromJson(const nlohmann::json& json)
     view.width = wholeNumber(size[0], "size", 1, 32768);
     view.height = wholeNumber(size[1], "size", 1, 32768);
     view.method = render::methodFromJson(json.at("method"));
-    view.scalar = json.value("scalar", std::string());
-    view.scalarFile = json.value("scalar_file", std::string());
-    view.cellToPoint = json.value("cell_to_point", false);
+    view.scalar = textAt(json, "scalar", "");
+    view.scalarFile = textAt(json, "scalar_file", "");
+    view.cellToPoint = flagAt(json, "cell_to_point", false);
     view.hotSpots = json.contains("hotspots") ? wholeNumber(json.at("hotspots"), "hotspots", 0, core::kMaxHotSpots) : 0;
-    view.capHoles = json.value("cap_holes", false);
-    view.colormap = json.at("colormap").get<std::string>();
+    view.capHoles = flagAt(json, "cap_holes", false);
+    view.colormap = textAt(json, "colormap");
     core::colormap(view.colormap);  // known
-    const nlohmann::json& scale = json.at("scale");
+    const nlohmann::json& scale = objectAt(json, "scale");
     const nlohmann::json& range = scale.at("range");
     if (!range.is_array() || range.size() != 2) throw std::invalid_argument("'scale.range' must be [lo, hi]");
     view.scale.range = {finiteFloat(range[0], "scale.range"), finiteFloat(range[1], "scale.range")};
-    view.scale.log = scale.at("log").get<bool>();
-    view.scale.invert = scale.at("invert").get<bool>();
+    view.scale.log = flagAt(scale, "log");
+    view.scale.invert = flagAt(scale, "invert");
     if (!(view.scale.range.lo <= view.scale.range.hi) || (view.scale.log && !(view.scale.range.lo > 0.0f)))
         throw std::invalid_argument("'scale.range' must be ordered (and positive on a log scale)");
-    view.units = json.value("units", std::string());
+    view.units = textAt(json, "units", "");
     view.legend = !json.at("legend").is_null();
-    if (view.legend) view.legendSide = core::legendSideFromName(json.at("legend").get<std::string>());
-    view.outline = json.at("outline").get<bool>();
-    view.shadows = json.at("shadows").get<bool>();
-    view.shadeIndirect = json.at("shade_indirect").get<bool>();
+    if (view.legend) {
+        if (!json.at("legend").is_string()) throw std::invalid_argument("'legend' must be a side's name or null");
+        view.legendSide = core::legendSideFromName(json.at("legend").get<std::string>());
+    }
+    view.outline = flagAt(json, "outline");
+    view.shadows = flagAt(json, "shadows");
+    view.shadeIndirect = flagAt(json, "shade_indirect");
     view.samplesPerPixel = json.contains("spp") ? wholeNumber(json.at("spp"), "spp", 1, 1024) : 1;
-    view.transparent = json.value("transparent", false);
+    view.transparent = flagAt(json, "transparent", false);
     if (json.contains("mesh_units")) {
-        const nlohmann::json& units = json.at("mesh_units");
+        const nlohmann::json& units = objectAt(json, "mesh_units");
         const nlohmann::json& centre = units.at("center");
         if (!centre.is_array() || centre.size() != 3)
             throw std::invalid_argument("'mesh_units.center' must be [x, y, z]");

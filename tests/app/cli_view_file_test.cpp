@@ -231,6 +231,13 @@ TEST_F(Cli, BadViewFilesAreRejectedWithTheirName)
     rejectedWith([](nlohmann::json& v) { v["scale"]["range"] = {-1e300, 1e300}; }, "'scale.range' must be a finite number");
     rejectedWith([](nlohmann::json& v) { v["method"] = {{"method", "inversevis"}, {"alpha", 1e300}}; },
                  "method parameter 'alpha' is not a finite number");
+    // A value of another type names its key (the JSON library's "cannot use at() with null").
+    rejectedWith([](nlohmann::json& v) { v["scale"] = nullptr; }, "'scale' must be an object");
+    rejectedWith([](nlohmann::json& v) { v["mesh_units"] = "mm"; }, "'mesh_units' must be an object");
+    rejectedWith([](nlohmann::json& v) { v["shadows"] = nullptr; }, "'shadows' must be true or false");
+    rejectedWith([](nlohmann::json& v) { v["scale"]["log"] = 1; }, "'log' must be true or false");
+    rejectedWith([](nlohmann::json& v) { v["units"] = 3; }, "'units' must be a string");
+    rejectedWith([](nlohmann::json& v) { v["legend"] = 5; }, "'legend' must be a side's name or null");
 }
 
 }  // namespace
