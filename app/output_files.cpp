@@ -1,5 +1,6 @@
 #include "output_files.h"
 
+#include <ivis/core/atomic_file.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/file_extension.h>
 #include <ivis/core/pvd_reader.h>
@@ -72,14 +73,9 @@ void checkOutputFiles(const std::vector<OutputFile>& outputs, const std::vector<
         seen.emplace(file, &output);
     }
     // Names are checked after: that a file is named twice, or is read, says more than its extension.
-    const auto isStream = [](const std::string& path) {
-        std::error_code error;
-        const std::filesystem::file_status status = std::filesystem::status(path, error);
-        return !error && (std::filesystem::is_character_file(status) || std::filesystem::is_fifo(status) ||
-                          std::filesystem::is_socket(status));
-    };
     for (const OutputFile& output : outputs) {
-        if (output.path.empty() || output.extensions.empty() || (output.stream && isStream(output.path))) continue;
+        if (output.path.empty() || output.extensions.empty() || (output.stream && core::isStream(output.path)))
+            continue;
         const std::string extension = core::lowerCaseExtension(output.path);
         if (std::find(output.extensions.begin(), output.extensions.end(), extension) == output.extensions.end()) {
             std::string names;

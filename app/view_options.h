@@ -110,7 +110,6 @@ struct ViewOptions {
     bool given(const char* name) const;
 
 private:
-
     CLI::App* mCommand = nullptr;
     mutable std::shared_ptr<const ViewFile> mView;  ///< --view's file, once read
     mutable std::optional<core::Camera> mCameraFileCamera;  ///< --camera's file, once read

@@ -23,16 +23,6 @@ std::string temporaryFor(const std::string& path)
     return (target.parent_path() / (name + suffix)).string();
 }
 
-/// Whether @a path is a device, FIFO or socket (/dev/stdout, /dev/null, a named pipe): such a
-/// target is written to as it is, since renaming a file over it would replace it.
-bool isStream(const std::string& path)
-{
-    std::error_code error;
-    const std::filesystem::file_status status = std::filesystem::status(path, error);
-    return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
-           !std::filesystem::is_directory(status);
-}
-
 /// Calls @a write with @a path itself (a stream: isStream); a failure names it.
 void writeStream(const std::string& path, const std::function<void(const std::string&)>& write)
 {
@@ -76,6 +66,14 @@ void writeTemporary(const std::string& temporary, const std::string& path,
 }
 
 }  // namespace
+
+bool isStream(const std::string& path)
+{
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+           !std::filesystem::is_directory(status);
+}
 
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write)
 {

@@ -10,6 +10,10 @@
 
 namespace ivis::core {
 
+/// @brief Whether @a path is a device, FIFO or socket (/dev/stdout, /dev/null, a named pipe): such
+///        a target is written to as it is, since renaming a file over it would replace it.
+bool isStream(const std::string& path);
+
 /// @brief Calls @a write with a temporary path beside @a path, then renames it to @a path.
 ///        On any failure the temporary is removed and InputError "<path>: cannot write (<why>)" is
 ///        thrown; an existing file at @a path is left untouched. A device, FIFO or socket at
