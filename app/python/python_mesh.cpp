@@ -183,9 +183,9 @@ std::shared_ptr<Mesh> Mesh::fromArrays(const py::object& givenVertices, const py
     const char faceKind = faces.dtype().kind();
     if (faces.ndim() != 2 || faces.shape(1) != 3 || (faceKind != 'i' && faceKind != 'u') || faces.itemsize() < 4)
         throw py::value_error("faces must be " + faceArray + ", got " + described(faces));
-    std::vector<glm::vec3> positions(std::size_t(vertices.shape(0)));
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
-    flattenInto(vertices, &positions[0].x);
+    std::vector<glm::dvec3> positions(std::size_t(vertices.shape(0)));
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double));
+    flattenInto(vertices, reinterpret_cast<double*>(positions.data()));
     if (faceKind == 'u' && faces.itemsize() == 8) {  // an index above int64's range would wrap to a negative one
         const std::vector<std::uint64_t> indices = flattened<std::uint64_t>(faces);
         const auto count = std::uint64_t(vertices.shape(0));
@@ -209,9 +209,12 @@ std::shared_ptr<Mesh> Mesh::fromArrays(const py::object& givenVertices, const py
 
 py::array Mesh::vertices() const
 {
+    // In the given units: a mesh far from its origin is kept relative to its centre (readMesh).
     const auto& positions = mRaw.mesh.positions;
     py::array_t<float> out({py::ssize_t(positions.size()), py::ssize_t(3)});
-    std::memcpy(out.mutable_data(), positions.data(), positions.size() * sizeof(glm::vec3));
+    glm::vec3* data = reinterpret_cast<glm::vec3*>(out.mutable_data());
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+    for (const glm::vec3& p : positions) *data++ = glm::vec3(mRaw.normalization.meshFromNormalized(glm::dvec3(p)));
     return std::move(out);
 }
 

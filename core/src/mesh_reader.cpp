@@ -6,6 +6,7 @@
 #include <ivis/core/mesh_layout_check.h>
 #include <ivis/core/show_array.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string_view>
 
 namespace ivis::core {
@@ -73,16 +75,16 @@ bool isDegenerate(const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& 
     return glm::dot(n, n) == 0.0;
 }
 
-/// Positions, fan-triangulated faces with their file cells, and the arrays, validated.
-LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
+/// Where the positions of @a raw are kept from (their indices checked first): the file's origin,
+/// or, when the box of the finite points its faces use lies further from the origin than it is
+/// long, its centre rounded to a multiple of the largest power of two within its longest side, so
+/// that a mesh far from its origin keeps its shape in single precision. The rounding keeps a
+/// single-precision file's points exact relative to it, and so their normalised positions the
+/// bits they had unshifted.
+glm::dvec3 positionsOrigin(const std::string& path, const RawMesh& raw, bool oneBased)
 {
-    LoadedMesh out;
     const std::size_t vertexCount = raw.positions.size();
-    if (vertexCount >= std::size_t(UINT32_MAX)) failInput(path, "has more points than can be indexed (2^32 - 1)");
-    TriangleMesh& mesh = out.field.mesh;
-    mesh.positions = std::move(raw.positions);
-
-    out.report.degenerateDropped = raw.skippedFaces;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (std::size_t f = 0; f < raw.faceCount(); ++f) {
         const auto [begin, end] = raw.face(f);
         for (const std::int64_t* c = begin; c != end; ++c) {
@@ -91,7 +93,37 @@ LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
                                     std::to_string(*c + oneBased) + " but the mesh has " +
                                     std::to_string(vertexCount) + " vertices");
             }
+            const glm::dvec3& p = raw.positions[std::size_t(*c)];
+            if (end - begin < 3 || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
         }
+    }
+    if (!(lo.x <= hi.x)) return glm::dvec3(0.0);
+    const glm::dvec3 centre = 0.5 * (lo + hi), size = hi - lo;
+    const double longest = std::max({size.x, size.y, size.z});
+    const double offset = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+    if (!(offset > longest) || !(longest > 0.0)) return glm::dvec3(0.0);
+    const double step = std::ldexp(1.0, std::ilogb(longest));
+    return glm::round(centre / step) * step;
+}
+
+/// Positions (from positionsOrigin(), field.normalization's centre), fan-triangulated faces with
+/// their file cells, and the arrays, validated.
+LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
+{
+    LoadedMesh out;
+    const std::size_t vertexCount = raw.positions.size();
+    if (vertexCount >= std::size_t(UINT32_MAX)) failInput(path, "has more points than can be indexed (2^32 - 1)");
+    const glm::dvec3 origin = positionsOrigin(path, raw, oneBased);
+    out.field.normalization.center = origin;
+    TriangleMesh& mesh = out.field.mesh;
+    mesh.positions.resize(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v) mesh.positions[v] = glm::vec3(raw.positions[v] - origin);
+
+    out.report.degenerateDropped = raw.skippedFaces;
+    for (std::size_t f = 0; f < raw.faceCount(); ++f) {
+        const auto [begin, end] = raw.face(f);
         if (end - begin < 3) {
             ++out.report.degenerateDropped;
             continue;
@@ -111,9 +143,13 @@ LoadedMesh collect(const std::string& path, RawMesh raw, bool oneBased)
     mesh.dataTriangleCount = mesh.triangles.size();
     for (const auto& t : mesh.triangles)
         for (const std::uint32_t v : t) {
+            const glm::dvec3& given = raw.positions[v];
+            if (!std::isfinite(given.x) || !std::isfinite(given.y) || !std::isfinite(given.z))
+                failInput(path, "vertex " + std::to_string(v + oneBased) + " has a non-finite coordinate");
             const glm::vec3& p = mesh.positions[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                failInput(path, "vertex " + std::to_string(v + oneBased) + " has a non-finite coordinate");
+                failInput(path, "vertex " + std::to_string(v + oneBased) + " lies beyond single precision (3.4e38) "
+                                "from the others");
         }
 
     for (const DataArray& array : raw.arrays) {
@@ -161,7 +197,7 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options, M
     return std::move(field);
 }
 
-SurfaceField meshFromArrays(const std::string& name, std::vector<glm::vec3> positions,
+SurfaceField meshFromArrays(const std::string& name, std::vector<glm::dvec3> positions,
                             std::vector<std::int64_t> triangles, std::vector<DataArray> arrays,
                             MeshReadReport* report)
 {
@@ -195,7 +231,9 @@ MeshInfo describeMesh(const std::string& path)
     info.vertices = loaded.points;
     info.cells = loaded.cells;
     info.triangles = mesh.triangles.size();
-    info.bounds = bounds(mesh);
+    info.bounds = bounds(mesh);  // in the file's units
+    info.bounds.lo += loaded.field.normalization.center;
+    info.bounds.hi += loaded.field.normalization.center;
     info.boundaryEdges = boundaryEdgeCount(mesh);
     info.components = componentCount(mesh);
     info.report = std::move(loaded.report);

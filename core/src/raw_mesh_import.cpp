@@ -76,7 +76,7 @@ public:
     {
         checkStream("vertex", std::size_t(v.idx()));
         IVIS_CHECK(v.idx() >= 0 && std::size_t(v.idx()) < mMesh.positions.size());
-        mMesh.positions[std::size_t(v.idx())] = glm::vec3(p[0], p[1], p[2]);
+        mMesh.positions[std::size_t(v.idx())] = glm::dvec3(p[0], p[1], p[2]);
     }
     OpenMesh::FaceHandle add_face(const VHandles& corners) override
     {

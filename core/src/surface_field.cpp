@@ -27,6 +27,20 @@ Similarity normalizingTransform(const Bounds3& box)
     return {0.5 * (box.lo + box.hi), 2.0 / extent};
 }
 
+namespace {
+
+/// Maps the positions by @a step and composes it into field.normalization, so that
+/// meshFromNormalized still reaches the file's units.
+void transformBy(SurfaceField& field, const Similarity& step)
+{
+    for (glm::vec3& p : field.mesh.positions) p = glm::vec3(step.normalizedFromMesh(glm::dvec3(p)));
+    Similarity& total = field.normalization;
+    total.center += step.center / total.scale;
+    total.scale *= step.scale;
+}
+
+}  // namespace
+
 void normalize(SurfaceField& field)
 {
     Similarity step;
@@ -35,18 +49,17 @@ void normalize(SurfaceField& field)
     } catch (const ValueError& e) {
         throw ValueError("normalize: mesh '" + field.sourcePath + "' has " + e.what());
     }
-    normalizeBy(field, step);
+    transformBy(field, step);
 }
 
-void normalizeBy(SurfaceField& field, const Similarity& step)
+void normalizeBy(SurfaceField& field, const Similarity& frame)
 {
-    for (glm::vec3& p : field.mesh.positions) {
-        p = glm::vec3(step.normalizedFromMesh(glm::dvec3(p)));
-    }
-    // Compose with any earlier normalisation so meshFromNormalized still reaches file units.
-    Similarity& total = field.normalization;
-    total.center += step.center / total.scale;
-    total.scale *= step.scale;
+    // The frame maps the file's units; the positions are file units mapped by field.normalization.
+    const Similarity& total = field.normalization;
+    Similarity step;
+    step.center = (frame.center - total.center) * total.scale;
+    step.scale = frame.scale / total.scale;
+    transformBy(field, step);
 }
 
 float scalarAt(const SurfaceField& field, std::size_t triangle, const glm::vec3& barycentric)

@@ -146,8 +146,13 @@ const Similarity& SurfaceSeries::frame()
 {
     if (!mFrame) {
         const std::string& first = mSteps.front().path;
-        mFrame = first.rfind(kScenePrefix, 0) == 0 ? loadSurface(first, {}).normalization
-                                                   : normalizingTransform(bounds(readMesh(first, {}).mesh));
+        if (first.rfind(kScenePrefix, 0) == 0) {
+            mFrame = loadSurface(first, {}).normalization;
+        } else {
+            SurfaceField field = readMesh(first, {});
+            normalize(field);
+            mFrame = field.normalization;
+        }
     }
     return *mFrame;
 }

@@ -144,10 +144,11 @@ private:
         const std::string key = lower(w[0]);
         if (key == "points") {
             const std::size_t n = count(w, 1);
-            const std::vector<double> xyz = mIn.values(3 * n, type(w, 2), "POINTS");
+            const ValueType pointType = type(w, 2);
+            const std::vector<double> xyz = mIn.values(3 * n, pointType, "POINTS");
             mMesh.positions.resize(n);
             for (std::size_t i = 0; i < n; ++i)
-                mMesh.positions[i] = glm::vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+                mMesh.positions[i] = detail::storedPoint(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], pointType);
         } else if (mDataset == "polydata" &&
                    (key == "vertices" || key == "lines" || key == "polygons" || key == "triangle_strips")) {
             static const std::map<std::string, std::pair<int, std::uint8_t>> kBlocks = {

@@ -104,7 +104,8 @@ private:
             failInput(mPath, "Points have " + std::to_string(points.components) + " components, not 3");
         mMesh.positions.resize(count);
         for (std::size_t i = 0; i < count; ++i) {
-            mMesh.positions[i] = glm::vec3(points.values[3 * i], points.values[3 * i + 1], points.values[3 * i + 2]);
+            mMesh.positions[i] =
+                detail::storedPoint(points.values[3 * i], points.values[3 * i + 1], points.values[3 * i + 2], points.type);
         }
     }
 

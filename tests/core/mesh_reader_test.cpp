@@ -1,6 +1,9 @@
 // The mesh reader: its formats and exact values, topology kept as read, and the shared meshes.
 #include "mesh_reader_files.h"
 
+#include <ivis/core/procedural_scenes.h>
+
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -216,11 +219,58 @@ TEST(MeshReader, ObjNegativeIndicesAndSlashes)
 TEST(MeshReader, CoordinatesStayInFileUnits)
 {
     TempDir dir;
-    const std::string path = dir.file("far.off");
-    writeFile(path, "OFF\n3 1 0\n1000 2000 3000\n1010 2000 3000\n1000 2020 3000\n3 0 1 2\n");
-    const SurfaceField far = readMesh(path);
-    EXPECT_EQ(far.mesh.positions[1], glm::vec3(1010, 2000, 3000));
-    EXPECT_EQ(far.normalization.scale, 1.0);
+    const std::string path = dir.file("near.off");
+    writeFile(path, "OFF\n3 1 0\n0 0 10\n30 0 10\n0 30 10\n3 0 1 2\n");
+    const SurfaceField near = readMesh(path);
+    EXPECT_EQ(near.mesh.positions[1], glm::vec3(30, 0, 10));
+    EXPECT_EQ(near.normalization.center, glm::dvec3(0.0));
+    EXPECT_EQ(near.normalization.scale, 1.0);
+    // A mesh further from its origin than it is long is kept relative to its box's centre (1005,
+    // 2010, 3000) rounded to a multiple of 16, the largest power of two within its longest side, 20.
+    const std::string farPath = dir.file("far.off");
+    writeFile(farPath, "OFF\n3 1 0\n1000 2000 3000\n1010 2000 3000\n1000 2020 3000\n3 0 1 2\n");
+    const SurfaceField far = readMesh(farPath);
+    EXPECT_EQ(far.normalization.center, glm::dvec3(1008, 2016, 3008));
+    EXPECT_EQ(far.mesh.positions[1], glm::vec3(2, -16, -8));
+    EXPECT_EQ(far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[2])), glm::dvec3(1000, 2020, 3000));
+    EXPECT_EQ(describeMesh(farPath).bounds.hi, glm::dvec3(1010, 2020, 3000));
+}
+
+TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
+{
+    // The unit sphere moved a million and a billion units away, written in double precision (a
+    // .vtk file's double POINTS): every triangle kept, and normalised where the unmoved one is.
+    const SurfaceField sphere = makeSphere(4);
+    SurfaceField unmoved = sphere;
+    normalize(unmoved);
+    TempDir dir;
+    for (const double offset : {1e6, -1e9}) {
+        std::string vtk = "# vtk DataFile Version 3.0\nfar sphere\nASCII\nDATASET POLYDATA\nPOINTS " +
+                          std::to_string(sphere.mesh.positions.size()) + " double\n";
+        char line[128];
+        for (const glm::vec3& p : sphere.mesh.positions) {
+            std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", double(p.x) + offset, double(p.y) - 2.0 * offset,
+                          double(p.z) + 0.5 * offset);
+            vtk += line;
+        }
+        vtk += "POLYGONS " + std::to_string(sphere.mesh.triangles.size()) + " " +
+               std::to_string(4 * sphere.mesh.triangles.size()) + "\n";
+        for (const auto& t : sphere.mesh.triangles)
+            vtk += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
+        const std::string path = dir.file("far.vtk");
+        writeFile(path, vtk);
+        MeshReadReport report;
+        SurfaceField far = readMesh(path, {}, &report);
+        EXPECT_EQ(report.degenerateDropped, 0u) << offset;
+        ASSERT_EQ(far.mesh.triangles.size(), sphere.mesh.triangles.size()) << offset;
+        normalize(far);
+        float worst = 0.0f;
+        for (std::size_t v = 0; v < far.mesh.positions.size(); ++v)
+            worst = std::max(worst, glm::length(far.mesh.positions[v] - unmoved.mesh.positions[v]));
+        EXPECT_LT(worst, 1e-6f) << offset;
+        const glm::dvec3 back = far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[0]));
+        EXPECT_NEAR(back.x, double(sphere.mesh.positions[0].x) + offset, 1e-5) << offset;
+    }
 }
 
 TEST(MeshReader, StlAsciiAndBinaryMergeCorners)

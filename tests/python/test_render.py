@@ -197,3 +197,17 @@ def test_the_stub_file_names_every_keyword_the_functions_take():
         signature = function.__doc__.splitlines()[0]  # pybind11's "name(arg: type = default, *, ...) -> type"
         taken = re.findall(r"(?:\(|, )(\w+):", signature[:signature.rindex(") ->")])
         assert stubbed[function.__name__] == taken, function.__name__
+
+
+def test_a_mesh_far_from_its_origin_renders_as_at_its_origin():
+    """Coordinates given in double precision a million units away keep every triangle and the picture."""
+    vertices, faces, height = uv_sphere()
+    offset = np.array([1e6, -2e6, 5e5])
+    near = inversevis.Mesh(vertices, faces, point_data={"height": height})
+    far = inversevis.Mesh(vertices + offset, faces, point_data={"height": height})
+    assert len(far.faces) == len(near.faces)
+    assert np.allclose(far.vertices, (vertices + offset).astype(np.float32))
+    a = inversevis.render(near, size=(160, 160), theta=60, phi=20).rgba
+    b = inversevis.render(far, size=(160, 160), theta=60, phi=20).rgba
+    differs = np.any(np.abs(a.astype(int) - b.astype(int)) > 2, axis=-1)
+    assert differs.mean() < 0.01

@@ -68,7 +68,9 @@ struct MeshInfo {
 
 /// @brief Reads a mesh in its own units (not normalised), polygons fan-triangulated, degenerate
 ///        triangles (repeated index or zero area) dropped, with every array of the file and the
-///        file cell each triangle came from.
+///        file cell each triangle came from. A mesh whose box's centre lies further from the
+///        origin than the box is long is kept relative to that centre (field.normalization's
+///        centre), read in double first, so that it keeps its shape in single precision.
 /// @param path mesh file; format chosen by extension (case-insensitive)
 /// @param options scalar to show (at most one of name / file; see showArray for names)
 /// @param report optional output: dropped triangles and notes on what is not shown
@@ -86,7 +88,7 @@ SurfaceField readMesh(const std::string& path, const MeshReadOptions& options = 
 /// @param name what messages call the mesh (one line "<name>: <problem>")
 /// @param triangles three vertex indices per triangle
 /// @throw InputError as readMesh; for an array of the wrong length, naming it
-SurfaceField meshFromArrays(const std::string& name, std::vector<glm::vec3> positions,
+SurfaceField meshFromArrays(const std::string& name, std::vector<glm::dvec3> positions,
                             std::vector<std::int64_t> triangles, std::vector<DataArray> arrays,
                             MeshReadReport* report = nullptr);
 

@@ -19,7 +19,7 @@ namespace ivis::core::detail {
 
 /// Everything one reader found in one file, in the file's own units.
 struct RawMesh {
-    std::vector<glm::vec3> positions;      ///< the file's points
+    std::vector<glm::dvec3> positions;     ///< the file's points, as precise as the file holds them
     std::vector<std::int64_t> corners;     ///< corner indices of every face, 0-based, in face order
     std::vector<std::size_t> faceEnds;     ///< end of each face's corners in @a corners
     std::vector<std::uint32_t> faceCells;  ///< file cell of each face; empty: face f is cell f
@@ -45,5 +45,13 @@ struct RawMesh {
         faceCells.push_back(cell);
     }
 };
+
+/// The point (@a x, @a y, @a z) as an array of @a type holds it: a Float32 array's coordinates
+/// (written as text with more digits, say) rounded to single precision, as VTK reads them.
+inline glm::dvec3 storedPoint(double x, double y, double z, ValueType type)
+{
+    if (type != ValueType::Float32) return {x, y, z};
+    return glm::dvec3(glm::vec3(float(x), float(y), float(z)));
+}
 
 }  // namespace ivis::core::detail

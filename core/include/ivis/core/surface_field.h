@@ -27,7 +27,7 @@ struct SurfaceField {
     Association valuesOn = Association::Point;  ///< whether @a values are per vertex or per triangle
     std::string name;                           ///< the shown scalar's name ("" when there is none)
     std::string sourcePath;                     ///< file it came from, or "generated:<scene>"
-    Similarity normalization;                   ///< identity until normalize() is called
+    Similarity normalization;                   ///< file units -> the positions' (readMesh: a shift at most)
     std::vector<DataArray> arrays;              ///< the file's arrays: a tuple per vertex (the file's points
                                                 ///< some triangle uses) or per file cell
     std::vector<std::uint32_t> triangleCells;   ///< file cell of each data triangle (empty when generated)
@@ -56,9 +56,10 @@ void showStepData(SurfaceField& field, SurfaceField&& step);
 /// @throw ValueError if the mesh has zero extent.
 void normalize(SurfaceField& field);
 
-/// @brief Maps the surface by @a frame (normalizedFromMesh) instead of its own normalising
-///        transform, composed into field.normalization as normalize() composes it: the steps of a
-///        time series share their first step's frame.
+/// @brief Maps the surface by @a frame (normalised from the file's units, as a normalised field's
+///        normalization) instead of its own normalising transform, composed into
+///        field.normalization as normalize() composes it: the steps of a time series share their
+///        first step's frame.
 void normalizeBy(SurfaceField& field, const Similarity& frame);
 
 /// @brief The transform normalize() applies to a mesh bounded by @a box: its centre to 0, its
