@@ -76,13 +76,14 @@ std::optional<std::uint32_t> parseCount(std::string_view token)
     return std::uint32_t(value);
 }
 
-void checkCoordinate(const std::string& path, std::string_view token, const std::string& where)
+double checkCoordinate(const std::string& path, std::string_view token, const std::string& where)
 {
     const FloatToken number = parseFloatToken(token);
     if (number.kind == FloatToken::NonFinite) failInput(path, where + " has a non-finite coordinate");
     if (number.kind == FloatToken::NotANumber) {
         failInput(path, where + " has a non-numeric coordinate '" + std::string(token) + "'");
     }
+    return number.value;
 }
 
 void failInput(const std::string& path, const std::string& problem)
@@ -110,8 +111,10 @@ const char* formatName(MeshFormat format)
 MeshLayout checkMeshLayout(const std::string& path, MeshFormat format, std::string& data)
 {
     if (format == MeshFormat::Ply) return preparePly(path, data);
-    if (format == MeshFormat::Off) return {checkOff(path, data), false, {}};
-    if (format == MeshFormat::Obj) return {checkObj(path, data), false, {}};
+    MeshLayout layout;
+    if (format == MeshFormat::Off) layout.facesInFile = checkOff(path, data, layout.textPoints);
+    if (format == MeshFormat::Obj) layout.facesInFile = checkObj(path, data, layout.textPoints);
+    if (format == MeshFormat::Off || format == MeshFormat::Obj) return layout;
     return checkStl(path, data);
 }
 

@@ -26,11 +26,12 @@ MeshLayout preparePly(const std::string& path, std::string& data);
 
 /// ASCII OFF as OpenMesh reads it: header line, counts, per vertex 3 (6 with N) numbers and the
 /// rest of the line, per face a length and that many indices (and the rest of the line with C).
-std::size_t checkOff(const std::string& path, const std::string& data);
+/// Returns the face count; @a points gets the vertices in double.
+std::size_t checkOff(const std::string& path, const std::string& data, std::vector<glm::dvec3>& points);
 
 /// Checks every "v" line (OpenMesh silently skips unreadable ones, shifting all later indices)
-/// and returns the number of "f" lines. OBJ numbering is 1-based.
-std::size_t checkObj(const std::string& path, const std::string& data);
+/// and returns the number of "f" lines; @a points gets the vertices in double. OBJ numbering is 1-based.
+std::size_t checkObj(const std::string& path, const std::string& data, std::vector<glm::dvec3>& points);
 
 /// Binary when the size matches the triangle count (OpenMesh's test); otherwise ASCII, where
 /// OpenMesh takes the three lines after each "outer loop" line as the corners.
@@ -54,6 +55,6 @@ bool isDecimal(std::string_view token);
 std::optional<std::uint32_t> parseCount(std::string_view token);
 
 /// Validates a coordinate token, naming the vertex in the error.
-void checkCoordinate(const std::string& path, std::string_view token, const std::string& where);
+double checkCoordinate(const std::string& path, std::string_view token, const std::string& where);
 
 }  // namespace ivis::core::detail

@@ -37,7 +37,7 @@ void checkFace(const std::string& path, TextCursor& in, std::size_t face, std::s
 
 }  // namespace
 
-std::size_t checkObj(const std::string& path, const std::string& data)
+std::size_t checkObj(const std::string& path, const std::string& data, std::vector<glm::dvec3>& points)
 {
     TextCursor lines(data);
     std::size_t vertices = 0;
@@ -49,10 +49,11 @@ std::size_t checkObj(const std::string& path, const std::string& data)
         if (keyword == "f") checkFace(path, in, ++faces, vertices);
         if (keyword != "v") continue;
         const std::string where = "vertex " + std::to_string(++vertices);
+        glm::dvec3& point = points.emplace_back();
         for (int k = 0; k < 3; ++k) {
             const std::string_view token = in.token();
             if (token.empty()) failInput(path, where + " has fewer than three coordinates");
-            checkCoordinate(path, token, where);
+            point[k] = checkCoordinate(path, token, where);
         }
     }
     return faces;

@@ -7,7 +7,7 @@
 
 namespace ivis::core::detail {
 
-std::size_t checkOff(const std::string& path, const std::string& data)
+std::size_t checkOff(const std::string& path, const std::string& data, std::vector<glm::dvec3>& points)
 {
     const auto truncated = [&] { failInput(path, "not a valid OFF mesh (the file is truncated)"); };
     TextCursor in(data);
@@ -29,12 +29,14 @@ std::size_t checkOff(const std::string& path, const std::string& data)
         if (!n) failInput(path, "not a valid OFF mesh (bad vertex/face/edge counts)");
         count = *n;
     }
+    points.reserve(counts[0]);
     for (std::uint32_t v = 0; v < counts[0]; ++v) {
+        glm::dvec3& point = points.emplace_back();
         for (int k = 0; k < (normals ? 6 : 3); ++k) {
             const std::string_view token = in.token();
             if (token.empty()) truncated();
             if (k < 3) {
-                checkCoordinate(path, token, "vertex " + std::to_string(v));
+                point[k] = checkCoordinate(path, token, "vertex " + std::to_string(v));
             } else if (!isDecimal(token)) {
                 failInput(path, "vertex " + std::to_string(v) + " has an invalid normal '" +
                                     std::string(token) + "'");

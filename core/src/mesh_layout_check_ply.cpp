@@ -225,7 +225,10 @@ std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType ty
 void checkPlyValue(const std::string& path, std::string_view token, const PlyProperty& p,
                    const std::string& where)
 {
-    if (p.role == PlyRole::Position) return checkCoordinate(path, token, where);
+    if (p.role == PlyRole::Position) {
+        checkCoordinate(path, token, where);
+        return;
+    }
     const bool asFloat = p.role == PlyRole::Vector ||
                          (p.role == PlyRole::Color ? p.type == PlyType::Float32 : isPlyFloat(p.type));
     if (asFloat ? isDecimal(token) : isInteger(token)) {

@@ -20,7 +20,7 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
                     if ((bits & 0x7F800000u) == 0x7F800000u)  // all exponent bits: inf or NaN
                         failInput(path, "facet " + std::to_string(f) + " has a non-finite coordinate");
                 }
-            return {count, true, {}};
+            return {count, true, {}, {}};
         }
     }
     const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
@@ -51,7 +51,7 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
     }
     if (lowercase(std::string(last.substr(0, 8))) != "endsolid")
         failInput(path, "not a valid STL mesh (the file is truncated: it does not end with endsolid)");
-    return {facets, false, {}};
+    return {facets, false, {}, {}};
 }
 
 }  // namespace ivis::core::detail

@@ -104,8 +104,8 @@ private:
             failInput(mPath, "Points have " + std::to_string(points.components) + " components, not 3");
         mMesh.positions.resize(count);
         for (std::size_t i = 0; i < count; ++i) {
-            mMesh.positions[i] =
-                detail::storedPoint(points.values[3 * i], points.values[3 * i + 1], points.values[3 * i + 2], points.type);
+            const double* xyz = &points.values[3 * i];
+            mMesh.positions[i] = detail::storedPoint(xyz[0], xyz[1], xyz[2], points.type);
         }
     }
 

@@ -236,41 +236,63 @@ TEST(MeshReader, CoordinatesStayInFileUnits)
     EXPECT_EQ(describeMesh(farPath).bounds.hi, glm::dvec3(1010, 2020, 3000));
 }
 
+/// The sphere's points moved by @a offset (and -2 and 0.5 times it in y and z), one a line in
+/// double precision, each line between @a before and @a after.
+std::string movedPoints(const SurfaceField& sphere, double offset, const char* before, const char* after)
+{
+    std::string text;
+    char line[128];
+    for (const glm::vec3& p : sphere.mesh.positions) {
+        std::snprintf(line, sizeof line, "%s%.17g %.17g %.17g%s\n", before, double(p.x) + offset,
+                      double(p.y) - 2.0 * offset, double(p.z) + 0.5 * offset, after);
+        text += line;
+    }
+    return text;
+}
+
 TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
 {
     // The unit sphere moved a million and a billion units away, written in double precision (a
-    // .vtk file's double POINTS): every triangle kept, and normalised where the unmoved one is.
+    // .vtk file's double POINTS, an OBJ's and an OFF's text): every triangle kept, and normalised
+    // where the unmoved one is.
     const SurfaceField sphere = makeSphere(4);
     SurfaceField unmoved = sphere;
     normalize(unmoved);
-    TempDir dir;
-    for (const double offset : {1e6, -1e9}) {
-        std::string vtk = "# vtk DataFile Version 3.0\nfar sphere\nASCII\nDATASET POLYDATA\nPOINTS " +
-                          std::to_string(sphere.mesh.positions.size()) + " double\n";
-        char line[128];
-        for (const glm::vec3& p : sphere.mesh.positions) {
-            std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", double(p.x) + offset, double(p.y) - 2.0 * offset,
-                          double(p.z) + 0.5 * offset);
-            vtk += line;
-        }
-        vtk += "POLYGONS " + std::to_string(sphere.mesh.triangles.size()) + " " +
-               std::to_string(4 * sphere.mesh.triangles.size()) + "\n";
-        for (const auto& t : sphere.mesh.triangles)
-            vtk += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
-        const std::string path = dir.file("far.vtk");
-        writeFile(path, vtk);
-        MeshReadReport report;
-        SurfaceField far = readMesh(path, {}, &report);
-        EXPECT_EQ(report.degenerateDropped, 0u) << offset;
-        ASSERT_EQ(far.mesh.triangles.size(), sphere.mesh.triangles.size()) << offset;
-        normalize(far);
-        float worst = 0.0f;
-        for (std::size_t v = 0; v < far.mesh.positions.size(); ++v)
-            worst = std::max(worst, glm::length(far.mesh.positions[v] - unmoved.mesh.positions[v]));
-        EXPECT_LT(worst, 1e-6f) << offset;
-        const glm::dvec3 back = far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[0]));
-        EXPECT_NEAR(back.x, double(sphere.mesh.positions[0].x) + offset, 1e-5) << offset;
+    const std::size_t points = sphere.mesh.positions.size(), triangles = sphere.mesh.triangles.size();
+    std::string vtkCells = "POLYGONS " + std::to_string(triangles) + " " + std::to_string(4 * triangles) + "\n";
+    std::string objFaces, offFaces;
+    for (const auto& t : sphere.mesh.triangles) {
+        const std::string corners = std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
+        vtkCells += "3 " + corners + "\n";
+        offFaces += "3 " + corners + "\n";
+        objFaces += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " +
+                    std::to_string(t[2] + 1) + "\n";
     }
+    TempDir dir;
+    for (const double offset : {1e6, -1e9})
+        for (const std::string format : {"vtk", "obj", "off"}) {
+            std::string text;
+            if (format == "vtk")
+                text = "# vtk DataFile Version 3.0\nfar sphere\nASCII\nDATASET POLYDATA\nPOINTS " +
+                       std::to_string(points) + " double\n" + movedPoints(sphere, offset, "", "") + vtkCells;
+            if (format == "obj") text = movedPoints(sphere, offset, "v ", "") + objFaces;
+            if (format == "off")
+                text = "OFF\n" + std::to_string(points) + " " + std::to_string(triangles) + " 0\n" +
+                       movedPoints(sphere, offset, "", "") + offFaces;
+            const std::string path = dir.file("far." + format);
+            writeFile(path, text);
+            MeshReadReport report;
+            SurfaceField far = readMesh(path, {}, &report);
+            EXPECT_EQ(report.degenerateDropped, 0u) << format << " " << offset;
+            ASSERT_EQ(far.mesh.triangles.size(), triangles) << format << " " << offset;
+            normalize(far);
+            float worst = 0.0f;
+            for (std::size_t v = 0; v < far.mesh.positions.size(); ++v)
+                worst = std::max(worst, glm::length(far.mesh.positions[v] - unmoved.mesh.positions[v]));
+            EXPECT_LT(worst, 1e-6f) << format << " " << offset;
+            const glm::dvec3 back = far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[0]));
+            EXPECT_NEAR(back.x, double(sphere.mesh.positions[0].x) + offset, 1e-5) << format << " " << offset;
+        }
 }
 
 TEST(MeshReader, StlAsciiAndBinaryMergeCorners)

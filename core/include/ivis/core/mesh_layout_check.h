@@ -7,6 +7,8 @@
 
 #include <ivis/core/data_array.h>
 
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
@@ -31,6 +33,7 @@ struct MeshLayout {
     std::size_t facesInFile = 0;  ///< faces (STL facets) the file declares or contains
     bool binaryStl = false;       ///< STL whose size matches its binary triangle count
     std::vector<BytePlyProperty> asciiPlyBytes;
+    std::vector<glm::dvec3> textPoints;  ///< an OBJ's or OFF's points as written, in double
 };
 
 /// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from
