@@ -29,7 +29,6 @@ std::size_t checkOff(const std::string& path, const std::string& data, std::vect
         if (!n) failInput(path, "not a valid OFF mesh (bad vertex/face/edge counts)");
         count = *n;
     }
-    points.reserve(counts[0]);
     for (std::uint32_t v = 0; v < counts[0]; ++v) {
         glm::dvec3& point = points.emplace_back();
         for (int k = 0; k < (normals ? 6 : 3); ++k) {
