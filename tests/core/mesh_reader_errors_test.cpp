@@ -160,6 +160,8 @@ TEST(MeshReader, HugeCountsFailFast)
     expectReadError(dir.file("len.off"), "truncated");
     writeFile(dir.file("nf.off"), "OFF\n3 4000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     expectReadError(dir.file("nf.off"), "truncated");
+    writeFile(dir.file("nv.off"), "OFF\n4000000000 1 0\n0 0 0\n");  // its points are not asked for up front
+    expectReadError(dir.file("nv.off"), "truncated");
     writeFile(dir.file("ov.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n99999999999 0 1 2\n");
     expectReadError(dir.file("ov.off"), "not a valid OFF mesh");
     Bytes body;
