@@ -237,14 +237,14 @@ TEST(MeshReader, CoordinatesStayInFileUnits)
 }
 
 /// The sphere's points moved by @a offset (and -2 and 0.5 times it in y and z), one a line in
-/// double precision, each line between @a before and @a after.
-std::string movedPoints(const SurfaceField& sphere, double offset, const char* before, const char* after)
+/// double precision, each after @a prefix.
+std::string movedPoints(const SurfaceField& sphere, double offset, const char* prefix)
 {
     std::string text;
     char line[128];
     for (const glm::vec3& p : sphere.mesh.positions) {
-        std::snprintf(line, sizeof line, "%s%.17g %.17g %.17g%s\n", before, double(p.x) + offset,
-                      double(p.y) - 2.0 * offset, double(p.z) + 0.5 * offset, after);
+        std::snprintf(line, sizeof line, "%s%.17g %.17g %.17g\n", prefix, double(p.x) + offset,
+                      double(p.y) - 2.0 * offset, double(p.z) + 0.5 * offset);
         text += line;
     }
     return text;
@@ -259,12 +259,9 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
     SurfaceField unmoved = sphere;
     normalize(unmoved);
     const std::size_t points = sphere.mesh.positions.size(), triangles = sphere.mesh.triangles.size();
-    std::string vtkCells = "POLYGONS " + std::to_string(triangles) + " " + std::to_string(4 * triangles) + "\n";
-    std::string objFaces, offFaces;
+    std::string polygons, objFaces;  // "3 a b c" lines as VTK's POLYGONS and OFF list them; OBJ's from 1
     for (const auto& t : sphere.mesh.triangles) {
-        const std::string corners = std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
-        vtkCells += "3 " + corners + "\n";
-        offFaces += "3 " + corners + "\n";
+        polygons += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
         objFaces += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " +
                     std::to_string(t[2] + 1) + "\n";
     }
@@ -274,11 +271,12 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
             std::string text;
             if (format == "vtk")
                 text = "# vtk DataFile Version 3.0\nfar sphere\nASCII\nDATASET POLYDATA\nPOINTS " +
-                       std::to_string(points) + " double\n" + movedPoints(sphere, offset, "", "") + vtkCells;
-            if (format == "obj") text = movedPoints(sphere, offset, "v ", "") + objFaces;
+                       std::to_string(points) + " double\n" + movedPoints(sphere, offset, "") + "POLYGONS " +
+                       std::to_string(triangles) + " " + std::to_string(4 * triangles) + "\n" + polygons;
+            if (format == "obj") text = movedPoints(sphere, offset, "v ") + objFaces;
             if (format == "off")
                 text = "OFF\n" + std::to_string(points) + " " + std::to_string(triangles) + " 0\n" +
-                       movedPoints(sphere, offset, "", "") + offFaces;
+                       movedPoints(sphere, offset, "") + polygons;
             const std::string path = dir.file("far." + format);
             writeFile(path, text);
             MeshReadReport report;
