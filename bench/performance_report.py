@@ -131,8 +131,10 @@ What a frame of the default method costs: every indirect pixel traces its own ra
 interpolated between neighbours misses the landings' sub-voxel detail:
 [decisions/interpolated-landings.md](decisions/interpolated-landings.md)), seeks its own seed (the
 centre of its view ray's valley, sought near the bottom interpolated from the lattice), and where
-its neighbours do not show it stable, the stability rule traces two probes. What makes the frames
-as fast as they are:
+its neighbours do not show it stable, the stability rule traces two probes: in the frame above
+(counted with `--fov 75 --stable-shift 0.1`) 309,000 pixels' own rays took 29.5 M steps and
+175,000 probes of 87,000 pixels 24.5 M, 45% of the steps. A fifth of the steps creep through the
+last half voxel to the landing. What makes the frames as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
   lattice's valley bottoms, the lattice's own searches started from their blocks' corners' bottoms
   (volumes above 200), background blocks skipped, the stability rule's probes only where needed.
@@ -149,6 +151,11 @@ as fast as they are:
   ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200).
   What the seed search costs and what these two change:
   [decisions/seed-search-cost.md](decisions/seed-search-cost.md).
+- **Tangent planes near the landing** ([rendering.md](rendering.md)): above volume 200, below a
+  fine voxel of phi one sample serves the next 16 steps as the field's tangent plane, checked
+  where they end and stepped again where it fails: 14% fewer samples and about 4% of the frame on
+  the armadillo, nothing lost or gained on the thin vessels of the tree
+  ([decisions/tangent-planes.md](decisions/tangent-planes.md)).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
 - **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far

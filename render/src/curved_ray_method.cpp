@@ -1,5 +1,7 @@
 #include <ivis/render/curved_ray_method.h>
 
+#include <ivis/render/tangent_planes.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -214,26 +216,28 @@ CurvedRayTrace CurvedRayMap::trace(const CurvedRayStart& start, DistanceField::S
     return result;
 }
 
-void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
-                             CurvedRayTrace* traces) const
+namespace {
+
+/// CurvedRayMap::traceMany() of @a method's rays landing below @a epsilon, on tangent planes where
+/// @a kPlanes.
+template <bool kPlanes>
+void traceInLanes(const CurvedRayMethod& method, float epsilon, const CurvedRayStart* starts, std::size_t count,
+                  DistanceField::Sampler& sampler, CurvedRayTrace* traces)
 {
     struct Lane {
         std::size_t ray;
         int launch;
         glm::vec3 launchVelocity;
-        CurvedRayEnd end;
+        CurvedRayFlight flight;
     };
-    const CurvedRayParams& params = mMethod.rayParams();
+    const CurvedRayParams& params = method.rayParams();
     const float escape = escapeDistance(sampler.field());
+    const TangentPlaneRule planes = tangentPlaneRule(sampler.field().voxelSize());
     auto launch = [&](Lane& lane, std::size_t ray, int launchIndex) {
-        lane.ray = ray;
-        lane.launch = launchIndex;
-        lane.launchVelocity = mMethod.launchVelocity(starts[ray], launchIndex);
-        lane.end = CurvedRayEnd{};
-        lane.end.position = starts[ray].seed;
-        lane.end.velocity = lane.launchVelocity;
+        const glm::vec3 velocity = method.launchVelocity(starts[ray], launchIndex);
+        lane = Lane{ray, launchIndex, velocity, CurvedRayFlight(starts[ray].seed, velocity)};
     };
-    Lane lanes[kLanes];
+    Lane lanes[CurvedRayMap::kLanes];
     int live = 0;
     std::size_t next = 0;
     // Moves next past the rays their method traced while aiming them, recording those as they are.
@@ -241,24 +245,19 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
         for (; next < count && starts[next].traced; ++next) traces[next] = {*starts[next].traced, 0};
         return next < count;
     };
-    for (; live < kLanes && moreToTrace(); ++live) launch(lanes[live], next++, 0);
+    for (; live < CurvedRayMap::kLanes && moreToTrace(); ++live) launch(lanes[live], next++, 0);
     while (live > 0) {
         for (int k = 0; k < live;) {
             Lane& lane = lanes[k];
-            CurvedRayEnd& end = lane.end;
-            if (end.steps < params.maxSteps) {
-                const CurvedRayStep step =
-                    stepCurvedRay(sampler, end.position, end.velocity, params.stepSize, mEpsilon, escape);
-                if (step == CurvedRayStep::Moved) {
-                    ++end.steps;
-                    ++k;
-                    continue;
-                }
-                end.landed = step == CurvedRayStep::Landed;
+            if (lane.flight.end().steps < params.maxSteps &&
+                lane.flight.template advance<kPlanes>(sampler, planes, params.stepSize, epsilon, escape)) {
+                ++k;
+                continue;
             }
             // This launch has ended: launch again while it did not land (as the method says), else
             // record it and take the next ray.
-            if (!end.landed && lane.launch != mMethod.relaunches() && lane.launchVelocity != glm::vec3(0.0f)) {
+            const CurvedRayEnd& end = lane.flight.end();
+            if (!end.landed && lane.launch != method.relaunches() && lane.launchVelocity != glm::vec3(0.0f)) {
                 launch(lane, lane.ray, lane.launch + 1);
             } else {
                 traces[lane.ray] = {end, lane.launch};
@@ -272,6 +271,19 @@ void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, Di
             ++k;
         }
     }
+}
+
+}  // namespace
+
+void CurvedRayMap::traceMany(const CurvedRayStart* starts, std::size_t count, DistanceField::Sampler& sampler,
+                             CurvedRayTrace* traces) const
+{
+    // Tangent planes pay only where a fine band of voxels finer than the far field's serves the
+    // landings (docs/rendering.md, "Tangent planes near the landing").
+    if (sampler.field().hasFineBand())
+        traceInLanes<true>(mMethod, mEpsilon, starts, count, sampler, traces);
+    else
+        traceInLanes<false>(mMethod, mEpsilon, starts, count, sampler, traces);
 }
 
 void CurvedRayMap::mapMany(const glm::dvec2* positions, std::size_t count, DistanceField::Sampler& sampler,

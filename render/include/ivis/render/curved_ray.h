@@ -97,9 +97,19 @@ glm::vec3 initialVelocity(const glm::vec3& gradient, const glm::vec3& viewDirect
 /// @brief What one integration step did.
 enum class CurvedRayStep { Moved, Landed, Escaped };
 
-/// @brief One symplectic Euler step of dp/dt = phi v/|v|, dv/dt = -grad phi at p:
-///        v' = v - h grad phi(p); p' = p + h phi(p) v'/|v'|; or, without moving, Landed when
-///        phi(p) < eps and Escaped when phi(p) reaches @a escapeDistance.
+/// @brief The move of one symplectic Euler step of dp/dt = phi v/|v|, dv/dt = -grad phi, given
+///        @a phi and @a gradient at p: v' = v - h grad phi; p' = p + h phi v'/|v'|.
+[[gnu::always_inline]] inline void moveCurvedRay(glm::vec3& p, glm::vec3& v, float phi, const glm::vec3& gradient,
+                                                 float stepSize)
+{
+    v -= stepSize * gradient;
+    const float speed = glm::length(v);
+    const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
+    p += stepSize * phi * heading;
+}
+
+/// @brief One symplectic Euler step (moveCurvedRay) with phi and its gradient sampled at p; or,
+///        without moving, Landed when phi(p) < eps and Escaped when phi(p) reaches @a escapeDistance.
 /// @interface FieldSampler: float phiAndGradient(const glm::vec3& p, glm::vec3& gradient);
 template <typename FieldSampler>
 [[gnu::always_inline]] inline CurvedRayStep stepCurvedRay(FieldSampler& sampler, glm::vec3& p, glm::vec3& v,
@@ -109,10 +119,7 @@ template <typename FieldSampler>
     const float phi = sampler.phiAndGradient(p, gradient);
     if (phi < epsilon) return CurvedRayStep::Landed;
     if (phi >= escapeDistance) return CurvedRayStep::Escaped;
-    v -= stepSize * gradient;
-    const float speed = glm::length(v);
-    const glm::vec3 heading = speed > 0.0f ? v / speed : -gradient;
-    p += stepSize * phi * heading;
+    moveCurvedRay(p, v, phi, gradient, stepSize);
     return CurvedRayStep::Moved;
 }
 
