@@ -112,8 +112,8 @@ MeshLayout checkMeshLayout(const std::string& path, MeshFormat format, std::stri
 {
     if (format == MeshFormat::Ply) return preparePly(path, data);
     MeshLayout layout;
-    if (format == MeshFormat::Off) layout.facesInFile = checkOff(path, data, layout.textPoints);
-    if (format == MeshFormat::Obj) layout.facesInFile = checkObj(path, data, layout.textPoints);
+    if (format == MeshFormat::Off) layout.facesInFile = checkOff(path, data, layout.filePoints);
+    if (format == MeshFormat::Obj) layout.facesInFile = checkObj(path, data, layout.filePoints);
     if (format == MeshFormat::Off || format == MeshFormat::Obj) return layout;
     return checkStl(path, data);
 }

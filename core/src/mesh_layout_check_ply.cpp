@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -219,16 +222,32 @@ std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType ty
     return type == PlyType::Int32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
 }
 
+/// Reads a binary float or double of @a type at @a offset; beyond single precision infinite (as
+/// OpenMesh's single-precision point would be).
+double binaryCoordinate(const std::string& data, std::size_t offset, PlyType type, bool bigEndian)
+{
+    std::array<unsigned char, 8> bytes{};
+    const std::size_t size = plySize(type);
+    for (std::size_t i = 0; i < size; ++i) {
+        bytes[bigEndian ? size - 1 - i : i] = static_cast<unsigned char>(data[offset + i]);
+    }
+    double value;
+    if (type == PlyType::Float64) {
+        std::memcpy(&value, bytes.data(), sizeof value);
+    } else {
+        float single;
+        std::memcpy(&single, bytes.data(), sizeof single);
+        value = single;
+    }
+    return std::abs(value) <= std::numeric_limits<float>::max() ? value : std::numeric_limits<double>::infinity();
+}
+
 /// Checks that OpenMesh reads an ASCII value whole, into the C++ type it uses for that property:
-/// float for positions, normals, texture coordinates and float colours, the declared type for
-/// other properties, and an integer for everything else.
+/// float for normals, texture coordinates and float colours, the declared type for other
+/// properties, and an integer for everything else (positions: checkCoordinate).
 void checkPlyValue(const std::string& path, std::string_view token, const PlyProperty& p,
                    const std::string& where)
 {
-    if (p.role == PlyRole::Position) {
-        checkCoordinate(path, token, where);
-        return;
-    }
     const bool asFloat = p.role == PlyRole::Vector ||
                          (p.role == PlyRole::Color ? p.type == PlyType::Float32 : isPlyFloat(p.type));
     if (asFloat ? isDecimal(token) : isInteger(token)) {
@@ -248,8 +267,10 @@ void checkPlyValue(const std::string& path, std::string_view token, const PlyPro
 }
 
 /// Walks the element data up to the faces: every value present, list lengths sane, ASCII values
-/// readable whole.
-void checkPlyBody(const std::string& path, const std::string& data, const PlyLayout& layout)
+/// readable whole; the vertices' points into @a points in double where the file holds more than
+/// single precision (ASCII, or a double coordinate), else left empty.
+void checkPlyBody(const std::string& path, const std::string& data, const PlyLayout& layout,
+                  std::vector<glm::dvec3>& points)
 {
     const auto truncated = [&] { failInput(path, "not a valid PLY mesh (the file is truncated)"); };
     TextCursor text(data, layout.bodyOffset);
@@ -283,12 +304,25 @@ void checkPlyBody(const std::string& path, const std::string& data, const PlyLay
     for (const PlyElement& e : layout.elements) {
         // OpenMesh reads other elements as text it skips.
         const bool checked = layout.ascii && (e.name == "vertex" || e.name == "face");
+        const auto isDoublePosition = [](const PlyProperty& p) {
+            return p.role == PlyRole::Position && p.type == PlyType::Float64;
+        };
+        const bool collect = e.name == "vertex" &&
+                             (layout.ascii || std::any_of(e.properties.begin(), e.properties.end(), isDoublePosition));
         for (std::uint32_t r = 0; r < e.count; ++r) {
             const std::string where = e.name + " " + std::to_string(r);
+            if (collect) points.emplace_back(0.0);
             for (const PlyProperty& p : e.properties) {
                 if (!p.countType) {
+                    const std::size_t at = offset;
                     const std::string_view token = value(p.type);
-                    if (checked) checkPlyValue(path, token, p, where);
+                    if (p.role == PlyRole::Position) {
+                        const double coordinate = layout.ascii ? checkCoordinate(path, token, where)
+                                                               : binaryCoordinate(data, at, p.type, layout.bigEndian);
+                        if (collect) points.back()[p.name[0] - 'x'] = coordinate;
+                    } else if (checked) {
+                        checkPlyValue(path, token, p, where);
+                    }
                     continue;
                 }
                 const std::uint64_t n = listLength(*p.countType);
@@ -313,8 +347,8 @@ MeshLayout preparePly(const std::string& path, std::string& data)
 {
     const PlyLayout layout = parsePlyHeader(path, data);
     checkPlySupport(path, layout);
-    checkPlyBody(path, data, layout);
     MeshLayout out;
+    checkPlyBody(path, data, layout, out.filePoints);
     if (!layout.ascii && data.compare(layout.headerTokens, layout.bodyOffset - layout.headerTokens,
                                       "\nend_header\n") != 0) {
         data = data.substr(0, layout.headerTokens) + "\nend_header\n" + data.substr(layout.bodyOffset);

@@ -230,8 +230,8 @@ RawMesh readOpenMeshFile(const std::string& path, MeshFormat format, std::string
     }
     if (!ok) failInput(path, "not a valid " + formatLabel(format) + " mesh");
     RawMesh raw = importer.take();
-    // OpenMesh hands over single-precision points: a text file's own, as written, replace them.
-    if (layout.textPoints.size() == raw.positions.size()) raw.positions = std::move(layout.textPoints);
+    // OpenMesh hands over single-precision points: the file's own, in double, replace them.
+    if (layout.filePoints.size() == raw.positions.size()) raw.positions = std::move(layout.filePoints);
     for (const MeshLayout::BytePlyProperty& p : layout.asciiPlyBytes)
         for (DataArray& array : raw.arrays)
             if (array.name == p.name && array.association == p.association) array.type = p.type;

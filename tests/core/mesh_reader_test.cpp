@@ -253,8 +253,8 @@ std::string movedPoints(const SurfaceField& sphere, double offset, const char* p
 TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
 {
     // The unit sphere moved a million and a billion units away, written in double precision (a
-    // .vtk file's double POINTS, an OBJ's and an OFF's text): every triangle kept, and normalised
-    // where the unmoved one is.
+    // .vtk file's double POINTS, an OBJ's, an OFF's and an ASCII PLY's text, a binary PLY's double
+    // properties in either byte order): every triangle kept, and normalised where the unmoved one is.
     const SurfaceField sphere = makeSphere(4);
     SurfaceField unmoved = sphere;
     normalize(unmoved);
@@ -267,8 +267,21 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
     }
     TempDir dir;
     for (const double offset : {1e6, -1e9})
-        for (const std::string format : {"vtk", "obj", "off"}) {
+        for (const std::string format : {"vtk", "obj", "off", "ply", "ply-le", "ply-be"}) {
             std::string text;
+            const std::string plyHeader =
+                " 1.0\nelement vertex " + std::to_string(points) +
+                "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(triangles) +
+                "\nproperty list uchar int vertex_indices\nend_header\n";
+            if (format == "ply") text = "ply\nformat ascii" + plyHeader + movedPoints(sphere, offset, "") + polygons;
+            if (format == "ply-le" || format == "ply-be") {
+                Bytes body(format == "ply-be");
+                for (const glm::vec3& q : sphere.mesh.positions)
+                    body.put(double(q.x) + offset).put(double(q.y) - 2.0 * offset).put(double(q.z) + 0.5 * offset);
+                for (const auto& t : sphere.mesh.triangles) body.triangle(t[0], t[1], t[2]);
+                const char* encoding = format == "ply-be" ? "binary_big_endian" : "binary_little_endian";
+                text = std::string("ply\nformat ") + encoding + plyHeader + body.str();
+            }
             if (format == "vtk")
                 text = "# vtk DataFile Version 3.0\nfar sphere\nASCII\nDATASET POLYDATA\nPOINTS " +
                        std::to_string(points) + " double\n" + movedPoints(sphere, offset, "") + "POLYGONS " +
@@ -277,7 +290,7 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
             if (format == "off")
                 text = "OFF\n" + std::to_string(points) + " " + std::to_string(triangles) + " 0\n" +
                        movedPoints(sphere, offset, "") + polygons;
-            const std::string path = dir.file("far." + format);
+            const std::string path = dir.file("far-" + format + "." + format.substr(0, 3));
             writeFile(path, text);
             MeshReadReport report;
             SurfaceField far = readMesh(path, {}, &report);

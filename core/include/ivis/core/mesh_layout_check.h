@@ -33,7 +33,9 @@ struct MeshLayout {
     std::size_t facesInFile = 0;  ///< faces (STL facets) the file declares or contains
     bool binaryStl = false;       ///< STL whose size matches its binary triangle count
     std::vector<BytePlyProperty> asciiPlyBytes;
-    std::vector<glm::dvec3> textPoints;  ///< an OBJ's or OFF's points as written, in double
+    /// The points as the file holds them, in double, where it holds more than single precision (OBJ,
+    /// OFF and ASCII PLY text, binary PLY with double coordinates); else empty.
+    std::vector<glm::dvec3> filePoints;
 };
 
 /// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from
