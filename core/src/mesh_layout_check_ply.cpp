@@ -172,6 +172,11 @@ PlyLayout parsePlyHeader(const std::string& path, const std::string& data)
 void checkPlySupport(const std::string& path, const PlyLayout& layout)
 {
     const auto bad = [&](const std::string& why) { failInput(path, "not a valid PLY mesh (" + why + ")"); };
+    // A second face element sent OpenMesh's ASCII reader into gigabytes of memory (a fuzzer's
+    // finding: tests/fuzz/regressions/ply/two-face-elements.ply).
+    const auto faceElements = std::count_if(layout.elements.begin(), layout.elements.end(),
+                                            [](const PlyElement& e) { return e.name == "face"; });
+    if (faceElements > 1) bad("two face elements");
     bool haveVertex = false;
     for (const PlyElement& e : layout.elements) {
         if (e.count > 0 && e.properties.empty()) bad("element '" + e.name + "' has no properties");

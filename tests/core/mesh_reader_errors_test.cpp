@@ -125,6 +125,12 @@ TEST(MeshReader, UnsupportedPlyLayoutsAreRejected)
     writeFile(path, "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty int x\nproperty int y\n"
                     "property int z\nend_header\n" + std::string(36, '\0'));
     expectReadError(path, "must be float or double");
+    // A second face element (the fuzzer's tests/fuzz/regressions/ply/two-face-elements.ply) sent
+    // OpenMesh's ASCII reader into 16 GB and 100 s.
+    const std::string twoFaces = xyzPlyHeader(3, 0);
+    writeFile(path, twoFaces.substr(0, afterZ) + "element face 2\nproperty char tag\n" + twoFaces.substr(afterZ) +
+                        "0 0 0\n1 0 0\n0 1 0\n");
+    expectReadError(path, "not a valid PLY mesh (two face elements)");
 }
 
 TEST(MeshReader, TruncatedBinaryPlyNeverCrashes)

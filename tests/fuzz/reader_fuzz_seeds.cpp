@@ -94,6 +94,21 @@ int main(int argc, char** argv)
     write(root / "off" / "tetra.off", off);
     write(root / "ply" / "ascii.ply", asciiPly);
     write(root / "ply" / "binary.ply", binaryPly);
+    std::string doublePly = "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty double x\n"
+                            "property double y\nproperty double z\nelement face 4\n"
+                            "property list uchar int vertex_indices\nend_header\n";  // read in double
+    const auto bigEndian = [&](auto value) {
+        std::string bytes;
+        append(bytes, value);
+        doublePly.append(bytes.rbegin(), bytes.rend());
+    };
+    for (const auto& v : kTetra)
+        for (const float c : v) bigEndian(double(c) + 1e9);
+    for (const auto& f : kFaces) {
+        bigEndian(std::uint8_t(3));
+        for (const int v : f) bigEndian(std::int32_t(v));
+    }
+    write(root / "ply" / "double.ply", doublePly);
     write(root / "ply" / "bytes.ply",  // 8-bit properties in ASCII, which OpenMesh is given as 16-bit
           "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
           "property uchar flag\nelement face 1\nproperty list uchar int vertex_indices\nproperty char tag\n"
