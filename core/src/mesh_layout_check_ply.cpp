@@ -215,14 +215,22 @@ void checkPlySupport(const std::string& path, const PlyLayout& layout)
     if (!haveVertex) bad("no vertex element");
 }
 
-/// Reads a binary list length of @a type at @a offset.
-std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType type, bool bigEndian)
+/// The bytes of a binary value of @a type at @a offset, least significant first, zero beyond its size.
+std::array<unsigned char, 8> littleEndianBytes(const std::string& data, std::size_t offset, PlyType type,
+                                               bool bigEndian)
 {
-    std::array<unsigned char, 4> bytes{};
+    std::array<unsigned char, 8> bytes{};
     const std::size_t size = plySize(type);
     for (std::size_t i = 0; i < size; ++i) {
         bytes[bigEndian ? size - 1 - i : i] = static_cast<unsigned char>(data[offset + i]);
     }
+    return bytes;
+}
+
+/// Reads a binary list length of @a type at @a offset.
+std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType type, bool bigEndian)
+{
+    const std::array<unsigned char, 8> bytes = littleEndianBytes(data, offset, type, bigEndian);
     const std::uint32_t raw = bytes[0] | (bytes[1] << 8) | (bytes[2] << 16) | (std::uint32_t(bytes[3]) << 24);
     return type == PlyType::Int32 ? std::int64_t(std::int32_t(raw)) : std::int64_t(raw);
 }
@@ -231,11 +239,7 @@ std::int64_t binaryCount(const std::string& data, std::size_t offset, PlyType ty
 /// OpenMesh's single-precision point would be).
 double binaryCoordinate(const std::string& data, std::size_t offset, PlyType type, bool bigEndian)
 {
-    std::array<unsigned char, 8> bytes{};
-    const std::size_t size = plySize(type);
-    for (std::size_t i = 0; i < size; ++i) {
-        bytes[bigEndian ? size - 1 - i : i] = static_cast<unsigned char>(data[offset + i]);
-    }
+    const std::array<unsigned char, 8> bytes = littleEndianBytes(data, offset, type, bigEndian);
     double value;
     if (type == PlyType::Float64) {
         std::memcpy(&value, bytes.data(), sizeof value);
@@ -306,12 +310,12 @@ void checkPlyBody(const std::string& path, const std::string& data, const PlyLay
         return std::uint64_t(n);
     };
 
+    const auto isDoublePosition = [](const PlyProperty& p) {
+        return p.role == PlyRole::Position && p.type == PlyType::Float64;
+    };
     for (const PlyElement& e : layout.elements) {
         // OpenMesh reads other elements as text it skips.
         const bool checked = layout.ascii && (e.name == "vertex" || e.name == "face");
-        const auto isDoublePosition = [](const PlyProperty& p) {
-            return p.role == PlyRole::Position && p.type == PlyType::Float64;
-        };
         const bool collect = e.name == "vertex" &&
                              (layout.ascii || std::any_of(e.properties.begin(), e.properties.end(), isDoublePosition));
         for (std::uint32_t r = 0; r < e.count; ++r) {

@@ -1,4 +1,4 @@
-// Curved rays on verified tangent planes (render/tangent_planes.h) against the same rays with every
+// Curved rays on checked tangent planes (render/tangent_planes.h) against the same rays with every
 // step sampled: exact where the field is a plane, stepped again where a plane fails its check, and
 // within a tenth of a voxel on real volumes (docs/rendering.md, "Tangent planes near the landing").
 #include "render/scene_fixture.h"

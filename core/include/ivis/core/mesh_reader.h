@@ -71,8 +71,8 @@ struct MeshInfo {
 ///        file cell each triangle came from. A mesh whose box's centre lies further from the
 ///        origin than the box is long is kept relative to that centre, rounded to a power of two
 ///        within its longest side (field.normalization's centre), its points taken as precisely
-///        as the file holds them (PLY and STL: single precision, through OpenMesh), so that it
-///        keeps its shape in single precision.
+///        as the file holds them (STL: single precision, through OpenMesh), so that it keeps its
+///        shape in single precision.
 /// @param path mesh file; format chosen by extension (case-insensitive)
 /// @param options scalar to show (at most one of name / file; see showArray for names)
 /// @param report optional output: dropped triangles and notes on what is not shown

@@ -83,7 +83,7 @@ private:
         float phi = 0.0f;
         bool onPlane = false;
         if (mPlaneStepsLeft > 0) {
-            phi = mPlane.phi + glm::dot(mPlane.gradient, mEnd.position - mPlane.origin);
+            phi = planePhi();
             onPlane = phi >= epsilon;  // a landing on the plane is sampled and checked first
             if (onPlane) --mPlaneStepsLeft, gradient = mPlane.gradient;
         }
@@ -110,14 +110,17 @@ private:
         int steps = 0;         ///< the steps taken before its sample
     };
 
+    /// phi of the plane at the ray's position.
+    float planePhi() const { return mPlane.phi + glm::dot(mPlane.gradient, mEnd.position - mPlane.origin); }
+
     /// Whether the plane's steps stand against the sample (@a phi, @a gradient) where they end;
     /// else the ray goes back to the plane's sample, to step from there sample by sample.
     bool standsCheck(float phi, const glm::vec3& gradient, const TangentPlaneRule& rule)
     {
-        const float planePhi = mPlane.phi + glm::dot(mPlane.gradient, mEnd.position - mPlane.origin);
+        const float predicted = planePhi();
         mPlane.active = false;
         mPlaneStepsLeft = 0;
-        if (std::abs(phi - planePhi) <= rule.phiTolerance &&
+        if (std::abs(phi - predicted) <= rule.phiTolerance &&
             glm::length(gradient - mPlane.gradient) <= kTangentPlaneGradientTolerance)
             return true;
         mEnd.position = mPlane.origin, mEnd.velocity = mPlane.velocity, mEnd.steps = mPlane.steps;
