@@ -33,8 +33,9 @@ std::size_t checkOff(const std::string& path, const std::string& data, std::vect
 /// and returns the number of "f" lines; @a points gets the vertices in double. OBJ numbering is 1-based.
 std::size_t checkObj(const std::string& path, const std::string& data, std::vector<glm::dvec3>& points);
 
-/// Binary when the size matches the triangle count (OpenMesh's test); otherwise ASCII, where
-/// OpenMesh takes the three lines after each "outer loop" line as the corners.
+/// Binary when the size matches the triangle count (OpenMesh's test); otherwise ASCII, where the
+/// three lines after each "outer loop" line are the corners (as OpenMesh takes them), kept in
+/// double in MeshLayout::stlCorners.
 MeshLayout checkStl(const std::string& path, const std::string& data);
 
 /// @a text in lower case (ASCII).

@@ -20,13 +20,17 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
                     if ((bits & 0x7F800000u) == 0x7F800000u)  // all exponent bits: inf or NaN
                         failInput(path, "facet " + std::to_string(f) + " has a non-finite coordinate");
                 }
-            return {count, true, {}, {}};
+            MeshLayout layout;
+            layout.facesInFile = count;
+            layout.binaryStl = true;
+            return layout;
         }
     }
     const std::string start(trim(std::string_view(data).substr(0, 64)).substr(0, 5));
     if (lowercase(start) != "solid") {
         failInput(path, "not a valid STL mesh");
     }
+    MeshLayout layout;
     TextCursor lines(data);
     std::size_t facets = 0;
     std::string_view last;  // the last line that is not blank: an ASCII STL ends with "endsolid"
@@ -42,16 +46,18 @@ MeshLayout checkStl(const std::string& path, const std::string& data)
             const std::string content(lines.line());
             TextCursor in(content);
             in.token();  // "vertex"
+            glm::dvec3& point = layout.stlCorners.emplace_back();
             for (int k = 0; k < 3; ++k) {
                 const std::string_view token = in.token();
                 if (token.empty()) failInput(path, where + " has a corner with fewer than three coordinates");
-                checkCoordinate(path, token, where);
+                point[k] = checkCoordinate(path, token, where);
             }
         }
     }
     if (lowercase(std::string(last.substr(0, 8))) != "endsolid")
         failInput(path, "not a valid STL mesh (the file is truncated: it does not end with endsolid)");
-    return {facets, false, {}, {}};
+    layout.facesInFile = facets;
+    return layout;
 }
 
 }  // namespace ivis::core::detail

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cctype>
+#include <map>
 #include <mutex>
 #include <sstream>
 
@@ -201,6 +202,29 @@ private:
 /// OpenMesh's reader singletons and log streams are process-wide state.
 std::mutex gOpenMeshMutex;
 
+/// The mesh of an ASCII STL's facet @a corners (three a facet): corners with equal coordinates
+/// merged into one vertex, numbered by first appearance, and facets with a repeated vertex dropped,
+/// as OpenMesh's STL reader does, but compared in double, where OpenMesh compares single-precision
+/// values and merges the distinct corners of a mesh far from its origin.
+RawMesh meshOfStlCorners(const std::vector<glm::dvec3>& corners)
+{
+    RawMesh raw;
+    std::map<std::array<double, 3>, std::int64_t> vertexAt;
+    std::array<std::int64_t, 3> facet{};
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        // + 0.0 makes -0 and 0 one key.
+        const std::array<double, 3> key{corners[c].x + 0.0, corners[c].y + 0.0, corners[c].z + 0.0};
+        const auto [at, added] = vertexAt.emplace(key, std::int64_t(raw.positions.size()));
+        if (added) raw.positions.push_back(corners[c]);
+        facet[c % 3] = at->second;
+        if (c % 3 != 2 || facet[0] == facet[1] || facet[1] == facet[2] || facet[0] == facet[2]) continue;
+        raw.corners.insert(raw.corners.end(), facet.begin(), facet.end());
+        raw.faceEnds.push_back(raw.corners.size());
+    }
+    raw.cellCount = raw.faceCount();
+    return raw;
+}
+
 /// "not a valid PLY mesh" style name.
 std::string formatLabel(MeshFormat format)
 {
@@ -213,7 +237,12 @@ std::string formatLabel(MeshFormat format)
 
 RawMesh readOpenMeshFile(const std::string& path, MeshFormat format, std::string data)
 {
-    const MeshLayout layout = checkMeshLayout(path, format, data);
+    MeshLayout layout = checkMeshLayout(path, format, data);
+    if (format == MeshFormat::Stl && !layout.binaryStl) {
+        RawMesh raw = meshOfStlCorners(layout.stlCorners);
+        raw.skippedFaces = layout.facesInFile - raw.faceCount();
+        return raw;
+    }
     // OpenMesh parses exactly the bytes that were checked.
     std::istringstream stream(data);
     std::string().swap(data);

@@ -17,6 +17,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace ivis::core {
@@ -253,13 +254,19 @@ std::string movedPoints(const SurfaceField& sphere, double offset, const char* p
 TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
 {
     // The unit sphere moved a million and a billion units away, written in double precision (a
-    // .vtk file's double POINTS, an OBJ's, an OFF's and an ASCII PLY's text, a binary PLY's double
-    // properties in either byte order): every triangle kept, and normalised where the unmoved one is.
+    // .vtk file's double POINTS, an OBJ's, an OFF's, an ASCII PLY's and an ASCII STL's text, a
+    // binary PLY's double properties in either byte order): every triangle kept, and normalised
+    // where the unmoved one is (compared corner by corner: an STL numbers its vertices as they appear).
     const SurfaceField sphere = makeSphere(4);
     SurfaceField unmoved = sphere;
     normalize(unmoved);
     const std::size_t points = sphere.mesh.positions.size(), triangles = sphere.mesh.triangles.size();
     std::string polygons, objFaces;  // "3 a b c" lines as VTK's POLYGONS and OFF list them; OBJ's from 1
+    std::vector<std::string> pointLines[2];  // per offset, each point's "x y z" line
+    for (int o = 0; o < 2; ++o) {
+        std::istringstream lines(movedPoints(sphere, o == 0 ? 1e6 : -1e9, ""));
+        for (std::string line; std::getline(lines, line);) pointLines[o].push_back(line);
+    }
     for (const auto& t : sphere.mesh.triangles) {
         polygons += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + "\n";
         objFaces += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " +
@@ -267,8 +274,17 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
     }
     TempDir dir;
     for (const double offset : {1e6, -1e9})
-        for (const std::string format : {"vtk", "obj", "off", "ply", "ply-le", "ply-be"}) {
+        for (const std::string format : {"vtk", "obj", "off", "ply", "ply-le", "ply-be", "stl"}) {
             std::string text;
+            if (format == "stl") {
+                text = "solid far\n";
+                for (const auto& t : sphere.mesh.triangles) {
+                    text += "facet normal 0 0 0\n outer loop\n";
+                    for (const std::uint32_t v : t) text += "  vertex " + pointLines[offset > 0.0 ? 0 : 1][v] + "\n";
+                    text += " endloop\nendfacet\n";
+                }
+                text += "endsolid far\n";
+            }
             const std::string plyHeader =
                 " 1.0\nelement vertex " + std::to_string(points) +
                 "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(triangles) +
@@ -297,12 +313,17 @@ TEST(MeshReader, AMeshFarFromItsOriginKeepsItsShape)
             EXPECT_EQ(report.degenerateDropped, 0u) << format << " " << offset;
             ASSERT_EQ(far.mesh.triangles.size(), triangles) << format << " " << offset;
             normalize(far);
+            ASSERT_EQ(far.mesh.positions.size(), points) << format << " " << offset;
             float worst = 0.0f;
-            for (std::size_t v = 0; v < far.mesh.positions.size(); ++v)
-                worst = std::max(worst, glm::length(far.mesh.positions[v] - unmoved.mesh.positions[v]));
+            for (std::size_t t = 0; t < triangles; ++t)
+                for (int k = 0; k < 3; ++k)
+                    worst = std::max(worst, glm::length(far.mesh.positions[far.mesh.triangles[t][k]] -
+                                                        unmoved.mesh.positions[unmoved.mesh.triangles[t][k]]));
             EXPECT_LT(worst, 1e-6f) << format << " " << offset;
-            const glm::dvec3 back = far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[0]));
-            EXPECT_NEAR(back.x, double(sphere.mesh.positions[0].x) + offset, 1e-5) << format << " " << offset;
+            const glm::dvec3 back =
+                far.normalization.meshFromNormalized(glm::dvec3(far.mesh.positions[far.mesh.triangles[0][0]]));
+            EXPECT_NEAR(back.x, double(sphere.mesh.positions[sphere.mesh.triangles[0][0]].x) + offset, 1e-5)
+                << format << " " << offset;
         }
 }
 

@@ -36,6 +36,9 @@ struct MeshLayout {
     /// The points as the file holds them, in double, where it holds more than single precision (OBJ,
     /// OFF and ASCII PLY text, binary PLY with double coordinates); else empty.
     std::vector<glm::dvec3> filePoints;
+    /// An ASCII STL's facet corners in double, three a facet (its mesh is built from them, since
+    /// OpenMesh would merge corners by their single-precision values); else empty.
+    std::vector<glm::dvec3> stlCorners;
 };
 
 /// Throws the one-line InputError "<path>: <problem>"; control bytes of @a problem (quoted from

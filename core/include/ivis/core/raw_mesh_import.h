@@ -13,8 +13,9 @@
 namespace ivis::core::detail {
 
 /// Checks the layout of the bytes @a data of @a path, then reads them with OpenMesh (one import
-/// at a time, its logging silenced). PLY vertex and face properties of numeric types become point
-/// and cell arrays; faces OpenMesh drops itself are counted in RawMesh::skippedFaces.
+/// at a time, its logging silenced), except an ASCII STL, whose mesh is built from the corners its
+/// check read in double. PLY vertex and face properties of numeric types become point and cell
+/// arrays; faces dropped for a repeated corner are counted in RawMesh::skippedFaces.
 RawMesh readOpenMeshFile(const std::string& path, MeshFormat format, std::string data);
 
 }  // namespace ivis::core::detail
