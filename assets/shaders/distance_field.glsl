@@ -26,18 +26,17 @@ uniform float uBoxHalf;         // 2.5: the volume's box
 
 // render::detail::blend: corners c[dx | dy << 1 | dz << 2] = (phi, exact gradient) of a cell of
 // size h at fractions t; the trilinear blend of the gradients, and of each corner's first-order
-// Taylor extrapolation of phi.
+// Taylor extrapolation of phi; the corners summed in pairs and the pairs in pairs, as on the CPU.
 vec4 blend(vec4 c[8], vec3 t, float h)
 {
     vec3 s = vec3(1.0) - t;
     float w[8] = float[8](s.x * s.y * s.z, t.x * s.y * s.z, s.x * t.y * s.z, t.x * t.y * s.z,
                           s.x * s.y * t.z, t.x * s.y * t.z, s.x * t.y * t.z, t.x * t.y * t.z);
-    vec4 sum = vec4(0.0);
-    float towardsCorner = 0.0;
-    for (int i = 0; i < 8; ++i) {
-        sum += w[i] * c[i];
-        towardsCorner += w[i] * dot(c[i].yzw, vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-    }
+    vec4 sum = ((w[0] * c[0] + w[1] * c[1]) + (w[2] * c[2] + w[3] * c[3])) +
+               ((w[4] * c[4] + w[5] * c[5]) + (w[6] * c[6] + w[7] * c[7]));
+    // sum of w_i g_i . d_i, d_i the corner's offset in the cell
+    float towardsCorner = ((w[1] * c[1].y + w[2] * c[2].z) + (w[3] * (c[3].y + c[3].z) + w[4] * c[4].w)) +
+                          ((w[5] * (c[5].y + c[5].w) + w[6] * (c[6].z + c[6].w)) + w[7] * ((c[7].y + c[7].z) + c[7].w));
     sum.x += h * (dot(sum.yzw, t) - towardsCorner);
     return sum;
 }

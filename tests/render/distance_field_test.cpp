@@ -223,11 +223,15 @@ TEST(DistanceField, BlendGivesTheBitsOfItsFormula)
         const float h = 0.01f * (1.0f + unit(random));
         float w[8];
         detail::trilinearWeights(t, w);
-        float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f}, towards = 0.0f;
-        for (int i = 0; i < 8; ++i) {
-            for (int k = 0; k < 4; ++k) sum[k] += w[i] * c[i][k];
-            towards += w[i] * ((i & 1 ? c[i].y : 0.0f) + (i & 2 ? c[i].z : 0.0f) + (i & 4 ? c[i].w : 0.0f));
-        }
+        // The corners summed in pairs, the pairs' sums in pairs (component by component), and each
+        // corner's g . d, d its offset in the cell, as detail::blendCorners writes them.
+        float sum[4];
+        for (int k = 0; k < 4; ++k)
+            sum[k] = ((w[0] * c[0][k] + w[1] * c[1][k]) + (w[2] * c[2][k] + w[3] * c[3][k])) +
+                     ((w[4] * c[4][k] + w[5] * c[5][k]) + (w[6] * c[6][k] + w[7] * c[7][k]));
+        const float towards =
+            ((w[1] * c[1].y + w[2] * c[2].z) + (w[3] * (c[3].y + c[3].z) + w[4] * c[4].w)) +
+            ((w[5] * (c[5].y + c[5].w) + w[6] * (c[6].z + c[6].w)) + w[7] * ((c[7].y + c[7].z) + c[7].w));
         sum[0] += h * (sum[1] * t.x + sum[2] * t.y + sum[3] * t.z - towards);
         const glm::vec4 blended = detail::blend(c, t, h);
         if (std::isnan(sum[0])) {

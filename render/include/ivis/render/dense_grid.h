@@ -70,35 +70,33 @@ inline void trilinearWeights(const glm::vec3& t, float w[8])
 ///        gradient), of a cell of size @a voxelSize at fractions @a t: the gradient is the trilinear
 ///        blend of the corners' gradients, phi the trilinear blend of each corner's first-order
 ///        Taylor extrapolation phi_i + g_i . (p - x_i) (exact for a plane, and its derivative is the
-///        blended gradient up to O(h^2), so that phi and the force the rays feel agree). With SSE2
-///        the four components are summed in one register, each by the same operations in the same
-///        order as without it, so that both give the same bits.
+///        blended gradient up to O(h^2), so that phi and the force the rays feel agree). The corners
+///        are summed in pairs and the pairs in pairs, a chain of three additions instead of eight
+///        (docs/decisions/simd-blend.md). With SSE2 the four components are summed in one register,
+///        each by the same operations in the same order as without it, so that both give the same bits.
 template <typename Corner>
 [[gnu::always_inline]] inline glm::vec4 blendCorners(Corner corner, const glm::vec3& t, float voxelSize)
 {
     float w[8];
     trilinearWeights(t, w);
-    float towardsCorner = 0.0f;  // sum of w_i g_i . d_i, d_i the corner's offset in the cell
 #if defined(__SSE2__)
-    __m128 total = _mm_setzero_ps();
-#else
-    glm::vec4 total(0.0f);
-#endif
-    for (int i = 0; i < 8; ++i) {
-        const glm::vec4& c = corner(i);
-#if defined(__SSE2__)
-        total = _mm_add_ps(total, _mm_mul_ps(_mm_set1_ps(w[i]), _mm_loadu_ps(&c.x)));
-#else
-        total += w[i] * c;
-#endif
-        towardsCorner += w[i] * ((i & 1 ? c.y : 0.0f) + (i & 2 ? c.z : 0.0f) + (i & 4 ? c.w : 0.0f));
-    }
-#if defined(__SSE2__)
+    __m128 part[4];
+    for (int k = 0; k < 4; ++k)
+        part[k] = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(w[2 * k]), _mm_loadu_ps(&corner(2 * k).x)),
+                             _mm_mul_ps(_mm_set1_ps(w[2 * k + 1]), _mm_loadu_ps(&corner(2 * k + 1).x)));
+    const __m128 total = _mm_add_ps(_mm_add_ps(part[0], part[1]), _mm_add_ps(part[2], part[3]));
     glm::vec4 sum;
     _mm_storeu_ps(&sum.x, total);
 #else
-    glm::vec4 sum = total;
+    glm::vec4 part[4];
+    for (int k = 0; k < 4; ++k) part[k] = w[2 * k] * corner(2 * k) + w[2 * k + 1] * corner(2 * k + 1);
+    glm::vec4 sum = (part[0] + part[1]) + (part[2] + part[3]);
 #endif
+    // sum of w_i g_i . d_i, d_i the corner's offset in the cell
+    const glm::vec4 &c1 = corner(1), &c2 = corner(2), &c3 = corner(3), &c4 = corner(4), &c5 = corner(5),
+                    &c6 = corner(6), &c7 = corner(7);
+    const float towardsCorner = ((w[1] * c1.y + w[2] * c2.z) + (w[3] * (c3.y + c3.z) + w[4] * c4.w)) +
+                                ((w[5] * (c5.y + c5.w) + w[6] * (c6.z + c6.w)) + w[7] * ((c7.y + c7.z) + c7.w));
     sum.x += voxelSize * (sum.y * t.x + sum.z * t.y + sum.w * t.z - towardsCorner);
     return sum;
 }
