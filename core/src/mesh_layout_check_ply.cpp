@@ -325,7 +325,7 @@ void checkPlyBody(const std::string& path, const std::string& data, const PlyLay
                 if (!p.countType) {
                     const std::size_t at = offset;
                     const std::string_view token = value(p.type);
-                    if (p.role == PlyRole::Position) {
+                    if (p.role == PlyRole::Position && (layout.ascii || collect)) {
                         const double coordinate = layout.ascii ? checkCoordinate(path, token, where)
                                                                : binaryCoordinate(data, at, p.type, layout.bigEndian);
                         if (collect) points.back()[p.name[0] - 'x'] = coordinate;
