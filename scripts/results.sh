@@ -111,7 +111,7 @@ Every method at its own optimum (the best view and parameters its visibility ene
 [measures.md](measures.md) says: surface visibility by area, by voxel count and read literally,
 mapping coherence, hot-spot reveal and how each hot spot reads in the picture; Table 2 the
 optimisation's seconds. Generated on $(date -u +%Y-%m-%d) on a machine with $(nproc) cores (this
-run: ${minutes} minutes; from nothing the whole takes 30-45 minutes on 2 cores, and a run
+run: ${minutes} minutes; from nothing the whole takes 20-45 minutes on 2 cores, and a run
 interrupted goes on where it stopped; the seconds are that machine's, whose speed varies by up to
 a factor of two between the project's machines and days) by
 

@@ -1,16 +1,19 @@
 // The hot-spot rule's test of one view (docs/optimisation.md, "The hot-spot rule"): every hot spot
 // at least 90% seen, at least 0.9 of it in one region and that region's outline at most 1.6 times
 // its hull's; a view failing any one of them, or showing no hot spot, fails. Which way each hot
-// spot faces, and the views that put one in the middle of the far side, which the rule skips.
+// spot faces, the views that put one in the middle of the far side, which the rule skips, and the
+// views that show every hot spot side-on, which it tries where none of the search's views reads.
 #include <ivis/optimize/hot_spot_rule.h>
 
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/procedural_scenes.h>
+#include <ivis/optimize/viewpoint_annealing.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ivis::optimize {
@@ -92,6 +95,69 @@ TEST(HotSpotRule, AHotSpotRoundThePartFacesNoOneWay)
     EXPECT_EQ(facings[0].normal, glm::dvec3(0.0));
     EXPECT_NEAR(glm::length(facings[0].centroid), 0.0, 0.05) << "its centre inside the part";
     EXPECT_FALSE(someHotSpotFacesAway(facings, cameraFrom({0.0, 0.0, 1.0})));
+}
+
+/// The largest angle off square (degrees) over the hot spots of @a facings that face one way, seen
+/// from the eye at core::kCameraDistance in the view (@a theta, @a phi).
+double degreesOffSquare(const std::vector<HotSpotFacing>& facings, double theta, double phi)
+{
+    const glm::dvec3 eye = core::Camera::fromAngles(theta, phi).eye;
+    double worst = 0.0;
+    for (const HotSpotFacing& f : facings) {
+        if (f.normal == glm::dvec3(0.0)) continue;
+        const double sine = std::abs(glm::dot(f.normal, glm::normalize(f.centroid - eye)));
+        worst = std::max(worst, glm::degrees(std::asin(sine)));
+    }
+    return worst;
+}
+
+// The sphere's two opposite hot spots are side-on from a band round their axis: every view offered
+// lies in it, 20 degrees or more from the others, and (counted against a fine scan of the sphere of
+// views) every direction of the band lies within reach of an offered view; the most side-on come
+// first, and at most the number asked for.
+TEST(HotSpotRule, SideOnViewsShowEveryHotSpotFromItsSide)
+{
+    core::SurfaceField sphere = core::makeSphere(4);
+    sphere.values = core::hotSpotValues(sphere.mesh, core::placeHotSpots(sphere.mesh, 2));
+    const RevealMeasure reveal(sphere, {0.0f, 1.0f});
+    const std::vector<HotSpotFacing> facings = hotSpotFacings(sphere.mesh, reveal);
+    ASSERT_EQ(facings.size(), 2u);
+    const std::vector<std::array<double, 2>> views = sideOnViews(facings, 1000);
+    ASSERT_GE(views.size(), 10u) << "a band round the sphere";
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        EXPECT_LE(degreesOffSquare(facings, views[i][0], views[i][1]), kSideOnDeg) << i;
+        if (i > 0) {
+            EXPECT_GE(degreesOffSquare(facings, views[i][0], views[i][1]),
+                      degreesOffSquare(facings, views[i - 1][0], views[i - 1][1]) - 1e-9)
+                << "the most side-on first";
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            const double apart = degreesBetweenViews(views[i][0], views[i][1], views[j][0], views[j][1]);
+            EXPECT_GE(apart, kHotSpotViewSeparationDeg) << i << " " << j;
+        }
+    }
+    // Every side-on direction of a finer scan lies within the separation (plus the lattice's spacing)
+    // of an offered view.
+    for (double theta = 0.5; theta < 180.0; theta += 2.0)
+        for (double phi = 0.0; phi < 360.0; phi += 2.0) {
+            if (degreesOffSquare(facings, theta, phi) > kSideOnDeg - 5.0) continue;
+            double nearest = 180.0;
+            for (const auto& v : views) nearest = std::min(nearest, degreesBetweenViews(theta, phi, v[0], v[1]));
+            EXPECT_LT(nearest, kHotSpotViewSeparationDeg + 10.0) << theta << " " << phi;
+        }
+    EXPECT_EQ(sideOnViews(facings, 3).size(), 3u);
+    const std::vector<std::array<double, 2>> firstThree(views.begin(), views.begin() + 3);
+    EXPECT_EQ(sideOnViews(facings, 3), firstThree);
+    EXPECT_TRUE(sideOnViews(facings, 0).empty());
+}
+
+// Hot spots that face no one way are side-on from nowhere in particular: no view is offered.
+TEST(HotSpotRule, NoSideOnViewsWhereNoHotSpotFacesOneWay)
+{
+    HotSpotFacing round;
+    round.centroid = glm::dvec3(0.1, 0.2, 0.3);
+    EXPECT_TRUE(sideOnViews({round, round}, 8).empty());
+    EXPECT_TRUE(sideOnViews({}, 8).empty());
 }
 
 }  // namespace

@@ -61,14 +61,49 @@ bool someHotSpotFacesAway(const std::vector<HotSpotFacing>& facings, const core:
     });
 }
 
+std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>& facings, int count)
+{
+    const auto facesOneWay = [](const HotSpotFacing& f) { return f.normal != glm::dvec3(0.0); };
+    if (std::none_of(facings.begin(), facings.end(), facesOneWay)) return {};
+    // Each lattice direction's largest angle off square over the hot spots that face one way.
+    std::vector<std::pair<double, std::array<double, 2>>> candidates;
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < kSideOnLatticeViews; ++i) {
+        const double y = 1.0 - (2.0 * i + 1.0) / kSideOnLatticeViews;
+        const double ring = std::sqrt(std::max(0.0, 1.0 - y * y));
+        core::Camera camera;
+        camera.eye = core::kCameraDistance * glm::dvec3(ring * std::sin(golden * i), y, ring * std::cos(golden * i));
+        double offSquare = 0.0;
+        for (const HotSpotFacing& f : facings) {
+            if (!facesOneWay(f)) continue;
+            const double sine = std::abs(glm::dot(f.normal, glm::normalize(f.centroid - camera.eye)));
+            offSquare = std::max(offSquare, glm::degrees(std::asin(std::min(1.0, sine))));
+        }
+        if (offSquare > kSideOnDeg) continue;
+        const glm::dvec2 angles = camera.angles();
+        candidates.push_back({offSquare, {angles.x, angles.y}});
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::array<double, 2>> views;
+    for (const auto& [offSquare, view] : candidates) {
+        if (int(views.size()) >= count) break;
+        if (std::none_of(views.begin(), views.end(), [&](const std::array<double, 2>& v) {
+                return degreesBetweenViews(view[0], view[1], v[0], v[1]) < kHotSpotViewSeparationDeg;
+            }))
+            views.push_back(view);
+    }
+    return views;
+}
+
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
-                                int views, core::Interrupter* interrupter)
+                                int views, core::Interrupter* interrupter, std::size_t from)
 {
     if (!measure.revealMeasure())
         throw ValueError("the hot-spot rule needs a measure of the hot-spot reveal (a scalar with important regions)");
-    IVIS_CHECK(best < visited.size());
-    std::vector<std::size_t> order(visited.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
+    IVIS_CHECK(best < visited.size() && from <= visited.size());
+    std::vector<std::size_t> order(visited.size() - from);
+    std::iota(order.begin(), order.end(), from);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return (a == best) != (b == best) ? a == best : visited[a].value.energy > visited[b].value.energy;
     });

@@ -181,6 +181,19 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         const EnergyEvaluator measure(evaluator.scene(), judged);
         if (measure.revealMeasure() && measure.revealMeasure()->regionCount() > 0) {
             result.hotSpots = chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter);
+            if (!result.hotSpots->chosen) {
+                // None of the search's views reads: views that show every hot spot side-on, visited
+                // now (they become the best view only where one reads).
+                const std::size_t from = result.visited.size();
+                const std::vector<HotSpotFacing> facings =
+                    hotSpotFacings(evaluator.scene().mesh(), *measure.revealMeasure());
+                for (const auto& [theta, phi] : sideOnViews(facings, 2 * options.hotSpotViews))
+                    result.visited.push_back(visit(theta, phi, result.bestView().method));
+                const int judgedBefore = result.hotSpots->judged;
+                result.hotSpots =
+                    chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter, from);
+                result.hotSpots->judged += judgedBefore;
+            }
             if (result.hotSpots->chosen) result.best = *result.hotSpots->chosen;
         }
     }

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -57,6 +58,20 @@ std::vector<HotSpotFacing> hotSpotFacings(const core::TriangleMesh& mesh, const 
 ///        kHotSpotFacingAwayDeg of straight away (seen from the eye towards its centroid).
 bool someHotSpotFacesAway(const std::vector<HotSpotFacing>& facings, const core::Camera& camera);
 
+/// @brief A hot spot is seen side-on when its mean normal lies within this angle of square to the
+///        line from the eye to its centre: half of it seen directly, half in the ring beside it.
+inline constexpr double kSideOnDeg = 25.0;
+/// @brief Directions tried for side-on views (a Fibonacci lattice on the sphere of views).
+inline constexpr int kSideOnLatticeViews = 400;
+
+/// @brief The views (theta, phi in degrees, as core::Camera::fromAngles takes them) from which every
+///        hot spot of @a facings that faces one way is seen side-on (kSideOnDeg), from the eye at
+///        core::kCameraDistance: kSideOnLatticeViews directions, the most side-on first (the
+///        largest of the hot spots' angles off square the smallest), each at least
+///        kHotSpotViewSeparationDeg from those before it, at most @a count. None when no hot spot
+///        faces one way.
+std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>& facings, int count);
+
 /// @brief What the hot-spot rule chose.
 struct HotSpotChoice {
     int judged = 0;                     ///< views whose pictures were judged
@@ -70,16 +85,16 @@ struct HotSpotChoice {
 ///        ratio of at most kMaxHotSpotOutline (false without any region).
 bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes);
 
-/// @brief The hot-spot rule over @a visited: the search's best view (@a best) first, then the others
-///        by energy, at most @a views views, each at least kHotSpotViewSeparationDeg from those
-///        judged before it and none with a hot spot facing away (someHotSpotFacesAway), judged on a
-///        kHotSpotPictureSize picture from its camera with its method
-///        (its hot spots counted as @a measure, an evaluator with the reveal, counts them), up to
-///        the first whose hot spots read.
+/// @brief The hot-spot rule over @a visited from index @a from on: the search's best view (@a best)
+///        first where it is among them, then the others by energy, at most @a views views, each at
+///        least kHotSpotViewSeparationDeg from those judged before it and none with a hot spot facing
+///        away (someHotSpotFacesAway), judged on a kHotSpotPictureSize picture from its camera with
+///        its method (its hot spots counted as @a measure, an evaluator with the reveal, counts
+///        them), up to the first whose hot spots read.
 /// @param interrupter optional cancel, asked before each picture
 /// @throw ValueError when @a measure does not measure the reveal; Cancelled when interrupted
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
-                                int views, core::Interrupter* interrupter = nullptr);
+                                int views, core::Interrupter* interrupter = nullptr, std::size_t from = 0);
 
 /// @brief What the rule chose, as optimize --json reports it: {"judged", "chosen_view" (the index in
 ///        "visited", null for none), "energy_ratio", "shapes"}.
