@@ -151,12 +151,22 @@ TEST(HotSpotRule, SideOnViewsShowEveryHotSpotFromItsSide)
     EXPECT_TRUE(sideOnViews(facings, 0).empty());
 }
 
-// Hot spots that face no one way are side-on from nowhere in particular: no view is offered.
-TEST(HotSpotRule, NoSideOnViewsWhereNoHotSpotFacesOneWay)
+// Two hot spots that face no one way (round thin parts at either end of the x axis) are side-on
+// where they lie at the silhouette: seen across the x axis. One alone, or two at one place, have
+// no such direction: no view is offered.
+TEST(HotSpotRule, HotSpotsFacingNoOneWayAreSideOnAtTheSilhouette)
 {
-    HotSpotFacing round;
-    round.centroid = glm::dvec3(0.1, 0.2, 0.3);
-    EXPECT_TRUE(sideOnViews({round, round}, 8).empty());
+    HotSpotFacing left, right;
+    left.centroid = glm::dvec3(-0.5, 0.0, 0.0);
+    right.centroid = glm::dvec3(0.5, 0.0, 0.0);
+    const std::vector<std::array<double, 2>> views = sideOnViews({left, right}, 1000);
+    ASSERT_GE(views.size(), 10u) << "a band round the x axis";
+    HotSpotFacing leftFacing = left, rightFacing = right;
+    leftFacing.normal = glm::dvec3(-1.0, 0.0, 0.0);
+    rightFacing.normal = glm::dvec3(1.0, 0.0, 0.0);
+    for (const auto& view : views) EXPECT_LE(degreesOffSquare({leftFacing, rightFacing}, view[0], view[1]), kSideOnDeg);
+    EXPECT_TRUE(sideOnViews({left}, 8).empty());
+    EXPECT_TRUE(sideOnViews({left, left}, 8).empty());
     EXPECT_TRUE(sideOnViews({}, 8).empty());
 }
 

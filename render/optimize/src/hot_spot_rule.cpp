@@ -63,9 +63,20 @@ bool someHotSpotFacesAway(const std::vector<HotSpotFacing>& facings, const core:
 
 std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>& facings, int count)
 {
-    const auto facesOneWay = [](const HotSpotFacing& f) { return f.normal != glm::dvec3(0.0); };
-    if (std::none_of(facings.begin(), facings.end(), facesOneWay)) return {};
-    // Each lattice direction's largest angle off square over the hot spots that face one way.
+    // The direction each hot spot should lie square to: its mean normal; for one that faces no one
+    // way, its direction from the hot spots' common centre (where it lies at the silhouette).
+    glm::dvec3 centre(0.0);
+    for (const HotSpotFacing& f : facings) centre += f.centroid / double(facings.size());
+    std::vector<glm::dvec3> squareTo;
+    for (const HotSpotFacing& f : facings) {
+        const double fromCentre = glm::length(f.centroid - centre);
+        if (f.normal != glm::dvec3(0.0)) squareTo.push_back(f.normal);
+        else if (fromCentre > 0.0) squareTo.push_back((f.centroid - centre) / fromCentre);
+        else squareTo.push_back(glm::dvec3(0.0));
+    }
+    const auto hasDirection = [](const glm::dvec3& d) { return d != glm::dvec3(0.0); };
+    if (std::none_of(squareTo.begin(), squareTo.end(), hasDirection)) return {};
+    // Each lattice direction's largest angle off square over the hot spots with a direction.
     std::vector<std::pair<double, std::array<double, 2>>> candidates;
     const double golden = M_PI * (3.0 - std::sqrt(5.0));
     for (int i = 0; i < kSideOnLatticeViews; ++i) {
@@ -74,9 +85,9 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
         core::Camera camera;
         camera.eye = core::kCameraDistance * glm::dvec3(ring * std::sin(golden * i), y, ring * std::cos(golden * i));
         double offSquare = 0.0;
-        for (const HotSpotFacing& f : facings) {
-            if (!facesOneWay(f)) continue;
-            const double sine = std::abs(glm::dot(f.normal, glm::normalize(f.centroid - camera.eye)));
+        for (std::size_t h = 0; h < facings.size(); ++h) {
+            if (!hasDirection(squareTo[h])) continue;
+            const double sine = std::abs(glm::dot(squareTo[h], glm::normalize(facings[h].centroid - camera.eye)));
             offSquare = std::max(offSquare, glm::degrees(std::asin(std::min(1.0, sine))));
         }
         if (offSquare > kSideOnDeg) continue;

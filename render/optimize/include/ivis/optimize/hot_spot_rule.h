@@ -65,11 +65,12 @@ inline constexpr double kSideOnDeg = 25.0;
 inline constexpr int kSideOnLatticeViews = 400;
 
 /// @brief The views (theta, phi in degrees, as core::Camera::fromAngles takes them) from which every
-///        hot spot of @a facings that faces one way is seen side-on (kSideOnDeg), from the eye at
-///        core::kCameraDistance: kSideOnLatticeViews directions, the most side-on first (the
-///        largest of the hot spots' angles off square the smallest), each at least
-///        kHotSpotViewSeparationDeg from those before it, at most @a count. None when no hot spot
-///        faces one way.
+///        hot spot of @a facings is seen side-on (kSideOnDeg), from the eye at core::kCameraDistance:
+///        its mean normal, or for one that faces no one way its direction from the hot spots' mean
+///        centre (it then lies at the silhouette), square to the line from the eye to its centre.
+///        kSideOnLatticeViews directions, the most side-on first (the largest of the hot spots'
+///        angles off square the smallest), each at least kHotSpotViewSeparationDeg from those before
+///        it, at most @a count; none where no hot spot has a direction.
 std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>& facings, int count);
 
 /// @brief What the hot-spot rule chose.
