@@ -1,5 +1,6 @@
 #include <ivis/render/pixel_probe.h>
 
+#include <ivis/core/sphere_lattice.h>
 #include <ivis/render/curved_ray_method.h>
 #include <ivis/render/screen_map.h>
 #include <ivis/render/surface_point.h>
@@ -73,22 +74,18 @@ bool seenDirectly(const core::TriangleBvh& bvh, const glm::dvec3& eye, const glm
 std::optional<glm::dvec2> facingView(const core::TriangleBvh& bvh, const glm::vec3& point, int triangle,
                                      const glm::vec3& facing, double radius)
 {
-    const double golden = M_PI * (3.0 - std::sqrt(5.0));
     std::optional<glm::dvec2> best;
     double bestCos = 0.0;  // only eyes that the side faces
     for (int i = 0; i < kEyeCount; ++i) {
         // A Fibonacci sphere, even in area; its eyes nearest the poles lie 1.3 degrees off the up
         // axis, to which the camera's up vector would be parallel.
-        const double cosTheta = 1.0 - 2.0 * (i + 0.5) / kEyeCount;
-        const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
-        const double azimuth = golden * i;
-        const glm::dvec3 direction(sinTheta * std::sin(azimuth), cosTheta, sinTheta * std::cos(azimuth));
+        const glm::dvec3 direction = core::fibonacciDirection(i, kEyeCount);
         const glm::dvec3 eye = radius * direction;
         const glm::dvec3 toEye = eye - glm::dvec3(point);
         const double cosine = glm::dot(glm::normalize(toEye), glm::dvec3(facing));
         if (cosine <= bestCos || !seenDirectly(bvh, eye, point, triangle)) continue;
         bestCos = cosine;
-        best = glm::dvec2(glm::degrees(std::acos(cosTheta)),
+        best = glm::dvec2(glm::degrees(std::acos(direction.y)),
                           glm::degrees(std::atan2(direction.x, direction.z)));
     }
     return best;

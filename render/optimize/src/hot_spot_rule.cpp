@@ -1,6 +1,7 @@
 #include <ivis/optimize/hot_spot_rule.h>
 
 #include <ivis/core/errors.h>
+#include <ivis/core/sphere_lattice.h>
 #include <ivis/optimize/picture_measure.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/renderer.h>
@@ -78,12 +79,9 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
     if (std::none_of(squareTo.begin(), squareTo.end(), hasDirection)) return {};
     // Each lattice direction's largest angle off square over the hot spots with a direction.
     std::vector<std::pair<double, std::array<double, 2>>> candidates;
-    const double golden = M_PI * (3.0 - std::sqrt(5.0));
     for (int i = 0; i < kSideOnLatticeViews; ++i) {
-        const double y = 1.0 - (2.0 * i + 1.0) / kSideOnLatticeViews;
-        const double ring = std::sqrt(std::max(0.0, 1.0 - y * y));
         core::Camera camera;
-        camera.eye = core::kCameraDistance * glm::dvec3(ring * std::sin(golden * i), y, ring * std::cos(golden * i));
+        camera.eye = core::kCameraDistance * core::fibonacciDirection(i, kSideOnLatticeViews);
         double offSquare = 0.0;
         for (std::size_t h = 0; h < facings.size(); ++h) {
             if (!hasDirection(squareTo[h])) continue;
