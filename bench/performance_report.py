@@ -132,9 +132,10 @@ interpolated between neighbours misses the landings' sub-voxel detail:
 [decisions/interpolated-landings.md](decisions/interpolated-landings.md)), seeks its own seed (the
 centre of its view ray's valley, sought near the bottom interpolated from the lattice), and where
 its neighbours do not show it stable, the stability rule traces two probes: in the frame above
-(counted with `--fov 75 --stable-shift 0.1`) 309,000 pixels' own rays took 29.5 M steps and
-175,000 probes of 87,000 pixels 24.5 M, 45% of the steps. A fifth of the steps creep through the
-last half voxel to the landing. What makes the frames as fast as they are:
+(counted with `--fov 75 --stable-shift 0.1` on 2026-11-29) 309,000 pixels' own rays took 29.5 M
+steps and 175,000 probes of 87,000 pixels 24.5 M, 45% of the steps (which pixels are probed since:
+[decisions/stability-probes-cost.md](decisions/stability-probes-cost.md)). A fifth of the steps
+creep through the last half voxel to the landing. What makes the frames as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
   lattice's valley bottoms, the lattice's own searches started from their blocks' corners' bottoms
   (volumes above 200), background blocks skipped, the stability rule's probes only where needed.

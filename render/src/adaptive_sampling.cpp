@@ -337,12 +337,12 @@ private:
     }
 
     /// |P(x+1, y+1) - P(x+1, y-1) - P(x-1, y+1) + P(x-1, y-1)| / 4 of landed neighbours (one-sided
-    /// at the tile's first row or column); infinite where one does not land.
+    /// at the tile's first and last rows and columns: the far edge beyond them holds only lattice
+    /// points); infinite where one does not land.
     float mixedBend(int x, int y)
     {
-        const int x0 = x > 0 ? x - 1 : x, y0 = y > 0 ? y - 1 : y;
+        const int x0 = std::clamp(x - 1, 0, kAdaptiveTileSize - 3), y0 = std::clamp(y - 1, 0, kAdaptiveTileSize - 3);
         const int x1 = x0 + 2, y1 = y0 + 2;
-        if (x1 >= kSide || y1 >= kSide) return std::numeric_limits<float>::infinity();
         const PixelRay *a = &ray(x0, y0), *b = &ray(x1, y0), *c = &ray(x0, y1), *d = &ray(x1, y1);
         for (const PixelRay* r : {a, b, c, d})
             if (r->state != PointState::Landed) return std::numeric_limits<float>::infinity();
