@@ -6,7 +6,6 @@
 #include <ivis/render/surface_point.h>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -79,14 +78,13 @@ std::optional<glm::dvec2> facingView(const core::TriangleBvh& bvh, const glm::ve
     for (int i = 0; i < kEyeCount; ++i) {
         // A Fibonacci sphere, even in area; its eyes nearest the poles lie 1.3 degrees off the up
         // axis, to which the camera's up vector would be parallel.
-        const glm::dvec3 direction = core::fibonacciDirection(i, kEyeCount);
-        const glm::dvec3 eye = radius * direction;
-        const glm::dvec3 toEye = eye - glm::dvec3(point);
+        core::Camera view;
+        view.eye = radius * core::fibonacciDirection(i, kEyeCount);
+        const glm::dvec3 toEye = view.eye - glm::dvec3(point);
         const double cosine = glm::dot(glm::normalize(toEye), glm::dvec3(facing));
-        if (cosine <= bestCos || !seenDirectly(bvh, eye, point, triangle)) continue;
+        if (cosine <= bestCos || !seenDirectly(bvh, view.eye, point, triangle)) continue;
         bestCos = cosine;
-        best = glm::dvec2(glm::degrees(std::acos(direction.y)),
-                          glm::degrees(std::atan2(direction.x, direction.z)));
+        best = view.angles();
     }
     return best;
 }
