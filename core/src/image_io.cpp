@@ -64,7 +64,7 @@ std::vector<std::uint8_t> pngBytes(const Image& image, bool withAlpha)
                 const glm::vec3 rgb = !withAlpha       ? glm::vec3(*pixel)
                                       : alpha > 0.0f ? glm::vec3(*pixel) / alpha
                                                      : glm::vec3(0.0f);
-                for (int c = 0; c < 3; ++c) *out++ = byteFromUnit(srgbFromLinear(rgb[c]));
+                for (int c = 0; c < 3; ++c) *out++ = srgbByteFromLinear(rgb[c]);
                 if (withAlpha) *out++ = byteFromUnit(alpha);
             }
         }
@@ -72,28 +72,88 @@ std::vector<std::uint8_t> pngBytes(const Image& image, bool withAlpha)
     return bytes;
 }
 
-/// The png_image header of an 8-bit picture of @a image's size.
-png_image pngHeader(const Image& image, bool withAlpha)
+/// zlib's level for the PNGs, 4 of 9, each row filtered by the better of the difference from the row
+/// above and from its left neighbour: the print's 4000 x 3000 picture (`render scene:vessel-tree
+/// --volume-res 2000 --res 4000x3000`) encoded in about 0.6 s instead of 1.2 s at libpng's defaults
+/// (level 6, all five filters tried per row), its file 5% larger (2.96 against 2.81 MB).
+constexpr int kPngCompressionLevel = 4;
+/// See kPngCompressionLevel.
+constexpr int kPngFilter = PNG_FILTER_UP | PNG_FILTER_SUB;
+
+/// libpng's error handler: keeps the message and returns to encodePngRows.
+[[noreturn]] void pngError(png_structp png, png_const_charp message)
 {
-    png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    png.width = static_cast<png_uint_32>(image.width());
-    png.height = static_cast<png_uint_32>(image.height());
-    png.format = withAlpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
-    return png;
+    *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+    png_longjmp(png, 1);
+}
+
+/// libpng's warnings: none concerns a picture written from our own bytes.
+void pngWarning(png_structp, png_const_charp) {}
+
+/// Encodes @a bytes (8-bit RGB or RGBA rows of @a width x @a height) as a PNG handed to @a write
+/// with @a target as its io pointer; throws runtime_error with libpng's message when it fails.
+void encodePngRows(const std::uint8_t* bytes, int width, int height, bool withAlpha, png_rw_ptr write, void* target)
+{
+    const std::size_t rowBytes = std::size_t(width) * (withAlpha ? 4 : 3);
+    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = const_cast<png_bytep>(bytes + y * rowBytes);
+    std::string message;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, pngError, pngWarning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        throw std::runtime_error("out of memory for the PNG encoder");
+    }
+    // No C++ object is made between here and the end of the encoding: libpng's errors longjmp here.
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        throw std::runtime_error(message);
+    }
+    png_set_write_fn(png, target, write, nullptr);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8,
+                 withAlpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_set_compression_level(png, kPngCompressionLevel);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, kPngFilter);
+    png_write_info(png, info);
+    png_write_image(png, rows.data());
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+}
+
+/// encodePngRows's sink into a std::FILE.
+void writeToFile(png_structp png, png_bytep data, png_size_t length)
+{
+    if (std::fwrite(data, 1, length, static_cast<std::FILE*>(png_get_io_ptr(png))) != length)
+        png_error(png, std::strerror(errno));
+}
+
+/// encodePngRows's sink into a std::vector<std::uint8_t>.
+void writeToBytes(png_structp png, png_bytep data, png_size_t length)
+{
+    auto* bytes = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
+    bool outOfMemory = false;
+    try {
+        bytes->insert(bytes->end(), data, data + length);
+    } catch (const std::bad_alloc&) {
+        outOfMemory = true;
+    }
+    if (outOfMemory) png_error(png, "out of memory for the PNG");
 }
 
 void writePngFile(const Image& image, const std::string& file, bool withAlpha)
 {
     const std::vector<std::uint8_t> bytes = pngBytes(image, withAlpha);
-    png_image png = pngHeader(image, withAlpha);
     std::FILE* stream = std::fopen(file.c_str(), "wb");
     if (!stream) throw errnoFailure();
-    const bool written = png_image_write_to_stdio(&png, stream, 0, bytes.data(), 0, nullptr) != 0;
-    const std::string message = png.message;
-    png_image_free(&png);
-    if (std::fclose(stream) != 0 && written) throw errnoFailure();
-    if (!written) throw std::runtime_error(message);
+    try {
+        encodePngRows(bytes.data(), image.width(), image.height(), withAlpha, writeToFile, stream);
+    } catch (...) {
+        std::fclose(stream);
+        throw;
+    }
+    if (std::fclose(stream) != 0) throw errnoFailure();
 }
 
 constexpr const char* kMeshCenterAttribute = "ivis:meshCenter";
@@ -152,19 +212,12 @@ std::vector<std::uint8_t> encodePng(const Image& image, bool transparentBackgrou
 {
     if (image.width() == 0 || image.height() == 0) throw ValueError("cannot encode an empty image as PNG");
     const std::vector<std::uint8_t> bytes = pngBytes(image, transparentBackground);
-    png_image png = pngHeader(image, transparentBackground);
-    png_alloc_size_t size = 0;  // first the size, then the bytes (libpng's simplified API)
-    if (!png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr)) {
-        const std::string message = png.message;
-        png_image_free(&png);
-        throw std::runtime_error("cannot encode a PNG: " + message);
+    std::vector<std::uint8_t> encoded;
+    try {
+        encodePngRows(bytes.data(), image.width(), image.height(), transparentBackground, writeToBytes, &encoded);
+    } catch (const std::runtime_error& error) {
+        throw std::runtime_error(std::string("cannot encode a PNG: ") + error.what());
     }
-    std::vector<std::uint8_t> encoded(size);
-    const bool written = png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), 0, nullptr) != 0;
-    const std::string message = png.message;
-    png_image_free(&png);
-    if (!written) throw std::runtime_error("cannot encode a PNG: " + message);
-    encoded.resize(size);
     return encoded;
 }
 

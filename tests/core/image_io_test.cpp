@@ -8,7 +8,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
 #include <limits>
 #include <string>
 #include <vector>
@@ -48,6 +52,54 @@ TEST(ImageIo, PngEncodesHalfLinearAsSrgb188)
     const Image read = readPng(dir.file("half.png"));
     ASSERT_EQ(read.width(), 1);
     EXPECT_EQ(read.at(0, 0), glm::vec4(glm::vec3(linearFromByte(188)), 1.0f));
+}
+
+/// The 8-bit sRGB level by its formula, clamped, NaN at 0.
+int levelByFormula(float linear)
+{
+    const float encoded = srgbFromLinear(linear);
+    return static_cast<int>(std::lround((encoded > 0.0f ? std::min(encoded, 1.0f) : 0.0f) * 255.0f));
+}
+
+TEST(SrgbByte, IsTheFormulasLevelOnBothSidesOfEveryStepAndAtRandomValues)
+{
+    for (int level = 1; level < 256; ++level) {  // the step's least float, by bisection on the formula
+        float below = 0.0f, at = 1.0f;
+        while (std::nextafter(below, 1.0f) < at) {
+            const float middle = below + (at - below) / 2.0f;
+            if (middle == below || middle == at) break;
+            (levelByFormula(middle) >= level ? at : below) = middle;
+        }
+        while (levelByFormula(std::nextafter(at, 0.0f)) >= level) at = std::nextafter(at, 0.0f);
+        ASSERT_EQ(srgbByteFromLinear(at), levelByFormula(at)) << level;
+        ASSERT_EQ(srgbByteFromLinear(std::nextafter(at, 0.0f)), levelByFormula(std::nextafter(at, 0.0f))) << level;
+    }
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> value(-0.1f, 1.1f);
+    for (int i = 0; i < 1000000; ++i) {
+        const float v = value(random);
+        ASSERT_EQ(srgbByteFromLinear(v), levelByFormula(v)) << v;
+    }
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const float v : {0.0f, -0.0f, 1e-40f, 1.0f, std::nextafter(1.0f, 0.0f), 2.0f, inf, -inf})
+        EXPECT_EQ(srgbByteFromLinear(v), levelByFormula(v)) << v;
+    EXPECT_EQ(srgbByteFromLinear(std::numeric_limits<float>::quiet_NaN()), 0);
+}
+
+TEST(ImageIo, EncodedPngIsTheWrittenFile)
+{
+    test::TempDir dir;
+    Image image(300, 200);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) image.at(x, y) = glm::vec4(x / 300.0f, y / 200.0f, 0.5f, 1.0f);
+    writePng(image, dir.file("picture.png"), false);
+    std::ifstream file(dir.file("picture.png"), std::ios::binary);
+    const std::vector<std::uint8_t> written((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(encodePng(image, false), written);
+    const Image read = readPng(dir.file("picture.png"));
+    for (std::size_t i = 0; i < image.pixels().size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(levelByFormula(read.pixels()[i][c]), levelByFormula(image.pixels()[i][c])) << i;
 }
 
 TEST(ImageIo, PngRoundTripKeepsEveryRgbByte)

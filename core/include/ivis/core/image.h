@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ float linearFromSrgb(float encoded);
 
 /// @brief Inverse of linearFromSrgb: linear [0,1] -> sRGB-encoded [0,1].
 float srgbFromLinear(float linear);
+
+/// @brief The 8-bit sRGB level of a linear value, round(255 srgbFromLinear(linear)) clamped to
+///        [0, 255] (0 for NaN), read from tables that give that formula's level at every float.
+std::uint8_t srgbByteFromLinear(float linear);
 
 /// @brief linearFromSrgb applied to each channel.
 glm::vec3 linearFromSrgb(const glm::vec3& encoded);
