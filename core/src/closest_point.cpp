@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <initializer_list>
 
 namespace ivis::core {
@@ -60,6 +61,103 @@ TrianglePoint closestPointOnTriangle(const glm::dvec3& p, const glm::dvec3& a, c
     }
     const double v = vb / denom, w = vc / denom;
     return atWeights(p, a, b, c, 1 - v - w, v, w);
+}
+
+namespace {
+
+// Four doubles of four triangles and the masks their comparisons give (GCC vector extensions:
+// four AVX2 lanes, or two SSE2 pairs on CPUs without AVX2). Every lane computes what
+// closestPointOnTriangle computes, in the same order, and no multiply-add is fused, so each lane's
+// result has the scalar function's bits.
+using Lanes = double __attribute__((vector_size(32)));
+using LaneMask = long long __attribute__((vector_size(32)));
+constexpr int kLanes = 4;
+
+struct LaneVec3 {
+    Lanes x, y, z;
+};
+
+inline LaneVec3 minus(const LaneVec3& a, const LaneVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Lanes dot(const LaneVec3& a, const LaneVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/// u a + v b + w c, summed left to right as glm sums it.
+inline Lanes weighted(const Lanes& u, const Lanes& a, const Lanes& v, const Lanes& b, const Lanes& w, const Lanes& c)
+{
+    return u * a + v * b + w * c;
+}
+
+/// Four triangles' closest points to p into out[0, count); the lanes past count repeat the last
+/// triangle and are dropped. Lanes whose triangle is degenerate in a way the vertex and edge regions
+/// do not catch are done by closestPointOnTriangle itself.
+__attribute__((target_clones("avx2", "default"))) void closestPointsOfFour(const glm::dvec3& p,
+                                                                           const glm::dvec3* corners, int count,
+                                                                           TrianglePoint* out)
+{
+    LaneVec3 a, b, c;
+    for (int k = 0; k < kLanes; ++k) {
+        const glm::dvec3* t = corners + 3 * std::min(k, count - 1);
+        a.x[k] = t[0].x, a.y[k] = t[0].y, a.z[k] = t[0].z;
+        b.x[k] = t[1].x, b.y[k] = t[1].y, b.z[k] = t[1].z;
+        c.x[k] = t[2].x, c.y[k] = t[2].y, c.z[k] = t[2].z;
+    }
+    const LaneVec3 q{Lanes{} + p.x, Lanes{} + p.y, Lanes{} + p.z};
+    const Lanes zero{}, one = zero + 1.0;
+
+    const LaneVec3 ab = minus(b, a), ac = minus(c, a), ap = minus(q, a);
+    const Lanes d1 = dot(ab, ap), d2 = dot(ac, ap);
+    const LaneVec3 bp = minus(q, b);
+    const Lanes d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const Lanes vc = d1 * d4 - d3 * d2;
+    const LaneVec3 cp = minus(q, c);
+    const Lanes d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const Lanes vb = d5 * d2 - d1 * d6;
+    const Lanes va = d3 * d6 - d5 * d4;
+    const Lanes denom = va + vb + vc;
+
+    // The regions in closestPointOnTriangle's order: each lane takes the first that holds.
+    const LaneMask inA = (d1 <= 0.0) & (d2 <= 0.0);
+    const LaneMask inB = (d3 >= 0.0) & (d4 <= d3);
+    const LaneMask onAB = (vc <= 0.0) & (d1 >= 0.0) & (d3 <= 0.0);
+    const LaneMask inC = (d6 >= 0.0) & (d5 <= d6);
+    const LaneMask onAC = (vb <= 0.0) & (d2 >= 0.0) & (d6 <= 0.0);
+    const LaneMask onBC = (va <= 0.0) & ((d4 - d3) >= 0.0) & ((d5 - d6) >= 0.0);
+    const LaneMask degenerate = denom <= 0.0;
+
+    const Lanes vAB = d1 / (d1 - d3);
+    const Lanes wAC = d2 / (d2 - d6);
+    const Lanes wBC = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    const Lanes vFace = vb / denom, wFace = vc / denom;
+
+    // From the last region to the first, so that the first that holds is the one left.
+    Lanes u = one - vFace - wFace, v = vFace, w = wFace;
+    u = onBC ? zero : u, v = onBC ? one - wBC : v, w = onBC ? wBC : w;
+    u = onAC ? one - wAC : u, v = onAC ? zero : v, w = onAC ? wAC : w;
+    u = inC ? zero : u, v = inC ? zero : v, w = inC ? one : w;
+    u = onAB ? one - vAB : u, v = onAB ? vAB : v, w = onAB ? zero : w;
+    u = inB ? zero : u, v = inB ? one : v, w = inB ? zero : w;
+    u = inA ? one : u, v = inA ? zero : v, w = inA ? zero : w;
+    const LaneMask byItself = degenerate & ~(inA | inB | onAB | inC | onAC | onBC);
+
+    const LaneVec3 point{weighted(u, a.x, v, b.x, w, c.x), weighted(u, a.y, v, b.y, w, c.y),
+                         weighted(u, a.z, v, b.z, w, c.z)};
+    const LaneVec3 d = minus(q, point);
+    const Lanes distanceSquared = dot(d, d);
+    for (int k = 0; k < count; ++k) {
+        if (byItself[k]) {
+            out[k] = closestPointOnTriangle(p, corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]);
+            continue;
+        }
+        out[k].point = {point.x[k], point.y[k], point.z[k]};
+        out[k].barycentric = {u[k], v[k], w[k]};
+        out[k].distanceSquared = distanceSquared[k];
+    }
+}
+
+}  // namespace
+
+void closestPointsOnTriangles(const glm::dvec3& p, const glm::dvec3* corners, int count, TrianglePoint* out)
+{
+    for (int first = 0; first < count; first += kLanes)
+        closestPointsOfFour(p, corners + 3 * first, std::min(kLanes, count - first), out + first);
 }
 
 }  // namespace ivis::core

@@ -21,32 +21,65 @@ struct TriangleBvh::Impl {
 
 namespace {
 
-/// State of one closest-point query.
+/// Triangles a closest-point query tests together (closestPointsOnTriangles).
+constexpr int kTestedTogether = 8;
+
+/// State of one closest-point query: the best triangle so far and the triangles visited since the
+/// last test.
 struct ClosestSearch {
     const TriangleMesh* mesh;
     glm::dvec3 p;
     TrianglePoint best;
     int triangle = -1;
+    float radius = 0.0f;  ///< the query's radius as it stands
+    int waiting = 0;
+    unsigned visited[kTestedTogether];
+
+    /// Tests the waiting triangles; true when one became the best. The best is the least distance
+    /// within the radius, ties to the lowest index, whatever the order of the tests.
+    bool testWaiting()
+    {
+        glm::dvec3 corners[3 * kTestedTogether];
+        TrianglePoint points[kTestedTogether];
+        for (int k = 0; k < waiting; ++k) {
+            const auto& t = mesh->triangles[visited[k]];
+            for (int corner = 0; corner < 3; ++corner) corners[3 * k + corner] = mesh->positions[t[corner]];
+        }
+        closestPointsOnTriangles(p, corners, waiting, points);
+        bool improved = false;
+        for (int k = 0; k < waiting; ++k) {
+            const TrianglePoint& candidate = points[k];
+            if (candidate.distanceSquared > double(radius) * double(radius)) continue;
+            if (candidate.distanceSquared < best.distanceSquared ||
+                (candidate.distanceSquared == best.distanceSquared && int(visited[k]) < triangle)) {
+                best = candidate;
+                triangle = int(visited[k]);
+                improved = true;
+            }
+        }
+        waiting = 0;
+        return improved;
+    }
 };
 
-/// Embree point-query callback: tests one triangle (Embree visits every triangle whose box meets
-/// the query sphere) and shrinks the search radius when it is closer than the radius.
+/// The query radius a hair above the best distance of @a search, so that exact ties are still
+/// visited: Embree measures its boxes from the query point rounded to floats, up to about 2e-7 off
+/// within the volume's box [-2.5, 2.5]^3.
+float radiusAbove(const ClosestSearch& search)
+{
+    return std::nextafter(float(std::sqrt(search.best.distanceSquared)) * (1.0f + 1e-6f) + 1e-6f, 1e30f);
+}
+
+/// Embree point-query callback: Embree visits every triangle whose box meets the query sphere; the
+/// visited triangles wait until kTestedTogether of them are tested at once, and a better one found
+/// shrinks the search radius.
 bool visitTriangle(RTCPointQueryFunctionArguments* args)
 {
     auto* search = static_cast<ClosestSearch*>(args->userPtr);
-    const auto& t = search->mesh->triangles[args->primID];
-    const TrianglePoint candidate = closestPointOnTriangle(
-        search->p, search->mesh->positions[t[0]], search->mesh->positions[t[1]], search->mesh->positions[t[2]]);
-    const double radius = args->query->radius;
-    if (candidate.distanceSquared > radius * radius) return false;
-    const bool better = candidate.distanceSquared < search->best.distanceSquared ||
-                        (candidate.distanceSquared == search->best.distanceSquared && int(args->primID) < search->triangle);
-    if (!better) return false;
-    search->best = candidate;
-    search->triangle = int(args->primID);
-    // Keep the radius a hair above the distance so that exact ties are still visited.
-    args->query->radius = std::min(args->query->radius,
-                                   std::nextafter(float(std::sqrt(candidate.distanceSquared)) * (1.0f + 1e-6f), 1e30f));
+    search->visited[search->waiting++] = args->primID;
+    if (search->waiting < kTestedTogether || !search->testWaiting()) return false;
+    search->radius = std::min(search->radius, radiusAbove(*search));
+    args->query->radius = search->radius;
     return true;
 }
 
@@ -141,7 +174,9 @@ TrianglePoint TriangleBvh::closestPoint(const glm::dvec3& p, double radius, int&
                                          : std::numeric_limits<float>::infinity();
     RTCPointQueryContext context;
     rtcInitPointQueryContext(&context);
+    search.radius = query.radius;
     rtcPointQuery(mImpl->scene, &query, &context, visitTriangle, &search);
+    search.testWaiting();
     triangle = search.triangle;
     return search.best;
 }
