@@ -67,8 +67,9 @@ namespace {
 
 // Four doubles of four triangles and the masks their comparisons give (GCC vector extensions:
 // four AVX2 lanes, or two SSE2 pairs on CPUs without AVX2). Every lane computes what
-// closestPointOnTriangle computes, in the same order, and no multiply-add is fused, so each lane's
-// result has the scalar function's bits.
+// closestPointOnTriangle computes, in the same order; neither the x86-64 baseline nor the AVX2
+// clone has fused multiply-adds to contract them into, so each lane's result has the scalar
+// function's bits (the test of the two says so on any other build).
 using Lanes = double __attribute__((vector_size(32)));
 using LaneMask = long long __attribute__((vector_size(32)));
 constexpr int kLanes = 4;
