@@ -74,10 +74,21 @@ using Lanes = double __attribute__((vector_size(32)));
 using LaneMask = long long __attribute__((vector_size(32)));
 constexpr int kLanes = 4;
 
+// An AVX2 clone beside the baseline one, chosen when the program loads (x86-64 with GCC's ifuncs).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define IVIS_AVX2_CLONE __attribute__((target_clones("avx2", "default")))
+#else
+#define IVIS_AVX2_CLONE
+#endif
+
 struct LaneVec3 {
     Lanes x, y, z;
 };
 
+// The helpers below are inlined into each clone of closestPointsOfFour and never called across a
+// library's boundary, so the ABI of returning a vector without AVX does not matter here. (Ignored to
+// the end of the file: GCC warns there, where it makes the clones.)
+#pragma GCC diagnostic ignored "-Wpsabi"
 inline LaneVec3 minus(const LaneVec3& a, const LaneVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline Lanes dot(const LaneVec3& a, const LaneVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /// u a + v b + w c, summed left to right as glm sums it.
@@ -89,9 +100,8 @@ inline Lanes weighted(const Lanes& u, const Lanes& a, const Lanes& v, const Lane
 /// Four triangles' closest points to p into out[0, count); the lanes past count repeat the last
 /// triangle and are dropped. Lanes whose triangle is degenerate in a way the vertex and edge regions
 /// do not catch are done by closestPointOnTriangle itself.
-__attribute__((target_clones("avx2", "default"))) void closestPointsOfFour(const glm::dvec3& p,
-                                                                           const glm::dvec3* corners, int count,
-                                                                           TrianglePoint* out)
+IVIS_AVX2_CLONE void closestPointsOfFour(const glm::dvec3& p, const glm::dvec3* corners, int count,
+                                         TrianglePoint* out)
 {
     LaneVec3 a, b, c;
     for (int k = 0; k < kLanes; ++k) {
@@ -152,7 +162,6 @@ __attribute__((target_clones("avx2", "default"))) void closestPointsOfFour(const
         out[k].distanceSquared = distanceSquared[k];
     }
 }
-
 }  // namespace
 
 void closestPointsOnTriangles(const glm::dvec3& p, const glm::dvec3* corners, int count, TrianglePoint* out)
