@@ -79,7 +79,6 @@ TEST(TriangleBvh, BoundedClosestPointIsTheBruteForcesLeastDistanceAndLowestIndex
     const test::BruteForceClosest brute(mesh);
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(-1.6, 1.6);
-    int bounded = 0;
     for (int i = 0; i < 400; ++i) {
         // Points on the vertices (equal distances to several triangles) as well as anywhere.
         const glm::dvec3 p = i % 5 == 0 ? glm::dvec3(mesh.positions[std::size_t(i) % mesh.positions.size()])
@@ -92,7 +91,6 @@ TEST(TriangleBvh, BoundedClosestPointIsTheBruteForcesLeastDistanceAndLowestIndex
             const TrianglePoint found = bvh.closestPoint(p, radius, triangle);
             ASSERT_EQ(triangle, expected) << "point " << i << ", radius " << radius;
             ASSERT_TRUE(sameBits(found, truth)) << "point " << i;
-            bounded += std::isfinite(radius);
         }
         if (truth.distanceSquared > 1e-2) {  // nothing within half the distance
             int none = -2;
@@ -100,7 +98,6 @@ TEST(TriangleBvh, BoundedClosestPointIsTheBruteForcesLeastDistanceAndLowestIndex
             EXPECT_EQ(none, -1) << "point " << i;
         }
     }
-    EXPECT_EQ(bounded, 400);
 }
 
 }  // namespace
