@@ -6,7 +6,10 @@
 #include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+
+#include <random>
 
 namespace ivis::optimize {
 namespace {
@@ -59,6 +62,59 @@ TEST(MappingCoherence, CountsTheTornPairsOfAHandMadeLayer)
     EXPECT_EQ(grey.r, grey.g);
     EXPECT_EQ(grey.g, grey.b);
     EXPECT_THROW(tearMap(picture, std::vector<char>(3, 0)), ValueError);
+}
+
+TEST(MappingCoherence, IsTheBruteForceCountOnALargeLayerAtEveryStride)
+{
+    // A layer far larger than one row block: a random walk of points with jumps (tears) and holes
+    // (background), counted pair by pair here and by the measure in parallel.
+    const int width = 301, height = 257;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<char> indirect(std::size_t(width) * height);
+    std::vector<glm::vec3> points(indirect.size());
+    core::ImageLayers layers(width, height);
+    core::Channel& region = layers.add("region");
+    core::Channel &px = layers.add("P.X"), &py = layers.add("P.Y"), &pz = layers.add("P.Z");
+    for (std::size_t i = 0; i < indirect.size(); ++i) {
+        indirect[i] = unit(random) < 0.85f;
+        const float jump = unit(random) < 0.05f ? 0.5f : 0.03f;
+        points[i] = glm::vec3(unit(random), unit(random), unit(random)) * jump + float(i % width) * 0.01f;
+        region[i] = float(indirect[i] ? render::Region::Indirect : render::Region::Background);
+        px[i] = points[i].x, py[i] = points[i].y, pz[i] = points[i].z;
+    }
+    for (const int stride : {1, 2, 3, 7}) {
+        Coherence expected;
+        std::vector<char> expectedTorn(indirect.size(), 0);
+        auto pair = [&](std::size_t a, std::size_t b) {
+            if (!indirect[a] || !indirect[b]) return;
+            ++expected.pairs;
+            if (glm::distance(glm::dvec3(points[a]), glm::dvec3(points[b])) <= kCoherenceDistance)
+                ++expected.coherent;
+            else
+                expectedTorn[a] = expectedTorn[b] = 1;
+        };
+        for (int y = 0; y < height; y += stride)
+            for (int x = 0; x < width; x += stride) {
+                const std::size_t i = std::size_t(y) * width + x;
+                if (x + 1 < width) pair(i, i + 1);
+                if (y + 1 < height) pair(i, i + width);
+            }
+        std::vector<char> torn;
+        const Coherence c = mappingCoherence(indirect, points, width, height, kCoherenceDistance, &torn, stride);
+        EXPECT_EQ(c.pairs, expected.pairs) << "stride " << stride;
+        EXPECT_EQ(c.coherent, expected.coherent) << "stride " << stride;
+        EXPECT_GT(c.pairs - c.coherent, 100u) << "the layer must tear";
+        ASSERT_EQ(torn.size(), expectedTorn.size());
+        for (std::size_t i = 0; i < torn.size(); ++i)
+            ASSERT_EQ(bool(torn[i]), bool(expectedTorn[i])) << "stride " << stride << ", pixel " << i;
+        if (stride != 1) continue;
+        std::vector<char> tornOfLayers;
+        const Coherence fromLayers = mappingCoherence(layers, kCoherenceDistance, &tornOfLayers);
+        EXPECT_EQ(fromLayers.pairs, expected.pairs);
+        EXPECT_EQ(fromLayers.coherent, expected.coherent);
+        EXPECT_EQ(tornOfLayers, torn);
+    }
 }
 
 TEST(MappingCoherence, OfARenderEqualsTheMeasureOfItsView)
