@@ -13,10 +13,10 @@ SMALL = dict(volume_resolution=64, opt_res=24, steps=2, finalists=0, size=(200, 
 def test_optimize_finds_and_draws_what_the_cli_does(tmp_path):
     cli_png, cli_json = tmp_path / "cli.png", tmp_path / "cli.json"
     done = run_cli("optimize", "scene:vessel-tree", "--volume-res", "64", "--opt-res", "24", "--steps", "2",
-                   "--finalists", "0", "--res", "200x160", "--energy", "scalar", "-o", str(cli_png), "--json",
-                   str(cli_json))
+                   "--finalists", "0", "--res", "200x160", "--energy", "scalar", "--hot-spot-views", "2", "-o",
+                   str(cli_png), "--json", str(cli_json))
     assert done.returncode == 0, done.stderr
-    picture = inversevis.optimize(inversevis.Mesh.read("scene:vessel-tree"), energy="scalar", **SMALL)
+    picture = inversevis.optimize(inversevis.Mesh.read("scene:vessel-tree"), energy="scalar", hot_spot_views=2, **SMALL)
     picture.save(str(tmp_path / "py.png"))
     assert (tmp_path / "py.png").read_bytes() == cli_png.read_bytes()
     cli = json.loads(cli_json.read_text())
@@ -39,11 +39,11 @@ def test_optimize_takes_renders_choice_of_scalar_and_look(tmp_path):
     done = run_cli("optimize", "scene:vessel-tree", "--volume-res", "64", "--opt-res", "24", "--steps", "2",
                    "--finalists", "0", "--res", "200x160", "--hotspots", "2", "--energy", "scalar", "--invert",
                    "--units", "a.u.", "--legend", "bottom", "--no-outline", "--unshaded-indirect", "--range-percentile",
-                   "10", "90", "-o", str(cli_png), "--json", str(cli_json))
+                   "10", "90", "--hot-spot-views", "2", "-o", str(cli_png), "--json", str(cli_json))
     assert done.returncode == 0, done.stderr
     picture = inversevis.optimize(inversevis.Mesh.read("scene:vessel-tree"), hotspots=2, energy="scalar", invert=True,
                                   units="a.u.", legend_side="bottom", outline=False, shade_indirect=False,
-                                  range_percentile=(10, 90), **SMALL)
+                                  range_percentile=(10, 90), hot_spot_views=2, **SMALL)
     assert picture._repr_png_() == cli_png.read_bytes()
     cli = json.loads(cli_json.read_text())
     assert picture.optimization["theta"] == cli["theta"] and picture.optimization["phi"] == cli["phi"]
