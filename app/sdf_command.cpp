@@ -28,7 +28,7 @@ Command addSdfCommand(CLI::App& app)
         bool json = false;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / barycentric volume");
+    CLI::App* command = app.add_subcommand("sdf", "Build the sparse distance / triangle / gradient volume");
     options->mesh.addTo(*command);
     command->add_option("-o,--output", options->output,
                         "Volume file (default: <mesh>.<mesh hash>.res<N>.reach<R>[.band<B>][.signed|.unsigned].vdb in the cache folder, where render, "

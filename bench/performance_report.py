@@ -88,7 +88,7 @@ measures only what is missing; `--fresh` measures all again).
 ## Volume build (`inversevis-bench sdf`)
 
 `inversevis-bench sdf ../shared/meshes/armadillo_50k.ply --volume-res N --json`. Ours: the full
-build ([volume.md](volume.md)): OpenVDB's band, the exact closest point, triangle, barycentrics
+build ([volume.md](volume.md)): OpenVDB's band, the exact closest point, triangle
 and gradient of every band voxel, and the far field with the exact distance and gradient of every
 far voxel. Reference: a bare `openvdb::tools::meshToVolume` with a 3-voxel band on each side and a
 polygon-index grid. Each runs in a forked child of its own, so its time and peak resident memory
@@ -170,8 +170,8 @@ creep through the last half voxel to the landing. What makes the frames as fast 
 `inversevis render scene:vessel-tree --volume-res 2000 --res 4000x3000`, the default method, its
 volume cached before (`inversevis sdf scene:vessel-tree --volume-res 2000`): **{print_run['wall_seconds']:.1f} s**
 wall, peak memory **{gib(print_run['peak_rss_bytes'])}**. Its memory: what the scene samples (the band in
-bricks, the far field), the volume's triangle grid (`render` frees its phi, gradient and
-barycentric grids once the scene has copied them: [volume.md](volume.md), "Memory"), the picture
+bricks, the far field), the volume's triangle grid (`render` frees its phi and gradient
+grids once the scene has copied them: [volume.md](volume.md), "Memory"), the picture
 with its eight layers (12 M pixels; the coherence every render reports reads the landing layers)
 and the figure with its colour bar. Where its seconds go (most are the frame itself):
 [decisions/print-cost.md](decisions/print-cost.md).

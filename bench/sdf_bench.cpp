@@ -1,4 +1,4 @@
-// `inversevis-bench sdf`: the full volume build (band distance + triangle IDs + barycentrics + far
+// `inversevis-bench sdf`: the full volume build (band distance + triangle IDs + gradients + far
 // field) against OpenVDB's bare meshToVolume (3-voxel band each side, polygon-index grid), each in
 // its own child process so that time and peak memory belong to it alone.
 #include "benchmarks.h"

@@ -75,7 +75,7 @@ TEST(BoxLattice, BuiltVolumeGridsLieOnTheirLattices)
     const std::pair<const openvdb::GridBase*, BoxLattice> grids[] = {
         {volume.phi.get(), volume.lattice()},
         {volume.triangle.get(), volume.lattice()},
-        {volume.barycentric.get(), volume.lattice()},
+        {volume.gradient.get(), volume.lattice()},
         {volume.farPhi.get(), volume.farLattice()}};
     for (const auto& [grid, lattice] : grids) {
         // OpenVDB may store the scale a few ulps off (seen: 0.024999999999999911 for 0.025).

@@ -34,8 +34,8 @@ TEST(BuildMemory, TheEstimateFollowsTheAreaAndTheBand)
     EXPECT_EQ(band.interior, 3.0f);
     EXPECT_EQ(narrowBandWidth(options, true).interior, 7.0f) << "unsigned: both sides as outside";
     const double one = double(estimatedBuildBytes(square(1.0f), options, false));
-    // A unit square covers 200^2 voxel faces; 10 band voxels each, at 40 bytes.
-    EXPECT_NEAR(one, 40.0 * 200.0 * 200.0 * 10.0, 1.0);
+    // A unit square covers 200^2 voxel faces; 10 band voxels each, at 28 bytes.
+    EXPECT_NEAR(one, 28.0 * 200.0 * 200.0 * 10.0, 1.0);
     EXPECT_NEAR(double(estimatedBuildBytes(square(2.0f), options, false)), 4.0 * one, 4.0) << "four times the area";
     EXPECT_NEAR(double(estimatedBuildBytes(square(1.0f), options, true)), one * 14.0 / 10.0, 1.0);
     options.resolution = 2000;  // twice the voxels across, and a band of ceil(0.025 / 0.0025) + 2 = 12 outside

@@ -1,8 +1,9 @@
-// Volume build against exhaustive closest-point search: distances, signs, triangle IDs,
-// barycentrics and distance gradients of every active voxel within the hull distance phi0 = 0.4.
+// Volume build against exhaustive closest-point search: distances, signs, triangle IDs and
+// distance gradients of every active voxel within the hull distance phi0 = 0.4.
 #include "brute_force.h"
 #include "test_support.h"
 
+#include <ivis/core/closest_point.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/hole_capping.h>
 #include <ivis/core/procedural_scenes.h>
@@ -28,8 +29,7 @@ constexpr double kHullOffset = 0.4;
 struct VoxelSample {
     glm::dvec3 position;
     float phi;
-    std::int32_t triangle;       // -1 for far-field voxels
-    openvdb::Vec3s barycentric;  // zero for far-field voxels
+    std::int32_t triangle;  // -1 for far-field voxels
     openvdb::Vec3s gradient;
     double voxelSize;
 };
@@ -39,13 +39,12 @@ std::vector<VoxelSample> samplesWithinHull(const SurfaceVolume& volume)
 {
     std::vector<VoxelSample> samples;
     auto triangle = volume.triangle->getConstAccessor();
-    auto bary = volume.barycentric->getConstAccessor();
     auto gradient = volume.gradient->getConstAccessor();
     for (auto it = volume.phi->cbeginValueOn(); it; ++it) {
         if (std::abs(*it) > kHullOffset) continue;
         const openvdb::Vec3d p = volume.phi->indexToWorld(it.getCoord());
         samples.push_back({{p.x(), p.y(), p.z()}, *it, triangle.getValue(it.getCoord()),
-                           bary.getValue(it.getCoord()), gradient.getValue(it.getCoord()), volume.voxelSize()});
+                           gradient.getValue(it.getCoord()), volume.voxelSize()});
     }
     if (volume.farPhi) {
         auto fine = volume.phi->getConstAccessor();
@@ -55,8 +54,7 @@ std::vector<VoxelSample> samplesWithinHull(const SurfaceVolume& volume)
             if (std::abs(*it) > kHullOffset) continue;
             const openvdb::Vec3d p = volume.farPhi->indexToWorld(it.getCoord());
             if (fine.isValueOn(volume.phi->transform().worldToIndexCellCentered(p))) continue;
-            samples.push_back({{p.x(), p.y(), p.z()}, *it, -1, openvdb::Vec3s(0.0f),
-                               farGradient.getValue(it.getCoord()), farVoxel});
+            samples.push_back({{p.x(), p.y(), p.z()}, *it, -1, farGradient.getValue(it.getCoord()), farVoxel});
         }
     }
     return samples;
@@ -109,10 +107,11 @@ Report compareWithBruteForce(const core::TriangleMesh& mesh, const SurfaceVolume
                 ++local.missingTriangle;
                 continue;
             }
+            // The stored triangle's closest point is the exhaustive search's.
             const auto& t = mesh.triangles[s.triangle];
-            const glm::dvec3 ours = double(s.barycentric.x()) * glm::dvec3(mesh.positions[t[0]]) +
-                                    double(s.barycentric.y()) * glm::dvec3(mesh.positions[t[1]]) +
-                                    double(s.barycentric.z()) * glm::dvec3(mesh.positions[t[2]]);
+            const glm::dvec3 ours = core::closestPointOnTriangle(s.position, mesh.positions[t[0]], mesh.positions[t[1]],
+                                                                 mesh.positions[t[2]])
+                                        .point;
             const double pointError = glm::length(ours - exact.point) / s.voxelSize;
             const double ourDistance = glm::length(ours - s.position);
             const bool tie = std::abs(ourDistance - distance) < 1e-3 * s.voxelSize;  // equidistant points

@@ -56,7 +56,6 @@ TEST(VolumeCache, RoundTripKeepsEveryGrid)
     const SurfaceVolume read = readVolume(dir.file("v.vdb"));
     expectSameGrid(*built.phi, *read.phi);
     expectSameGrid(*built.triangle, *read.triangle);
-    expectSameGrid(*built.barycentric, *read.barycentric);
     expectSameGrid(*built.gradient, *read.gradient);
     expectSameGrid(*built.farPhi, *read.farPhi);
     expectSameGrid(*built.farGradient, *read.farGradient);

@@ -17,13 +17,13 @@
 namespace ivis::vdb {
 namespace {
 
-/// Peak bytes per narrow-band voxel of a build (the distance, closest-triangle, barycentric and
-/// gradient grids and OpenVDB's intermediate trees): the growth of the peak resident memory
-/// (`/usr/bin/time -f %M inversevis sdf MESH --volume-res N`) over the growth of the band's voxels
-/// from N = 1000 to 1500 was 47.6 bytes on the Stanford bunny, 61 on the armadillo and 58.7 on the
-/// VaMPy artery (from 500 to 1000 on the bunny: 55.8); rounded down, and the process's other
+/// Peak bytes per narrow-band voxel of a build (the distance, closest-triangle and gradient grids
+/// and OpenVDB's intermediate trees): the growth of the peak resident memory (`/usr/bin/time -f %M
+/// inversevis sdf MESH --volume-res N`) over the growth of the band's voxels from N = 1000 to 1500
+/// was 30.2 bytes on the Stanford bunny (47.7 while the volume still held barycentrics, when the
+/// armadillo's was 61 and the VaMPy artery's 58.7); rounded down, and the process's other
 /// 110-130 MB left out, so that the estimate stays below the peak.
-constexpr double kBuildBytesPerBandVoxel = 40.0;
+constexpr double kBuildBytesPerBandVoxel = 28.0;
 
 }  // namespace
 

@@ -1,5 +1,5 @@
 // Builds a SurfaceVolume: OpenVDB's mesh-to-volume conversion for the band and the sign, then an
-// exact closest-point pass that fixes distance, triangle ID, barycentrics and distance gradient of
+// exact closest-point pass that fixes distance, triangle ID and distance gradient of
 // every band voxel, and distance and gradient of every far-field voxel.
 #include <ivis/vdb/surface_volume.h>
 #include <ivis/vdb/build_memory.h>
@@ -126,7 +126,7 @@ core::TrianglePoint closestWithin(const core::TriangleBvh& bvh, const glm::dvec3
     return closest;
 }
 
-/// Exact distance, closest triangle, barycentrics and distance gradient for every band voxel. The
+/// Exact distance, closest triangle and distance gradient for every band voxel. The
 /// sign is OpenVDB's, except within two voxels of a closed, manifold, consistently oriented
 /// surface, where the pseudo-normal test is exact (OpenVDB's flood fill mislabels crevices
 /// narrower than a voxel).
@@ -148,9 +148,8 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
         for (auto leaf = range.begin(); leaf; ++leaf) {
             if (progress.advance(1)) return;
             Int32Tree::LeafNodeType* triangleLeaf = volume.triangle->tree().probeLeaf(leaf->origin());
-            Vec3STree::LeafNodeType* baryLeaf = volume.barycentric->tree().probeLeaf(leaf->origin());
             Vec3STree::LeafNodeType* gradientLeaf = volume.gradient->tree().probeLeaf(leaf->origin());
-            IVIS_CHECK(triangleLeaf && baryLeaf && gradientLeaf);
+            IVIS_CHECK(triangleLeaf && gradientLeaf);
             for (auto voxel = leaf->beginValueOn(); voxel; ++voxel) {
                 const Vec3d centre = lattice.worldFromIndex(voxel.getCoord());
                 const glm::dvec3 p(centre.x(), centre.y(), centre.z());
@@ -163,8 +162,6 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
                 const double value = inside ? -distance : distance;
                 voxel.setValue(float(value));
                 triangleLeaf->setValueOnly(voxel.pos(), triangle);
-                baryLeaf->setValueOnly(voxel.pos(), Vec3s(float(best.barycentric.x), float(best.barycentric.y),
-                                                          float(best.barycentric.z)));
                 gradientLeaf->setValueOnly(voxel.pos(), distanceGradient(mesh, triangle, p, best.point, value));
             }
         }
@@ -173,7 +170,7 @@ void refineClosestPoints(const core::TriangleMesh& mesh, const core::TriangleBvh
 }
 
 /// Exact distance and gradient of every far-field voxel, by the bounded BVH query of the band (no
-/// triangle or barycentrics); the sign is OpenVDB's. (The triangles OpenVDB's polygon-index grid
+/// triangle); the sign is OpenVDB's. (The triangles OpenVDB's polygon-index grid
 /// names at the voxel and its 26 neighbours cost a third as much but miss the closest triangle at
 /// some far voxels, whose gradients are then degrees off: docs/volume.md.)
 void farFieldDistances(const core::TriangleMesh& mesh, const core::TriangleBvh& bvh, const BoxLattice& lattice,
@@ -273,7 +270,6 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     volume.phi->setName("phi");
 
     volume.triangle = topologyCopy<openvdb::Int32Grid>(*volume.phi, -1, "triangle");
-    volume.barycentric = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "barycentric");
     volume.gradient = topologyCopy<openvdb::Vec3SGrid>(*volume.phi, openvdb::Vec3s(0.0f), "gradient");
     const core::TriangleBvh bvh(mesh);
     refineClosestPoints(mesh, bvh, volume, interrupter);

@@ -47,7 +47,6 @@ void SurfaceVolume::releaseSampledGrids()
     empty->setName(phi->getName());
     phi = empty;
     gradient.reset();
-    barycentric.reset();
 #if defined(__GLIBC__)
     // Their pages back to the system: grids read on several threads (readVolume) lie in several
     // malloc arenas, whose free pages the caller's later allocations would not reuse.
@@ -60,7 +59,6 @@ std::size_t SurfaceVolume::memoryBytes() const
     std::size_t bytes = 0;
     if (phi) bytes += phi->memUsage();
     if (triangle) bytes += triangle->memUsage();
-    if (barycentric) bytes += barycentric->memUsage();
     if (gradient) bytes += gradient->memUsage();
     if (farPhi) bytes += farPhi->memUsage();
     if (farGradient) bytes += farGradient->memUsage();

@@ -88,7 +88,6 @@ std::string checksum(const SurfaceVolume& volume)
     core::ContentHash hash;
     hashGrid(*volume.phi, hash);
     hashGrid(*volume.triangle, hash);
-    hashGrid(*volume.barycentric, hash);
     hashGrid(*volume.gradient, hash);
     if (volume.farPhi) hashGrid(*volume.farPhi, hash);
     if (volume.farGradient) hashGrid(*volume.farGradient, hash);
@@ -203,7 +202,7 @@ const char* toString(CacheOutcome outcome)
 void writeVolume(const SurfaceVolume& volume, const std::string& path)
 {
     detail::initializeOpenVdb();
-    IVIS_CHECK(volume.phi && volume.triangle && volume.barycentric && volume.gradient);
+    IVIS_CHECK(volume.phi && volume.triangle && volume.gradient);
     IVIS_CHECK(bool(volume.farPhi) == bool(volume.farGradient));
     openvdb::MetaMap meta;
     meta.insertMeta(kVersionKey, openvdb::Int32Metadata(kVolumeFormatVersion));
@@ -216,7 +215,7 @@ void writeVolume(const SurfaceVolume& volume, const std::string& path)
     meta.insertMeta(kTrianglesKey, openvdb::Int64Metadata(openvdb::Int64(volume.triangleCount)));
     meta.insertMeta(kChecksumKey, openvdb::StringMetadata(checksum(volume)));
 
-    openvdb::GridCPtrVec grids{volume.phi, volume.triangle, volume.barycentric, volume.gradient};
+    openvdb::GridCPtrVec grids{volume.phi, volume.triangle, volume.gradient};
     if (volume.farPhi) grids.insert(grids.end(), {volume.farPhi, volume.farGradient});
 
     const fs::path target(path);
@@ -268,7 +267,6 @@ SurfaceVolume readCheckedVolume(const std::string& path)
         const openvdb::GridPtrVecPtr grids = readGridsInParallel(path, names);
         volume.phi = findGrid<openvdb::FloatGrid>(grids, "phi", path);
         volume.triangle = findGrid<openvdb::Int32Grid>(grids, "triangle", path);
-        volume.barycentric = findGrid<openvdb::Vec3SGrid>(grids, "barycentric", path);
         volume.gradient = findGrid<openvdb::Vec3SGrid>(grids, "gradient", path);
         for (const auto& base : *grids)
             if (base->getName() == "far_phi") {
@@ -285,7 +283,6 @@ SurfaceVolume readCheckedVolume(const std::string& path)
                          std::to_string(kVolumeFormatVersion));
     if (checksum(volume) != key.checksum) throw InputError(path + ": corrupt volume file (checksum mismatch)");
     const bool sameTopology = volume.phi->tree().hasSameTopology(volume.triangle->tree()) &&
-                              volume.phi->tree().hasSameTopology(volume.barycentric->tree()) &&
                               volume.phi->tree().hasSameTopology(volume.gradient->tree()) &&
                               (!volume.farPhi || volume.farPhi->tree().hasSameTopology(volume.farGradient->tree()));
     if (!sameTopology) throw InputError(path + ": corrupt volume file (grids of different extent)");

@@ -1,6 +1,6 @@
 /// @file surface_volume.h
-/// @brief The sparse volume of a surface: narrow-band distance, closest triangle, barycentrics and
-///        exact distance gradient, plus a coarse far field (distance and gradient) reaching the
+/// @brief The sparse volume of a surface: narrow-band distance, closest triangle and exact
+///        distance gradient, plus a coarse far field (distance and gradient) reaching the
 ///        InverseVis hull.
 /// @note OpenVDB sign convention: phi < 0 inside, phi > 0 outside; open meshes store |distance|.
 #pragma once
@@ -51,8 +51,6 @@ struct SurfaceVolume {
     openvdb::FloatGrid::Ptr phi;
     /// Closest triangle index per active phi voxel (background -1 = none).
     openvdb::Int32Grid::Ptr triangle;
-    /// Barycentric weights of the closest point on that triangle (background 0).
-    openvdb::Vec3SGrid::Ptr barycentric;
     /// Exact gradient of phi per active phi voxel: the unit vector from the closest point, times the
     /// sign of phi (the triangle's normal on the surface itself); background 0.
     openvdb::Vec3SGrid::Ptr gradient;
@@ -67,7 +65,7 @@ struct SurfaceVolume {
     std::uint64_t meshHash = 0;     ///< core::meshHash of the normalised mesh it was built from
     std::size_t triangleCount = 0;  ///< triangles of that mesh
 
-    /// @brief Frees the fine band's phi, gradient and barycentric grids (most of the volume's
+    /// @brief Frees the fine band's phi and gradient grids (most of the volume's
     ///        memory), keeping the triangle grid, the far field, the options and reach():
     ///        what a renderer still reads once it has copied the distances it samples
     ///        (render::DistanceField). For a program that only renders from it.
@@ -75,7 +73,7 @@ struct SurfaceVolume {
     /// @brief Whether releaseSampledGrids() has emptied it (no renderer can be built from it then).
     bool released() const { return !gradient; }
 
-    /// @brief Lattice of the fine grids (phi, triangle, barycentric).
+    /// @brief Lattice of the fine grids (phi, triangle, gradient).
     BoxLattice lattice() const { return {options.resolution}; }
     /// @brief Lattice of the far field (farPhi).
     BoxLattice farLattice() const { return {options.farFieldResolution}; }

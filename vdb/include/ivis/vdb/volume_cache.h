@@ -10,7 +10,7 @@
 namespace ivis::vdb {
 
 /// @brief Version of the on-disk layout; a file with another version is stale.
-inline constexpr int kVolumeFormatVersion = 5;
+inline constexpr int kVolumeFormatVersion = 6;
 
 /// @brief What loadOrBuildVolume did.
 enum class CacheOutcome { Built, Reused, RebuiltStale, RebuiltCorrupt };
