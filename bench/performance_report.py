@@ -160,8 +160,10 @@ creep through the last half voxel to the landing. What makes the frames as fast 
   ([decisions/tangent-planes.md](decisions/tangent-planes.md)).
 - **Band bricks** (`render/include/ivis/render/band_bricks.h`): the fine band copied into bricks of
   9^3 interleaved (phi, gradient) voxels, a cell's eight corners four cache lines of one brick.
-- **Huge pages** (`core/include/ivis/core/huge_page_allocator.h`) for the image, its layers, the far
-  copy and the bricks.
+- **Fresh memory faulted in on both cores** (`core/include/ivis/core/large_block.h`) for the
+  image, its layers, the far copy and the bricks, in 4 KiB pages: on this machine transparent huge
+  pages made the first touch slower and the frames no faster
+  ([decisions/page-size.md](decisions/page-size.md)).
 - **The hull search** in groups of 8 view rays cleared by one cone, refined by regula falsi.
 - **Shadow rays** end where they leave the surface's box for good.
 

@@ -33,7 +33,7 @@ BandBricks::BandBricks(const openvdb::FloatGrid& phi, const openvdb::Vec3SGrid& 
     }
 
     constexpr int kVoxels = kEdge * kEdge * kEdge;
-    mVoxels = core::makeHugePageArray<glm::vec4>(origins.size() * kVoxels);
+    mVoxels = core::makeLargeBlockArray<glm::vec4>(origins.size() * kVoxels);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size()), [&](const tbb::blocked_range<std::size_t>& range) {
         auto phiAccessor = phi.getConstAccessor();

@@ -19,7 +19,7 @@ DenseGrid::DenseGrid(const openvdb::FloatGrid& phi, const openvdb::Vec3SGrid& gr
     const openvdb::Vec3d origin = phi.indexToWorld(box.min());
     mOrigin = glm::vec3(origin.x(), origin.y(), origin.z());
     const std::size_t count = std::size_t(dims.x()) * dims.y() * dims.z();
-    mVoxels = core::makeHugePageArray<glm::vec4>(count);  // filled below, slab by slab in parallel, never zeroed first
+    mVoxels = core::makeLargeBlockArray<glm::vec4>(count);  // filled below, slab by slab in parallel, never zeroed first
     tbb::parallel_for(box.min().z(), box.max().z() + 1, [&](int z) {
         auto phiAccessor = phi.getConstAccessor();
         auto gradientAccessor = gradient.getConstAccessor();

@@ -4,7 +4,7 @@
 /// @note Colours are premultiplied by alpha (the OpenEXR convention); row 0 is the TOP row.
 #pragma once
 
-#include <ivis/core/huge_page_allocator.h>
+#include <ivis/core/large_block.h>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -29,10 +29,10 @@ std::uint8_t srgbByteFromLinear(float linear);
 /// @brief linearFromSrgb applied to each channel.
 glm::vec3 linearFromSrgb(const glm::vec3& encoded);
 
-/// @brief Storage of an image's pixels (large ones on huge pages).
-using PixelBuffer = std::vector<glm::vec4, HugePageAllocator<glm::vec4>>;
-/// @brief Storage of one layer channel (large ones on huge pages).
-using Channel = std::vector<float, HugePageAllocator<float>>;
+/// @brief Storage of an image's pixels (large ones faulted in on every core: large_block.h).
+using PixelBuffer = std::vector<glm::vec4, LargeBlockAllocator<glm::vec4>>;
+/// @brief Storage of one layer channel (large ones faulted in on every core: large_block.h).
+using Channel = std::vector<float, LargeBlockAllocator<float>>;
 
 /// @brief A width x height grid of linear-light RGBA pixels (premultiplied alpha), row 0 at the top.
 class Image {

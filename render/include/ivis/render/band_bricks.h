@@ -6,7 +6,7 @@
 ///        them over two trees and up to eight leaves.
 #pragma once
 
-#include <ivis/core/huge_page_allocator.h>
+#include <ivis/core/large_block.h>
 
 #include <openvdb/openvdb.h>
 
@@ -46,7 +46,7 @@ private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);
     std::vector<std::uint64_t> mKeys;    ///< open addressing, linear probing; kEmpty = free slot
     std::vector<std::uint32_t> mBricks;  ///< brick index of each used slot
-    core::HugePageArray<glm::vec4> mVoxels;  ///< brick after brick, kEdge^3 voxels each (filled in parallel, never zeroed first)
+    core::LargeBlockArray<glm::vec4> mVoxels;  ///< brick after brick, kEdge^3 voxels each (filled in parallel, never zeroed first)
 };
 
 inline std::size_t BandBricks::slot(std::uint64_t key) const

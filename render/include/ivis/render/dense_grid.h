@@ -4,7 +4,7 @@
 ///        bend smoothly) and a phi consistent with it.
 #pragma once
 
-#include <ivis/core/huge_page_allocator.h>
+#include <ivis/core/large_block.h>
 
 #include <openvdb/openvdb.h>
 
@@ -48,7 +48,7 @@ private:
     /// Cell origin index and fractional position of p; false when the cell is outside the box.
     bool locate(const glm::vec3& p, std::size_t& base, glm::vec3& t) const;
 
-    core::HugePageArray<glm::vec4> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
+    core::LargeBlockArray<glm::vec4> mVoxels;  ///< (phi, gradient) per voxel, x fastest, then y, then z
     int mDims[3] = {0, 0, 0};
     glm::vec3 mOrigin{0.0f};  ///< world position of voxel (0,0,0) of the box
     float mVoxelSize = 1.0f;
