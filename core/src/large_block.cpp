@@ -9,6 +9,7 @@ namespace ivis::core {
 
 void* allocateLarge(std::size_t bytes)
 {
+    if (bytes > std::size_t(-1) - kLargeBlockAlignment) throw std::bad_alloc();  // its rounding up would wrap
     const std::size_t size = (std::max<std::size_t>(bytes, 1) + kLargeBlockAlignment - 1) / kLargeBlockAlignment *
                              kLargeBlockAlignment;
     void* block = std::aligned_alloc(kLargeBlockAlignment, size);

@@ -25,6 +25,9 @@ TEST(LargeBlockAllocator, BlocksStartOnACacheLineAndHoldTheirValues)
     for (std::size_t i = 0; i < kFaultInFrom; ++i) array[i] = std::uint32_t(i);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(array.get()) % kLargeBlockAlignment, 0u);
     EXPECT_EQ(array[kFaultInFrom - 1], kFaultInFrom - 1);
+    // A size whose rounding up to the alignment would wrap round is refused, not served small.
+    EXPECT_THROW(allocateLarge(std::size_t(-1) - 10), std::bad_alloc);
+    EXPECT_THROW(LargeBlockAllocator<double>().allocate(std::size_t(-1) / 4), std::bad_alloc);
 }
 
 // A large block comes with every page of it resident (faulted in before it is returned), as the
