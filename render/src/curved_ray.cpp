@@ -189,26 +189,34 @@ bool goldenMinimumNear(LineSampler& line, float tEnter, float tExit, float guess
 
 /// A march along @a line within [tEnter, tExit] every @a step or farther, from the least phi
 /// @a best seen so far (at @a tBest), which it lowers: phi is 1-Lipschitz, so nothing before
-/// t + (phi - best) comes below best (or below the hull, while best is the hull offset).
+/// t + (phi - best) comes below best (or below the hull, while best is the hull offset), nor
+/// anything in the rest of a far cell whose quartic is bounded below by best (LineSampler::skipAbove).
 void marchForLeast(LineSampler& line, float tEnter, float tExit, float step, float& best, float& tBest)
 {
-    for (float t = tEnter; t < tExit;) {
-        const float phi = line.phi(t);
+    for (float t = tEnter, lastStep = tExit - tEnter; t < tExit;) {
+        const float phi = line.phiMarching(t, lastStep);
         if (phi < best) best = phi, tBest = t;
-        t += std::max(phi - best, step);
+        const float next = line.skipAbove(t, t + std::max(phi - best, step), best);
+        lastStep = next - t;
+        t = next;
     }
 }
 
-/// findClosestApproach from the fine march on, @a best (at @a tBest) bounding the least phi from above.
+/// findClosestApproach from the fine march on, @a best (at @a tBest) bounding the least phi from
+/// above; @a bestIsMinimum when tBest is a golden-section minimum already, which stands unless the
+/// march finds less.
 bool closestApproachFrom(LineSampler& line, float hullOffset, float tEnter, float tExit, float best, float tBest,
-                         glm::vec3& seed, float& distance, float* bottom)
+                         bool bestIsMinimum, glm::vec3& seed, float& distance, float* bottom)
 {
     const float tolerance = kClosestApproachSpacing * line.sampler().field().voxelSize();
+    const float before = best;
     marchForLeast(line, tEnter, tExit, tolerance, best, tBest);
     if (!(best < hullOffset)) return false;
     // Golden-section search for the minimum around the best sample.
-    const float tMin =
-        goldenMinimum(line, std::max(tEnter, tBest - 2.0f * tolerance), std::min(tExit, tBest + 2.0f * tolerance));
+    const float tMin = bestIsMinimum && best == before
+                           ? tBest
+                           : goldenMinimum(line, std::max(tEnter, tBest - 2.0f * tolerance),
+                                           std::min(tExit, tBest + 2.0f * tolerance));
     if (bottom) *bottom = tMin;
     return valleyCentre(line, hullOffset, tEnter, tExit, tMin, seed, distance);
 }
@@ -226,7 +234,7 @@ bool findClosestApproach(DistanceField::Sampler& sampler, const glm::vec3& origi
     // skips by phi - best from the start instead of creeping down the slope toward it.
     float best = hullOffset, tBest = tEnter;
     marchForLeast(line, tEnter, tExit, kClosestApproachCoarseSteps * tolerance, best, tBest);
-    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, seed, distance, bottom);
+    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, false, seed, distance, bottom);
 }
 
 bool findClosestApproachHinted(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,
@@ -236,16 +244,20 @@ bool findClosestApproachHinted(DistanceField::Sampler& sampler, const glm::vec3&
     float tEnter, tExit;
     if (!core::rayBoxInterval(origin, direction, hullBox, tEnter, tExit)) return false;
     LineSampler line(sampler, origin, direction);
+    const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
     float best = hullOffset, tBest = tEnter, tHint;
+    bool insideBracket = false;  // a minimum strictly inside the hint's bracket, not at its end
     if (goldenMinimumNear(line, tEnter, tExit, bottomHint, reach, tHint)) {
         const float phiHint = line.phi(tHint);
-        if (phiHint < best) best = phiHint, tBest = tHint;
+        if (phiHint < best) {
+            best = phiHint, tBest = tHint;
+            insideBracket = std::abs(tHint - bottomHint) < reach - tolerance && tHint > tEnter + tolerance &&
+                            tHint < tExit - tolerance;
+        }
     }
-    if (!(best < hullOffset)) {  // nothing near the hint: the coarse march after all
-        const float tolerance = kClosestApproachSpacing * sampler.field().voxelSize();
+    if (!(best < hullOffset))  // nothing near the hint: the coarse march after all
         marchForLeast(line, tEnter, tExit, kClosestApproachCoarseSteps * tolerance, best, tBest);
-    }
-    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, seed, distance, bottom);
+    return closestApproachFrom(line, hullOffset, tEnter, tExit, best, tBest, insideBracket, seed, distance, bottom);
 }
 
 bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& origin, const glm::vec3& direction,

@@ -170,6 +170,23 @@ struct LineQuartic {
         const float u = s - s0;
         return (((c[4] * u + c[3]) * u + c[2]) * u + c[1]) * u + c[0];
     }
+    /// @brief A lower bound of the quartic on the parameters [@a from, @a to]: the least of its
+    ///        Bernstein coefficients there (the quartic lies within their convex hull).
+    float lowerBound(float from, float to) const
+    {
+        // Taylor coefficients at from (Horner's shifts), then scaled to the interval's length.
+        const float u = from - s0, length = to - from;
+        float d[5] = {c[0], c[1], c[2], c[3], c[4]};
+        for (int k = 0; k < 4; ++k)
+            for (int j = 3; j >= k; --j) d[j] += u * d[j + 1];
+        float scale = length;
+        for (int k = 1; k <= 4; ++k, scale *= length) d[k] *= scale;
+        const float b1 = d[0] + 0.25f * d[1];
+        const float b2 = d[0] + 0.5f * d[1] + d[2] * (1.0f / 6.0f);
+        const float b3 = d[0] + 0.75f * d[1] + 0.5f * d[2] + 0.25f * d[3];
+        const float b4 = d[0] + d[1] + d[2] + d[3] + d[4];
+        return std::min(std::min(std::min(d[0], b1), std::min(b2, b3)), b4);
+    }
 };
 
 // The samplers below are inline: curved rays call them at every step.

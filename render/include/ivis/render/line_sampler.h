@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace ivis::render {
@@ -25,7 +27,7 @@ public:
         : mSampler(sampler), mOrigin(origin), mDirection(direction), mFineUntil(sampler.field().fineUntil()),
           // Without a separate band the dense grid is the fine grid itself: a line crosses its cells
           // with a few samples each, which a quartic does not repay.
-          mQuartics(sampler.field().hasFineBand())
+          mHalfFarCell(0.5f * sampler.field().farGrid().voxelSize()), mQuartics(sampler.field().hasFineBand())
     {
     }
 
@@ -35,6 +37,29 @@ public:
         if (!mQuartic.covers(s)) return mQuartics ? phiBeyondQuartic(s) : mSampler.phi(point(s));
         const float far = mQuartic.at(s);
         return far > mFineUntil ? far : mSampler.phi(point(s));  // below fineUntil the band serves
+    }
+    /// @brief phi() for a march whose last step was @a lastStep: after a step shorter than half a
+    ///        far cell the next is likely in the same cell too, so a new cell's quartic is made at
+    ///        once, at its first sample.
+    [[gnu::always_inline]] float phiMarching(float s, float lastStep)
+    {
+        if (mQuartic.covers(s) || !mQuartics || !(lastStep < mHalfFarCell)) return phi(s);
+        const glm::vec3 p = point(s);
+        const DenseGrid& far = mSampler.field().farGrid();
+        mLastCell = far.cellIndex(p);
+        if (mLastCell < 0 || !far.lineQuartic(mOrigin, mDirection, s, mQuartic)) return mSampler.phi(p);
+        const float value = mQuartic.at(s);
+        return value > mFineUntil ? value : mSampler.phi(p);
+    }
+    /// @brief Where a march that keeps only samples below @a best goes on after sampling @a s, at
+    ///        @a next or beyond: the end of the far cell holding s when its quartic is at or above
+    ///        best from s to there (bounded below: LineQuartic::lowerBound) and above fineUntil (so
+    ///        that the quartic alone serves), else @a next.
+    float skipAbove(float s, float next, float best) const
+    {
+        if (next >= mQuartic.hi || !mQuartic.covers(s)) return next;
+        const float floor = std::max(best, std::nextafter(mFineUntil, 1.0f));
+        return mQuartic.lowerBound(s, mQuartic.hi) >= floor ? mQuartic.hi : next;
     }
     /// @brief The point of the line at parameter @a s.
     glm::vec3 point(float s) const { return mOrigin + s * mDirection; }
@@ -63,6 +88,7 @@ private:
     float mFineUntil;                   ///< the field's fineUntil()
     LineQuartic mQuartic;               ///< the far cell sampled twice most recently
     std::ptrdiff_t mLastCell = -1;      ///< the far cell of the last sample the sampler served
+    float mHalfFarCell;                 ///< half the far field's voxel size
     bool mQuartics;                     ///< whether the far cells are coarse enough for quartics
 };
 
