@@ -2,12 +2,17 @@
 // at least 90% seen, at least 0.9 of it in one region and that region's outline at most 1.6 times
 // its hull's; a view failing any one of them, or showing no hot spot, fails. Which way each hot
 // spot faces, the views that put one in the middle of the far side, which the rule skips, and the
-// views that show every hot spot side-on, which it tries where none of the search's views reads.
+// views that show every hot spot side-on, which it tries where none of the search's views reads;
+// a picture judged whole (hotSpotsReadIn), as the readable rule asks where the rule chose the view.
+#include "render/scene_fixture.h"
+
 #include <ivis/optimize/hot_spot_rule.h>
 
 #include <ivis/core/hot_spots.h>
+#include <ivis/core/errors.h>
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_registry.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -49,6 +54,28 @@ core::Camera cameraFrom(const glm::dvec3& direction)
     camera.eye = 3.0 * glm::normalize(direction);
     camera.up = std::abs(glm::normalize(direction).y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
     return camera;
+}
+
+// One hot spot on the unit sphere, pictured by the front view alone: seen face on it is one round
+// disc, wholly seen; from the opposite side it is not seen at all.
+TEST(HotSpotRule, APictureIsJudgedWhole)
+{
+    core::SurfaceField sphere = core::makeSphere(4);
+    const core::HotSpots spots = core::placeHotSpots(sphere.mesh, 1);
+    sphere.values = core::hotSpotValues(sphere.mesh, spots);
+    const test::SceneFixture fixture(sphere, 100);
+    EnergyOptions options;
+    options.reveal = true;
+    options.importanceRange = {0.0f, 1.0f};
+    const EnergyEvaluator measure(*fixture.scene, options);
+    ASSERT_EQ(measure.revealMeasure()->regionCount(), 1u);
+    const render::MethodPtr front = render::makeMethod("front");
+    const glm::dvec3 towardSpot(spots.centres[0]);
+    EXPECT_TRUE(hotSpotsReadIn(measure, cameraFrom(towardSpot), front, 200));
+    EXPECT_FALSE(hotSpotsReadIn(measure, cameraFrom(-towardSpot), front, 200));
+    EXPECT_THROW(hotSpotsReadIn(EnergyEvaluator(*fixture.scene, EnergyOptions{}), cameraFrom(towardSpot), front, 200),
+                 ValueError)
+        << "no reveal measured";
 }
 
 // On the unit sphere each of the two opposite hot spots is a cap: by symmetry its mean normal

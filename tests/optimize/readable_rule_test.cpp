@@ -154,6 +154,24 @@ TEST(ReadableRule, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     const ReadableSetting tighter = loosestReadable(scene, camera, wrap, kSize, between);
     EXPECT_LT(stableShift(*tighter.method), ladder[own]);
     expectChosenRung(tighter, between);
+    // A rung looser than the method's own must also pass `keeps`, asked from the loosest down; the
+    // own rung and tighter ones are never asked. Any coherence: the loosest rung that keeps.
+    std::vector<float> asked;
+    const auto keepsUpTo = [&](float limit) {
+        return [&asked, limit](const render::MethodPtr& method) {
+            asked.push_back(stableShift(*method));
+            return stableShift(*method) <= limit;
+        };
+    };
+    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1e-6, keepsUpTo(ladder[own + 2])).method),
+                    ladder[own + 2]);
+    EXPECT_EQ(asked, std::vector<float>(ladder.rbegin(), ladder.rend() - std::ptrdiff_t(own + 2)));
+    asked.clear();
+    EXPECT_EQ(loosestReadable(scene, camera, wrap, kSize, 1e-6, keepsUpTo(0.0f)).method, wrap) << "its own rung";
+    EXPECT_EQ(asked.size(), ladder.size() - own - 1);
+    asked.clear();
+    EXPECT_LT(stableShift(*loosestReadable(scene, camera, wrap, kSize, between, keepsUpTo(0.0f)).method), ladder[own]);
+    EXPECT_TRUE(asked.empty()) << "a rung at or below its own is not asked";
     // Perfect coherence is more than the tree's picture has one rung up: the tightest rung.
     ASSERT_LT(coherenceLowerBound(coherence[1]), 1.0);
     EXPECT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1.0).method), ladder.front());

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace ivis::optimize {
 
@@ -105,6 +106,28 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
     return views;
 }
 
+namespace {
+
+/// The hot spots' shapes and reveal in @a method's @a size x @a size picture from @a camera.
+std::pair<EnergyValue, std::vector<HotSpotShape>> hotSpotsIn(const EnergyEvaluator& measure, const core::Camera& camera,
+                                                             const render::MethodPtr& method, int size)
+{
+    render::RenderOptions options;
+    options.width = options.height = size;
+    options.method = method;
+    const render::RenderResult picture = render::renderImage(measure.scene(), camera, options);
+    return {measurePicture(measure, picture.layers), hotSpotShapes(*measure.revealMeasure(), picture.layers)};
+}
+
+}  // namespace
+
+bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, const render::MethodPtr& method, int size)
+{
+    if (!measure.revealMeasure()) throw ValueError("judging hot spots needs a measure of the hot-spot reveal");
+    const auto [value, shapes] = hotSpotsIn(measure, camera, method, size);
+    return hotSpotsReadAsOnePlace(value.reveal.perRegion, shapes);
+}
+
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
                                 int views, core::Interrupter* interrupter, std::size_t from)
 {
@@ -130,12 +153,7 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
             continue;
         if (interrupter && interrupter->wasInterrupted()) throw Cancelled("hot-spot rule cancelled");
         judged.push_back(index);
-        render::RenderOptions options;
-        options.width = options.height = kHotSpotPictureSize;
-        options.method = view.method;
-        const render::RenderResult picture = render::renderImage(measure.scene(), view.camera, options);
-        const EnergyValue value = measurePicture(measure, picture.layers);
-        std::vector<HotSpotShape> shapes = hotSpotShapes(*measure.revealMeasure(), picture.layers);
+        auto [value, shapes] = hotSpotsIn(measure, view.camera, view.method, kHotSpotPictureSize);
         if (!hotSpotsReadAsOnePlace(value.reveal.perRegion, shapes)) continue;
         choice.chosen = index;
         choice.shapes = std::move(shapes);

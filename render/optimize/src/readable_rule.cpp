@@ -113,7 +113,8 @@ std::vector<float> readableRuleLadder(const render::Method& method)
 }
 
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
-                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence)
+                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence,
+                                const std::function<bool(const render::MethodPtr&)>& keeps)
 {
     if (size.x < 1 || size.y < 1) throw ValueError("the readable rule needs a positive size");
     if (!(minCoherence > 0.0 && minCoherence <= 1.0)) throw ValueError("the minimum coherence must lie in (0, 1]");
@@ -124,9 +125,14 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
         coherenceAtSettings(scene, camera, *method, size, std::max(1, size.y / kSampledLines), ladder);
     std::size_t chosen = 0;
     while (chosen + 1 < ladder.size() && coherenceLowerBound(coherence[chosen + 1]) >= minCoherence) ++chosen;
+    const float own = method->values().at(parameter).at(0);
+    const auto atRung = [&](std::size_t k) {
+        return ladder[k] == own ? method : render::withValues(*method, {{parameter, {ladder[k]}}});
+    };
+    if (keeps)
+        while (ladder[chosen] > own && !keeps(atRung(chosen))) --chosen;
     const bool keepsMinimum = coherenceLowerBound(coherence[chosen]) >= minCoherence;
-    if (ladder[chosen] == method->values().at(parameter).at(0)) return {method, coherence[chosen], size, keepsMinimum};
-    return {render::withValues(*method, {{parameter, {ladder[chosen]}}}), coherence[chosen], size, keepsMinimum};
+    return {atRung(chosen), coherence[chosen], size, keepsMinimum};
 }
 
 nlohmann::json readableSettingJson(const optimize::ReadableSetting& setting)

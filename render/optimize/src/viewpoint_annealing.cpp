@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <numeric>
+#include <optional>
 #include <random>
 
 namespace ivis::optimize {
@@ -174,11 +176,12 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         result.evaluations += polished.evaluations;
         measured(best, polished, best.camera, true);
     }
+    std::optional<EnergyEvaluator> hotSpotMeasure;  // the hot-spot rule's, where it ran
     if (options.hotSpotViews > 0 && evaluator.options().kind == EnergyKind::Scalar) {
         EnergyOptions judged;  // the reported measures' grid, with the energy's importance
         judged.reveal = true;
         judged.importanceRange = evaluator.options().importanceRange;
-        const EnergyEvaluator measure(evaluator.scene(), judged);
+        const EnergyEvaluator& measure = hotSpotMeasure.emplace(evaluator.scene(), judged);
         if (measure.revealMeasure() && measure.revealMeasure()->regionCount() > 0) {
             result.hotSpots = chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter);
             if (!result.hotSpots->chosen) {
@@ -199,8 +202,18 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     }
     if (options.readableResolution > 0 && !start->info().readableRuleParameter.empty()) {
         VisitedView& best = result.visited[result.best];
+        // Where the hot-spot rule chose the view, a looser rule must keep its hot spots one place,
+        // judged at the measure's size (a looser rule draws more of a ring's outer edge, which
+        // can carry a sliver of a hot spot apart from the rest).
+        std::function<bool(const render::MethodPtr&)> keepsHotSpots;
+        if (result.hotSpots && result.hotSpots->chosen)
+            keepsHotSpots = [&](const render::MethodPtr& method) {
+                return hotSpotsReadIn(*hotSpotMeasure, cameraAt(best.thetaDeg, best.phiDeg, *method), method,
+                                      options.readableResolution);
+            };
         result.readable = loosestReadable(evaluator.scene(), best.camera, best.method,
-                                          {options.readableResolution, options.readableResolution}, options.minCoherence);
+                                          {options.readableResolution, options.readableResolution}, options.minCoherence,
+                                          keepsHotSpots);
         if (result.readable->method != best.method) {
             best.method = result.readable->method;
             best.camera = cameraAt(best.thetaDeg, best.phiDeg, *best.method);

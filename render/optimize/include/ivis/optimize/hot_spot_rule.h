@@ -86,6 +86,10 @@ struct HotSpotChoice {
 ///        ratio of at most kMaxHotSpotOutline (false without any region).
 bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes);
 
+/// @brief Whether every hot spot (counted as @a measure, an evaluator with the reveal, counts them)
+///        reads as one place (hotSpotsReadAsOnePlace) in @a method's @a size x @a size picture from @a camera.
+bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, const render::MethodPtr& method, int size);
+
 /// @brief The hot-spot rule over @a visited from index @a from on: the search's best view (@a best)
 ///        first where it is among them, then the others by energy, at most @a views views, each at
 ///        least kHotSpotViewSeparationDeg from those judged before it and none with a hot spot facing

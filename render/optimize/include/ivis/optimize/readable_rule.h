@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace ivis::optimize {
@@ -63,9 +64,12 @@ std::vector<float> readableRuleLadder(const render::Method& method);
 ///        the pairs of every (height / 200)-th row and column: the method's own rule is loosened
 ///        where its picture has room in coherence and tightened where it has none. A method without such a
 ///        parameter is returned as it is, nothing measured; a method at the chosen value itself.
+/// @param keeps if given, a rung looser than the method's own must also pass it (asked of the
+///        chosen rung, then of each tighter one down to the method's own value, which needs not)
 /// @throw ValueError for a size below 1 or a minimum coherence outside (0, 1]
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
-                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence);
+                                const render::MethodPtr& method, const glm::ivec2& size, double minCoherence,
+                                const std::function<bool(const render::MethodPtr&)>& keeps = {});
 
 /// @brief What the readable rule chose, as --stats-json reports it: {"parameter", "value",
 ///        "estimated_coherence", "sampled_pairs", "picture_size", "keeps_min_coherence"}.
