@@ -150,7 +150,8 @@ creep through the last half voxel to the landing. What makes the frames as fast 
   7% faster, the default method's 3-5%: [decisions/simd-blend.md](decisions/simd-blend.md)).
 - **phi along a view ray from quartics** (`render/include/ivis/render/line_sampler.h`): the seed
   search's samples of one far cell after its first come from the quartic the blend is along the
-  ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200).
+  ray there, a few multiply-adds each, equal to the blend up to rounding (volumes above 200);
+  the marches skip the rest of a cell whose quartic is bounded below by the least phi found so far.
   What the seed search costs and what these two change:
   [decisions/seed-search-cost.md](decisions/seed-search-cost.md).
 - **Tangent planes near the landing** ([rendering.md](rendering.md)): above volume 200, below a
