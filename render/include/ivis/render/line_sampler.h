@@ -9,8 +9,6 @@
 
 #include <glm/vec3.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 
 namespace ivis::render {
@@ -43,13 +41,8 @@ public:
     ///        once, at its first sample.
     [[gnu::always_inline]] float phiMarching(float s, float lastStep)
     {
-        if (mQuartic.covers(s) || !mQuartics || !(lastStep < mHalfFarCell)) return phi(s);
-        const glm::vec3 p = point(s);
-        const DenseGrid& far = mSampler.field().farGrid();
-        mLastCell = far.cellIndex(p);
-        if (mLastCell < 0 || !far.lineQuartic(mOrigin, mDirection, s, mQuartic)) return mSampler.phi(p);
-        const float value = mQuartic.at(s);
-        return value > mFineUntil ? value : mSampler.phi(p);
+        if (mQuartic.covers(s) || !mQuartics) return phi(s);
+        return phiBeyondQuartic(s, lastStep < mHalfFarCell);
     }
     /// @brief Where a march that keeps only samples below @a best goes on after sampling @a s, at
     ///        @a next or beyond: the end of the far cell holding s when its quartic is at or above
@@ -58,8 +51,8 @@ public:
     float skipAbove(float s, float next, float best) const
     {
         if (next >= mQuartic.hi || !mQuartic.covers(s)) return next;
-        const float floor = std::max(best, std::nextafter(mFineUntil, 1.0f));
-        return mQuartic.lowerBound(s, mQuartic.hi) >= floor ? mQuartic.hi : next;
+        const float bound = mQuartic.lowerBound(s, mQuartic.hi);
+        return bound >= best && bound > mFineUntil ? mQuartic.hi : next;
     }
     /// @brief The point of the line at parameter @a s.
     glm::vec3 point(float s) const { return mOrigin + s * mDirection; }
@@ -68,17 +61,17 @@ public:
 
 private:
     /// phi at a parameter outside the quartic's cell, where quartics serve: the sampler's, or a new
-    /// cell's quartic at the cell's second sample.
-    [[gnu::noinline]] float phiBeyondQuartic(float s)
+    /// cell's quartic at the cell's second sample (at its first when @a eager).
+    [[gnu::noinline]] float phiBeyondQuartic(float s, bool eager = false)
     {
         const glm::vec3 p = point(s);
         const DenseGrid& far = mSampler.field().farGrid();
         const std::ptrdiff_t cell = far.cellIndex(p);
+        const bool again = cell == mLastCell;
+        mLastCell = cell;
         // A cell's first sample (a march may cross it with one) is not worth its quartic.
-        if (cell < 0 || cell != mLastCell || !far.lineQuartic(mOrigin, mDirection, s, mQuartic)) {
-            mLastCell = cell;
+        if (cell < 0 || !(again || eager) || !far.lineQuartic(mOrigin, mDirection, s, mQuartic))
             return mSampler.phi(p);
-        }
         const float value = mQuartic.at(s);
         return value > mFineUntil ? value : mSampler.phi(p);
     }
@@ -86,8 +79,8 @@ private:
     DistanceField::Sampler& mSampler;
     glm::vec3 mOrigin, mDirection;
     float mFineUntil;                   ///< the field's fineUntil()
-    LineQuartic mQuartic;               ///< the far cell sampled twice most recently
-    std::ptrdiff_t mLastCell = -1;      ///< the far cell of the last sample the sampler served
+    LineQuartic mQuartic;               ///< the quartic of the far cell sampled last where one was made
+    std::ptrdiff_t mLastCell = -1;      ///< the far cell of the last sample outside mQuartic's cell
     float mHalfFarCell;                 ///< half the far field's voxel size
     bool mQuartics;                     ///< whether the far cells are coarse enough for quartics
 };
