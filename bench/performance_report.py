@@ -135,7 +135,9 @@ its neighbours do not show it stable, the stability rule traces two probes: in t
 (counted with `--fov 75 --stable-shift 0.1` on 2026-11-29) 309,000 pixels' own rays took 29.5 M
 steps and 175,000 probes of 87,000 pixels 24.5 M, 45% of the steps (which pixels are probed since:
 [decisions/stability-probes-cost.md](decisions/stability-probes-cost.md)). A fifth of the steps
-creep through the last half voxel to the landing. What makes the frames as fast as they are:
+creep through the last half voxel to the landing. The drawn rays' flights with the front picture
+alone take about what the 0.5 s target allows the whole frame
+([decisions/frame-floor.md](decisions/frame-floor.md)). What makes the frames as fast as they are:
 - **Adaptive image sampling** of the wrap ([rendering.md](rendering.md)): seeds sought near the
   lattice's valley bottoms, the lattice's own searches started from their blocks' corners' bottoms
   (volumes above 200), background blocks skipped, the stability rule's probes only where needed.

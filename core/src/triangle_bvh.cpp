@@ -27,8 +27,8 @@ constexpr int kTestedTogether = 8;
 /// State of one closest-point query: the best triangle so far and the triangles visited since the
 /// last test.
 struct ClosestSearch {
-    const TriangleMesh* mesh;
-    glm::dvec3 p;
+    const TriangleMesh* mesh = nullptr;
+    glm::dvec3 p{0.0};
     TrianglePoint best;
     int triangle = -1;
     float radius = 0.0f;  ///< the query's radius as it stands
@@ -163,7 +163,9 @@ RayHit TriangleBvh::intersect(const glm::vec3& origin, const glm::vec3& directio
 
 TrianglePoint TriangleBvh::closestPoint(const glm::dvec3& p, double radius, int& triangle) const
 {
-    ClosestSearch search{mImpl->mesh, p, {}, -1};
+    ClosestSearch search;
+    search.mesh = mImpl->mesh;
+    search.p = p;
     search.best.distanceSquared = std::numeric_limits<double>::infinity();
     RTCPointQuery query;
     query.x = float(p.x);
