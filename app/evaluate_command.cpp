@@ -27,7 +27,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -202,11 +201,7 @@ Command addEvaluateCommand(CLI::App& app)
                                      " name the same path (one is a folder of pictures, the other a file)");
         }
         nlohmann::json results = nlohmann::json::object();
-        if (options->resume && std::filesystem::exists(options->json)) {
-            std::ifstream in(options->json);
-            results = nlohmann::json::parse(in, nullptr, false);
-            if (!results.is_object()) throw InputError(options->json + ": not the JSON of an evaluation (--resume)");
-        }
+        if (options->resume && std::filesystem::exists(options->json)) results = readEvaluationJson(options->json);
         // What the figures depend on, kept in every entry: merge and --resume join only entries of one evaluation.
         if (options->views > 1 && optimize::parseEnergyKind(options->optimization.energy) != optimize::EnergyKind::Visibility)
             throw ValueError("--views chooses views by the surface they show together: it needs --energy visibility");
@@ -235,8 +230,6 @@ Command addEvaluateCommand(CLI::App& app)
                 of["mesh hash"] = core::toHex(core::meshHash(core::loadSurface(mesh, options->mesh.load).mesh));
             }
         for (const auto& [stem, methods] : results.items()) {
-            if (!methods.is_object())
-                throw InputError(options->json + ": '" + stem + "' is not an object of methods (--resume)");
             const bool evaluated = settingsOf.count(stem) > 0;  // else kept as it is: only the run's settings
             for (const auto& [method, entry] : methods.items())
                 if (const std::string difference = settingsDifference(

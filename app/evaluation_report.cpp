@@ -1,7 +1,14 @@
 #include "evaluation_report.h"
 
+#include <ivis/core/errors.h>
+#include <ivis/core/json_text.h>
+#include <ivis/render/method_registry.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -116,7 +123,69 @@ std::string secondsTable(const nlohmann::json& results, const ReportLayout& layo
     return text.str();
 }
 
+/// Why @a entry (of method @a method) is not one evaluate writes, or "": a known method, its
+/// measures numbers from 0 to 1, its seconds keyed by resolutions, its display resolution (when
+/// given) a whole number of pixels.
+std::string entryProblem(const std::string& method, const nlohmann::json& entry)
+{
+    const std::vector<std::string> methods = render::methodNames();
+    if (std::find(methods.begin(), methods.end(), method) == methods.end()) return "no method is named " + method;
+    if (!entry.is_object() || !entry.contains("seconds") || !entry.at("seconds").is_object())
+        return "it holds no evaluation";
+    for (const char* key : {"visibility", "front_visibility", "voxel_visibility", "paper_literal", "coherence"}) {
+        const nlohmann::json* value = entry.contains(key) ? &entry.at(key) : nullptr;
+        if (value == nullptr || !value->is_number() || !(value->get<double>() >= 0.0 && value->get<double>() <= 1.0))
+            return std::string("its ") + key + " is not a number from 0 to 1";
+    }
+    for (const auto& [resolution, seconds] : entry.at("seconds").items())
+        if (resolution.empty() || resolution.find_first_not_of("0123456789") != std::string::npos ||
+            resolution.size() > 5 || !seconds.is_number())
+            return "its seconds are not numbers keyed by resolutions";
+    if (entry.contains("display_res")) {
+        const nlohmann::json& pixels = entry.at("display_res");
+        if (!pixels.is_number_integer() || !(pixels.get<long long>() >= 1 && pixels.get<long long>() <= 100000))
+            return "its display_res is not a whole number of pixels";
+    }
+    return "";
+}
+
 }  // namespace
+
+nlohmann::json detail::parseEvaluationJson(const std::string& path, const std::string& text)
+{
+    nlohmann::json results = nlohmann::json::parse(text, nullptr, false);
+    if (!results.is_object()) throw InputError(path + ": not the JSON of an evaluation");
+    ReportLayout layout;
+    std::set<int> resolutions;
+    for (const auto& [stem, methods] : results.items()) {
+        if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
+        layout.stems.push_back(stem);
+        for (const auto& [method, entry] : methods.items()) {
+            if (const std::string problem = entryProblem(method, entry); !problem.empty())
+                throw InputError(path + ": " + stem + ":" + method + " is not an evaluation's (" + problem + ")");
+            if (std::find(layout.methods.begin(), layout.methods.end(), method) == layout.methods.end())
+                layout.methods.push_back(method);
+            for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
+        }
+    }
+    layout.optResolutions.assign(resolutions.begin(), resolutions.end());
+    try {
+        evaluationMarkdown(results, layout);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(path + ": not the JSON of an evaluation (" + core::jsonErrorWords(e) + ")");
+    }
+    return results;
+}
+
+nlohmann::json readEvaluationJson(const std::string& path)
+{
+    if (std::filesystem::is_directory(path)) throw InputError(path + ": a folder, not an evaluate --json file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + (std::filesystem::exists(path) ? ": cannot open" : ": file not found"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return detail::parseEvaluationJson(path, text.str());
+}
 
 std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout& layout)
 {

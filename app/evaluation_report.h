@@ -34,4 +34,15 @@ std::string evaluationMarkdown(const nlohmann::json& results, const ReportLayout
 ///        artery's pressure and hot spots elsewhere
 std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b, bool sameMesh);
 
+/// @brief The results of an evaluate --json file (results[stem][method]), every entry checked as
+///        evaluate writes it and its tables made once, so that anything amiss is found on reading.
+/// @throw InputError naming @a path (and the entry) when it is a folder, missing, unreadable, or
+///        not an evaluation's JSON
+nlohmann::json readEvaluationJson(const std::string& path);
+
+namespace detail {
+/// @brief readEvaluationJson of the file's bytes @a text (the fuzz target's entry point).
+nlohmann::json parseEvaluationJson(const std::string& path, const std::string& text);
+}  // namespace detail
+
 }  // namespace ivis::app

@@ -3,81 +3,21 @@
 #include "commands.h"
 #include "evaluation_report.h"
 #include "json_output.h"
-#include "mesh_options.h"
 #include "output_files.h"
 
 #include <ivis/core/errors.h>
-#include <ivis/core/json_text.h>
 #include <ivis/render/method_registry.h>
 
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <iostream>
 #include <map>
-#include <utility>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ivis::app {
-namespace {
-
-/// Why @a entry (of method @a method) is not one evaluate writes, or "": a known method, its
-/// measures numbers from 0 to 1, its seconds keyed by resolutions.
-std::string entryProblem(const std::string& method, const nlohmann::json& entry)
-{
-    const std::vector<std::string> methods = render::methodNames();
-    if (std::find(methods.begin(), methods.end(), method) == methods.end()) return "no method is named " + method;
-    if (!entry.is_object() || !entry.contains("seconds") || !entry.at("seconds").is_object())
-        return "it holds no evaluation";
-    for (const char* key : {"visibility", "front_visibility", "voxel_visibility", "paper_literal", "coherence"}) {
-        const nlohmann::json* value = entry.contains(key) ? &entry.at(key) : nullptr;
-        if (value == nullptr || !value->is_number() || !(value->get<double>() >= 0.0 && value->get<double>() <= 1.0))
-            return std::string("its ") + key + " is not a number from 0 to 1";
-    }
-    for (const auto& [resolution, seconds] : entry.at("seconds").items())
-        if (resolution.empty() || resolution.find_first_not_of("0123456789") != std::string::npos ||
-            resolution.size() > 5 || !seconds.is_number())
-            return "its seconds are not numbers keyed by resolutions";
-    return "";
-}
-
-/// The results object of an evaluate --json file, each entry checked (and its tables made once,
-/// so that anything else amiss is found here, naming the file).
-nlohmann::json readPart(const std::string& path)
-{
-    if (std::filesystem::is_directory(path)) throw InputError(path + ": a folder, not an evaluate --json file");
-    std::ifstream in(path);
-    if (!in) throw InputError(path + (std::filesystem::exists(path) ? ": cannot open" : ": file not found"));
-    nlohmann::json part = nlohmann::json::parse(in, nullptr, false);
-    if (!part.is_object()) throw InputError(path + ": not the JSON of an evaluation");
-    if (part.empty()) throw InputError(path + ": holds no evaluation (an empty object)");  // made empty tables
-    ReportLayout layout;
-    std::set<int> resolutions;
-    for (const auto& [stem, methods] : part.items()) {
-        if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
-        layout.stems.push_back(stem);
-        for (const auto& [method, entry] : methods.items()) {
-            if (const std::string problem = entryProblem(method, entry); !problem.empty())
-                throw InputError(path + ": " + stem + ":" + method + " is not an evaluation's (" + problem + ")");
-            if (std::find(layout.methods.begin(), layout.methods.end(), method) == layout.methods.end())
-                layout.methods.push_back(method);
-            for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
-        }
-    }
-    layout.optResolutions.assign(resolutions.begin(), resolutions.end());
-    try {
-        evaluationMarkdown(part, layout);
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(path + ": not the JSON of an evaluation (" + core::jsonErrorWords(e) + ")");
-    }
-    return part;
-}
-
-}  // namespace
 
 Command addMergeCommand(CLI::App& app)
 {
@@ -100,12 +40,13 @@ Command addMergeCommand(CLI::App& app)
         ReportLayout layout;
         std::set<std::string> methodsSeen;
         std::set<int> resolutions;
-        std::vector<int> displayResolutions;
+        std::optional<std::pair<int, std::string>> display;  // the first entry's --display-res and its part
         std::map<std::string, std::string> source;  // "stem:method" -> the part that holds it
         // stem ("" for any) -> its first entry's "stem:method" and settings
         std::map<std::string, std::pair<std::string, nlohmann::json>> firstOf;
         for (const std::string& path : options->parts) {
-            const nlohmann::json part = readPart(path);
+            const nlohmann::json part = readEvaluationJson(path);
+            if (part.empty()) throw InputError(path + ": holds no evaluation (an empty object)");
             for (const auto& [stem, methods] : part.items()) {
                 if (!results.contains(stem)) {
                     results[stem] = nlohmann::json::object();
@@ -128,14 +69,16 @@ Command addMergeCommand(CLI::App& app)
                     results[stem][method] = entry;
                     methodsSeen.insert(method);
                     for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
-                    displayResolutions.push_back(entry.value("display_res", layout.displayResolution));
+                    const int pixels = entry.value("display_res", layout.displayResolution);
+                    if (!display) display.emplace(pixels, path);
+                    if (pixels != display->first)
+                        throw InputError(path + ": " + key + " was measured at --display-res " + std::to_string(pixels) +
+                                         " against " + std::to_string(display->first) + " in " + display->second +
+                                         "; merge parts of one evaluation");
                 }
             }
         }
-        if (std::adjacent_find(displayResolutions.begin(), displayResolutions.end(), std::not_equal_to<>()) !=
-            displayResolutions.end())
-            throw InputError("the parts were measured at different --display-res; merge parts of one evaluation");
-        if (!displayResolutions.empty()) layout.displayResolution = displayResolutions.front();
+        if (display) layout.displayResolution = display->first;
         for (const std::string& method : render::methodNames())  // the registry's order, as evaluate's default
             if (methodsSeen.erase(method)) layout.methods.push_back(method);
         layout.methods.insert(layout.methods.end(), methodsSeen.begin(), methodsSeen.end());

@@ -5,6 +5,7 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/hot_spots.h>
+#include <ivis/core/procedural_scenes.h>
 #include <ivis/render/method_registry.h>
 
 #include <cstdio>
@@ -15,7 +16,9 @@ namespace ivis::app {
 
 void MeshOptions::addTo(CLI::App& command, std::vector<std::string>* sources, const std::string& sourcesNote)
 {
-    const std::string help = "Mesh file (.obj .off .ply .stl .vtk .vtp .vtu) or scene:sphere|torus|vessel-tree";
+    std::string scenes;
+    for (const std::string& scene : core::sceneNames()) scenes += (scenes.empty() ? "scene:" : "|") + scene;
+    const std::string help = "Mesh file (.obj .off .ply .stl .vtk .vtp .vtu) or " + scenes;
     if (sources)
         command.add_option("meshes", *sources, help + "; " + sourcesNote)->required();
     else

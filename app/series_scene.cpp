@@ -1,6 +1,5 @@
 #include "series_scene.h"
 
-#include "mesh_options.h"
 
 #include <ivis/vdb/cache_folder.h>
 #include <ivis/core/content_hash.h>

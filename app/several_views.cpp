@@ -1,7 +1,6 @@
 #include "several_views.h"
 
 #include <ivis/core/color_bar.h>
-#include <ivis/core/errors.h>
 #include <ivis/optimize/coherence.h>
 #include <ivis/optimize/picture.h>
 #include <ivis/optimize/picture_measure.h>

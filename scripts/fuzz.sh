@@ -3,7 +3,8 @@
 # tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
 # seeds and runs each target for SECONDS (default 300) on one core.
 #   scripts/fuzz.sh [READER] [SECONDS]   READER: obj off ply stl scalar_file volume_cache vtk_xml
-#                                        vtk_legacy pvd camera_json view_file, or all (default);
+#                                        vtk_legacy pvd camera_json view_file evaluation_json,
+#                                        or all (default);
 #                                        findings are written to
 #                                        build-fuzz/findings/<reader>/
 #   IVIS_FUZZ_JOBS=2 scripts/fuzz.sh ...  builds with 2 jobs (default 1)
@@ -11,7 +12,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
 
-READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json view_file)
+READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json view_file evaluation_json)
 CHOSEN=${1:-all}
 if [[ "$CHOSEN" =~ ^[0-9]+$ ]]; then  # scripts/fuzz.sh SECONDS: every reader
   set -- all "$CHOSEN"

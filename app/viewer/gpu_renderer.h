@@ -43,8 +43,6 @@ public:
     void setVolume(const DenseSlices& slices, float fineVoxelSize, float interiorStep);
     /// @brief Tabulates core::colormap(@a name) at 256 points into the colour-map texture.
     void setColormap(const std::string& name);
-    /// @brief True once setVolume succeeded (indirect rays and shadows need it).
-    bool hasVolume() const { return mHasVolume; }
     /// @brief Forgets the volume (the mesh changed): only the direct part is drawn until setVolume.
     void dropVolume();
 

@@ -1,7 +1,6 @@
 // ViewerApp: "colour by": the arrays of the file (of a series, of every step) and their colour scales.
 #include "viewer_app.h"
 
-#include "viewer_clock.h"
 #include "viewer_panel.h"
 
 #include <ivis/core/errors.h>

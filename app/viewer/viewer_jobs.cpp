@@ -3,7 +3,6 @@
 
 #include "viewer_clock.h"
 
-#include <ivis/render/method_json.h>
 
 #include <cstdio>
 

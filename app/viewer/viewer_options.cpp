@@ -6,7 +6,6 @@
 
 #include <ivis/core/errors.h>
 #include <ivis/core/number_text.h>
-#include <ivis/core/surface_source.h>
 
 #include <cstdlib>
 #include <filesystem>

@@ -31,7 +31,7 @@ void writeStream(const std::string& path, const std::function<void(const std::st
     } catch (const Cancelled&) {
         throw;
     } catch (const std::exception& e) {
-        throw InputError(path + ": cannot write (" + e.what() + ")");
+        throw InputError(path + ": cannot write (" + oneLine(e.what()) + ")");
     }
 }
 

@@ -1,6 +1,20 @@
 #include <ivis/core/errors.h>
 
+#include <algorithm>
+#include <cctype>
 #include <string>
+
+namespace ivis {
+
+std::string oneLine(std::string text)
+{
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    return text;
+}
+
+}  // namespace ivis
 
 namespace ivis::detail {
 

@@ -17,7 +17,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -30,13 +29,6 @@
 
 namespace ivis::core {
 namespace {
-std::string oneLine(std::string text)
-{
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-    return text;
-}
-
 std::runtime_error errnoFailure() { return std::runtime_error(std::strerror(errno)); }
 
 void checkNotEmpty(const Image& image, const std::string& path)

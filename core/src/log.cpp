@@ -36,6 +36,5 @@ void setLogLevel(LogLevel level) { gLevel = level; }
 LogLevel logLevel() { return gLevel.load(); }
 void logInfo(const std::string& message) { emit(LogLevel::Info, "", message); }
 void logWarning(const std::string& message) { emit(LogLevel::Warning, "warning: ", message); }
-void logDebug(const std::string& message) { emit(LogLevel::Debug, "debug: ", message); }
 
 }  // namespace ivis::core

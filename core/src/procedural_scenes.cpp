@@ -14,7 +14,9 @@ SurfaceField makeScene(const std::string& name)
     if (name == "sphere") return makeSphere(4);
     if (name == "torus") return makeTorus();
     if (name == "vessel-tree") return makeVesselTree();
-    throw InputError("unknown scene '" + name + "' (known: sphere, torus, vessel-tree)");
+    std::string known;
+    for (const std::string& scene : sceneNames()) known += (known.empty() ? "" : ", ") + scene;
+    throw InputError("unknown scene '" + name + "' (known: " + known + ")");
 }
 
 }  // namespace ivis::core

@@ -1,7 +1,7 @@
 #include <ivis/render/mirror_method.h>
 
 #include <ivis/render/curved_ray.h>
-#include <ivis/vdb/surface_volume.h>
+#include <ivis/vdb/box_lattice.h>
 
 #include <cmath>
 

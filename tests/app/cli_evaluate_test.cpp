@@ -184,6 +184,13 @@ TEST_F(Cli, EvaluateResumesFromItsJsonAndWritesTheSameTables)
     for (const char* row : {"| Surface | inversevis | front |", "\n| sphere | ", "\n| torus | "})
         EXPECT_NE(first.find(row), std::string::npos) << row << " in\n" << one.out;
     expectBadInput(runCli("evaluate scene:sphere --resume"), {"--resume needs --json"});
+    // A kept entry that is not an evaluation's is found on reading, before any mesh is evaluated.
+    nlohmann::json broken = nlohmann::json::parse(std::ifstream(output("e.json")));
+    broken.at("sphere").at("front")["visibility"] = "high";
+    std::ofstream(output("broken.json")) << broken.dump();
+    expectBadInput(runCli(torusOnly.substr(0, torusOnly.find(" --json ")) + " --json " + quoted(output("broken.json")) +
+                          " --resume"),
+                   {"broken.json: sphere:front is not an evaluation's (its visibility is not a number from 0 to 1)"});
     // Resumed with other options, the kept meshes' figures would not be this run's (they were kept).
     nlohmann::json another = nlohmann::json::parse(std::ifstream(output("e.json")));  // another mesh of its name
     const nlohmann::json kept = another;

@@ -111,13 +111,21 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
         {[](nlohmann::json& j) { j["sphere"]["magic"] = j["sphere"]["front"]; },
          "sphere:magic is not an evaluation's (no method is named magic)"},
         {[](nlohmann::json& j) { j["sphere"]["front"]["seconds"] = {{"fast", 1.0}}; },
-         "sphere:front is not an evaluation's (its seconds are not numbers keyed by resolutions)"}};
+         "sphere:front is not an evaluation's (its seconds are not numbers keyed by resolutions)"},
+        {[](nlohmann::json& j) { j["sphere"]["front"]["display_res"] = "x"; },
+         "sphere:front is not an evaluation's (its display_res is not a whole number of pixels)"}};
     for (const auto& [breaking, message] : broken) {
         nlohmann::json part = nlohmann::json::parse(std::ifstream(output("p1.json")));
         breaking(part);
         test::writeFile(output("broken.json"), part.dump());
         expectBadInput(test::runCli("merge " + quoted(output("broken.json"))), {"broken.json: " + message});
     }
+    // Parts measured at other picture sizes, each named.
+    other = nlohmann::json::parse(std::ifstream(output("p2.json")));
+    other.at("torus").at("front")["display_res"] = 64;
+    test::writeFile(output("other.json"), other.dump());
+    expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " " + quoted(output("other.json"))),
+                   {"other.json: torus:front was measured at --display-res 64 against 32 in", "p1.json; merge parts"});
     // The tables written over a part (it was replaced, status 0).
     const std::string before = test::readFile(output("p1.json"));
     expectBadInput(test::runCli("merge " + quoted(output("p1.json")) + " --markdown " + quoted(output("p1.json"))),

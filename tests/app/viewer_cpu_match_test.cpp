@@ -148,9 +148,6 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
 #endif
 }
 
-// The interactive path: the ImGui panel, the background loader, the "optimise alpha" (parameters) button pressed
-// by --optimize (optimize::optimizeParameters on a background thread), the animation toward its result
-// and the window read back with the panel.
 // A time series: each step as the time slider shows it (--screenshot writes one per step), on the
 // volume loaded once since the geometry stays (the CLI's cache, named by the mesh's hash, is reused),
 // with one colour range over all steps: each screenshot agrees with `render`'s frame of its step as
@@ -296,6 +293,9 @@ TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
 #endif
 }
 
+// The interactive path: the ImGui panel, the background loader, the "optimise alpha" (parameters) button pressed
+// by --optimize (optimize::optimizeParameters on a background thread), the animation toward its result
+// and the window read back with the panel.
 TEST(Viewer, PanelRunsTheParameterOptimiser)
 {
 #ifndef IVIS_VIEW_PATH

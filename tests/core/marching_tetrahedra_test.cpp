@@ -63,6 +63,7 @@ TEST(MarchingTetrahedra, SphereIsClosedOutwardGenusZero)
 TEST(MarchingTetrahedra, NoDegenerateTriangles)
 {
     const TriangleMesh mesh = marchingTetrahedra(sphereOfRadius07, kUnitBox, 0.07);
+    ASSERT_FALSE(mesh.triangles.empty());
     for (const auto& [a, b, c] : mesh.triangles) {
         const glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]), pc(mesh.positions[c]);
         ASSERT_GT(glm::length(glm::cross(pb - pa, pc - pa)), 0.0);

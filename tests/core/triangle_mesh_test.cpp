@@ -90,12 +90,16 @@ TEST(TriangleMesh, LoopsFollowTriangleOrientation)
 {
     // Bottom rim edges run i -> i+1 in the triangles, so the bottom loop must too.
     const auto loops = boundaryLoops(openTube(5));
+    int bottomLoops = 0;
     for (const auto& loop : loops) {
         if (loop.front() >= 5) continue;
+        ++bottomLoops;
+        ASSERT_EQ(loop.size(), 5u);
         for (std::size_t i = 0; i < loop.size(); ++i) {
             EXPECT_EQ(loop[(i + 1) % loop.size()], (loop[i] + 1) % 5);
         }
     }
+    EXPECT_EQ(bottomLoops, 1);
 }
 
 TEST(TriangleMesh, ClosedTetrahedronHasNoBoundary)

@@ -2,7 +2,8 @@
 // `reader_fuzz_seeds FOLDER` fills FOLDER/obj, off, ply, stl (a tetrahedron in each format's ASCII
 // and, where it has one, binary layout; a PLY with vertex and face properties), FOLDER/scalar_file
 // (four values, nan included), FOLDER/volume_cache (the volume of a small icosphere) and
-// FOLDER/camera_json (a camera file with every key) and FOLDER/view_file (a view file).
+// FOLDER/camera_json (a camera file with every key), FOLDER/view_file (a view file) and
+// FOLDER/evaluation_json (an evaluate --json file with every table's fields).
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -125,6 +126,14 @@ int main(int argc, char** argv)
           R"("inversevis_view":1,"legend":"right","method":{"method":"inversevis-wrap","wrap_speed":2.5,)"
           R"("stable_shift":0.1},"outline":true,"scalar":"","scalar_file":"","scale":{"invert":false,"log":false,)"
           R"("range":[0.0,1.0]},"shade_indirect":true,"shadows":true,"size":[32,32],"units":"mm"})");
+    write(root / "evaluation_json" / "evaluation.json",
+          R"({"sphere":{"front":{"coherence":1.0,"display_res":32,"front_visibility":0.3,"paper_literal":0.2,)"
+          R"("reveal":{"direct":0.5,"per_region":[0.0,1.0],"shapes":[{"largest_share":0.9,"outline_ratio":1.3}],)"
+          R"("total":0.5},"seconds":{"16":0.1},"settings":{"--opt-res":[16],"mesh hash":"0123456789abcdef"},)"
+          R"("visibility":0.3,"voxel_visibility":0.28},"inversevis-wrap":{"coherence":0.99,"front_visibility":0.4,)"
+          R"("paper_literal":0.6,"reveal":null,"seconds":{"16":2.5,"100":3.0},"several_views":{"union":)"
+          R"({"visibility":0.99},"views":[{"coherence":0.99,"visibility":0.95}]},"visibility":0.95,)"
+          R"("voxel_visibility":0.9}}})");
     ivis::vdb::VolumeOptions options;
     options.resolution = 16;
     ivis::vdb::writeVolume(ivis::vdb::buildSurfaceVolume(ivis::core::makeSphere(1).mesh, options),

@@ -26,13 +26,16 @@ std::vector<float> radiiOf(const core::TriangleMesh& mesh, float cap)
 TEST(LocalRadius, IsTheRadiusOfASphere)
 {
     const core::SurfaceField sphere = core::makeSphere(4);
-    for (float r : radiiOf(sphere.mesh, 5.0f)) EXPECT_NEAR(r, 1.0f, 0.01f);
+    const std::vector<float> radii = radiiOf(sphere.mesh, 5.0f);
+    ASSERT_EQ(radii.size(), sphere.mesh.positions.size());
+    for (float r : radii) EXPECT_NEAR(r, 1.0f, 0.01f);
 }
 
 TEST(LocalRadius, IsTheTubeRadiusOfATorus)
 {
     const core::SurfaceField torus = core::makeTorus();
     const std::vector<float> radii = radiiOf(torus.mesh, 5.0f);
+    ASSERT_EQ(radii.size(), torus.mesh.positions.size());
     for (float r : radii) EXPECT_NEAR(r, 0.3f, 0.01f);
 }
 
@@ -60,7 +63,9 @@ TEST(LocalRadius, IsCappedWhereTheInwardRayLeavesThroughAnOpening)
     mesh.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
     mesh.triangles = {{0u, 1u, 2u}};
     mesh.dataTriangleCount = 1;
-    for (float r : radiiOf(mesh, 0.25f)) EXPECT_FLOAT_EQ(r, 0.25f);
+    const std::vector<float> radii = radiiOf(mesh, 0.25f);
+    ASSERT_EQ(radii.size(), 3u);
+    for (float r : radii) EXPECT_FLOAT_EQ(r, 0.25f);
 }
 
 }  // namespace

@@ -139,7 +139,7 @@ CacheKey readCacheKey(const std::string& path)
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
-        throw InputError(path + ": corrupt or truncated volume file (" + e.what() + ")");
+        throw InputError(path + ": corrupt or truncated volume file (" + oneLine(e.what()) + ")");
     }
 }
 
@@ -276,7 +276,7 @@ SurfaceVolume readCheckedVolume(const std::string& path)
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {
-        throw InputError(path + ": corrupt or truncated volume file (" + e.what() + ")");
+        throw InputError(path + ": corrupt or truncated volume file (" + oneLine(e.what()) + ")");
     }
     if (key.version != kVolumeFormatVersion)
         throw InputError(path + ": volume format version " + std::to_string(key.version) + ", expected " +

@@ -21,8 +21,9 @@ bool isStream(const std::string& path);
 /// @param write writes the complete content to the path it is given; throws on failure
 void writeAtomically(const std::string& path, const std::function<void(const std::string&)>& write);
 
-/// @brief Outputs written under temporary names and renamed into place together, so that a set of
-///        files (the frames of a series) appears whole or not at all.
+/// @brief Outputs written under temporary names and renamed into place together once all are
+///        written, so that a failure while writing a set of files (the frames of a series) leaves
+///        none of them; each file appears whole.
 class AtomicFileSet {
 public:
     AtomicFileSet() = default;
@@ -36,7 +37,8 @@ public:
     /// @throw InputError "<path>: cannot write (<why>)" when @a write fails (its temporary removed)
     void write(const std::string& path, const std::function<void(const std::string&)>& write);
     /// @brief Renames every temporary into place, in the order written.
-    /// @throw InputError "<path>: cannot write (<why>)" when a rename fails
+    /// @throw InputError "<path>: cannot write (<why>)" when a rename fails (the files renamed before
+    ///        it stay in place, each whole; the later temporaries are removed)
     void commit();
 
 private:

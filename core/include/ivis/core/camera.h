@@ -83,7 +83,9 @@ public:
     const glm::dvec3& upVector() const { return mUp; }
     /// @brief The camera it was built from.
     const Camera& camera() const { return mCamera; }
+    /// @brief The picture's width in pixels.
     int width() const { return mWidth; }
+    /// @brief The picture's height in pixels.
     int height() const { return mHeight; }
 
 private:

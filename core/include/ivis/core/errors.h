@@ -38,6 +38,10 @@ public:
     using std::logic_error::logic_error;
 };
 
+/// @brief @a text on one line (line breaks as spaces, trailing white space dropped): another
+///        library's message quoted in one of ours, which the programs print as one line.
+std::string oneLine(std::string text);
+
 namespace detail {
 /// @brief Throws InternalError naming the failed condition and its place.
 [[noreturn]] void checkFailed(const char* condition, const char* file, int line);

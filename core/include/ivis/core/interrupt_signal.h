@@ -23,6 +23,8 @@ int interruptExitStatus();
 /// @warning Install it from the thread that receives the host's Ctrl-C (Python's main thread).
 class ScopedInterruptHandler {
 public:
+    /// @brief Clears any earlier request and installs the SIGINT handler (the destructor puts the
+    ///        previous one back).
     ScopedInterruptHandler();
     ~ScopedInterruptHandler();
     ScopedInterruptHandler(const ScopedInterruptHandler&) = delete;

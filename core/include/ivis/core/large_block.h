@@ -30,6 +30,7 @@ struct LargeBlockAllocator {
     using value_type = T;
 
     LargeBlockAllocator() = default;
+    /// @brief The allocator of another value type (it holds no state).
     template <typename U>
     LargeBlockAllocator(const LargeBlockAllocator<U>&) noexcept {}
 
@@ -50,6 +51,7 @@ struct LargeBlockAllocator {
 
 /// @brief Deleter of allocateLarge's blocks.
 struct LargeBlockDeleter {
+    /// @brief Frees @a block.
     void operator()(void* block) const noexcept { std::free(block); }
 };
 

@@ -9,7 +9,7 @@
 namespace ivis::core {
 
 /// @brief Message importance; messages below the current level are dropped.
-enum class LogLevel { Debug = 0, Info = 1, Warning = 2, Error = 3, Silent = 4 };
+enum class LogLevel { Info = 1, Warning = 2, Error = 3, Silent = 4 };
 
 /// @brief Sets the minimum level printed (default Info).
 void setLogLevel(LogLevel level);
@@ -21,6 +21,7 @@ LogLevel logLevel();
 ///        a later pass reads again, and says, stays silent).
 class ScopedLogLevel {
 public:
+    /// @brief Sets @a level until this object goes.
     explicit ScopedLogLevel(LogLevel level) : mPrevious(logLevel()) { setLogLevel(level); }
     ~ScopedLogLevel() { setLogLevel(mPrevious); }
     ScopedLogLevel(const ScopedLogLevel&) = delete;
@@ -46,7 +47,5 @@ void logInfo(const std::string& message);
 /// @brief Prints "<program>: warning: <message>" when Warning is enabled.
 void logWarning(const std::string& message);
 
-/// @brief Prints "<program>: debug: <message>" when Debug is enabled.
-void logDebug(const std::string& message);
 
 }  // namespace ivis::core

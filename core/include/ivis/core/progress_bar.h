@@ -24,8 +24,12 @@ public:
     /// @brief What the next operations belong to, shown before their names (e.g. "armadillo
     ///        2/10, inversevis"); "" for nothing.
     void setContext(std::string context);
+    /// @brief Starts a bar for the operation @a name.
     void start(const char* name = nullptr) override;
+    /// @brief Ends the bar (its line cleared).
     void end() override;
+    /// @brief Redraws the bar at @a percent (after its first second, as the percentage rises);
+    ///        true once an interrupt (Ctrl-C) was requested.
     bool wasInterrupted(int percent = -1) override;
 
 private:

@@ -38,6 +38,7 @@ public:
     /// @brief Per-thread sampler: owns its brick cache and an OpenVDB accessor, never shared between threads.
     class Sampler {
     public:
+        /// @brief A sampler of @a field (which must outlive it), its brick cache empty.
         explicit Sampler(const DistanceField& field);
         /// @brief phi at p (world = normalised units), as phiAndGradient.
         float phi(const glm::vec3& p);

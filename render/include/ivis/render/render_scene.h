@@ -26,12 +26,16 @@ public:
         : mField(field), mVolume(volume), mDistance(volume), mBvh(field.mesh), mNormals(vertexNormals(field.mesh))
     {
     }
+    /// @brief The mesh with the scalar it shows.
     const core::SurfaceField& field() const { return mField; }
+    /// @brief The mesh (normalised units).
     const core::TriangleMesh& mesh() const { return mField.mesh; }
     /// @brief The volume it was built from; once built, the scene reads only its triangle grid, so a
     ///        program that renders only may release the rest (vdb::SurfaceVolume::releaseSampledGrids).
     const vdb::SurfaceVolume& volume() const { return mVolume; }
+    /// @brief The volume's distance field, which curved rays and shadows sample.
     const DistanceField& distance() const { return mDistance; }
+    /// @brief The mesh's BVH, which straight rays and landings query.
     const core::TriangleBvh& bvh() const { return mBvh; }
     /// @brief Area-weighted vertex normals of the mesh (for smooth shading).
     const std::vector<glm::vec3>& normals() const { return mNormals; }
