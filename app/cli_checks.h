@@ -6,7 +6,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace ivis::app {
 
@@ -50,6 +53,50 @@ inline CLI::Validator unsigned64()
             return {};
         },
         "");
+}
+
+/// @brief A file that must exist (--camera, --view): "PATH: file not found" or "PATH: a folder, not
+///        a file" (CLI11's CLI::ExistingFile said "File does not exist: PATH").
+inline CLI::Validator existingFile()
+{
+    return CLI::Validator(
+        [](std::string& path) -> std::string {
+            std::error_code error;
+            if (std::filesystem::is_directory(path, error)) return path + ": a folder, not a file";
+            if (!std::filesystem::exists(path, error)) return path + ": file not found";
+            return {};
+        },
+        "FILE");
+}
+
+/// @brief The one line a parse error @a e of @a app prints: a value that is no number of its
+///        option's type in words ("--step: 'abc' is not a number", "--spp: '1.5' is not a whole
+///        number from 1 to 1024") where CLI11 said "Could not convert: --step = abc" or "--spp:
+///        Value 1.5 not in range 1 to 1024"; anything else as CLI11 words it.
+inline std::string parseErrorText(const CLI::App& app, const CLI::ParseError& e)
+{
+    const std::string message = e.what();
+    std::string name, value, range;
+    if (const std::string prefix = "Could not convert: "; e.get_name() == "ConversionError" && message.rfind(prefix, 0) == 0) {
+        const std::size_t equals = message.find(" = ");
+        if (equals == std::string::npos) return message;
+        name = message.substr(prefix.size(), equals - prefix.size()), value = message.substr(equals + 3);
+    } else if (const std::size_t at = message.find(": Value "), in = message.find(" not in range ");
+               e.get_name() == "ValidationError" && at != std::string::npos && in != std::string::npos && at < in) {
+        name = message.substr(0, at), value = message.substr(at + 8, in - at - 8), range = message.substr(in + 14);
+    } else {
+        return message;
+    }
+    std::string type;
+    for (const CLI::App* command : app.get_subcommands())
+        if (const CLI::Option* option = command->get_option_no_throw(name)) type = option->get_type_name();
+    if (const CLI::Option* option = app.get_option_no_throw(name); type.empty() && option) type = option->get_type_name();
+    const bool whole = type.find("INT") != std::string::npos;
+    double number = 0.0;
+    const bool numeric = CLI::detail::lexical_cast(value, number) && std::isfinite(number);
+    if (!range.empty() && numeric && (!whole || number == std::floor(number))) return message;  // a number, out of range
+    return name + ": '" + value + "' is not " + (whole ? "a whole number" : "a number") +
+           (range.empty() ? "" : " from " + range);
 }
 
 /// @brief Refuses an empty value ("--cache-dir $DIR" with DIR unset would name the default folder).

@@ -4,6 +4,7 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/json_text.h>
 #include <ivis/core/mesh_reader.h>
+#include <ivis/core/procedural_scenes.h>
 #include <ivis/core/pvd_reader.h>
 #include <ivis/core/surface_source.h>
 #include <ivis/core/utf8.h>
@@ -192,9 +193,11 @@ Command addInfoCommand(CLI::App& app)
     command->add_flag("--json", options->json, "Print one JSON object");
 
     return {command, [options] {
-        if (options->path.rfind(core::kScenePrefix, 0) == 0)  // it said "file not found"
+        if (options->path.rfind(core::kScenePrefix, 0) == 0) {  // it said "file not found"
+            core::checkSceneName(options->path.substr(std::string(core::kScenePrefix).size()));
             throw InputError(options->path + ": a generated scene, not a file: info lists what a mesh file carries "
                                              "(render it, or `sdf " + options->path + " --json` for its volume)");
+        }
         if (core::isTimeSeries(options->path)) {
             printTimeSeries(options->path, options->json);
             return;

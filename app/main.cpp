@@ -37,7 +37,7 @@ int main(int argc, char** argv)
             if (command.parser->parsed()) command.run();
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
-        std::string message = e.what();
+        std::string message = ivis::app::parseErrorText(app, e);
         const auto word = std::find_if(argv + 1, argv + argc, [](const char* a) { return a[0] != '-'; });
         if (app.get_subcommands().empty() && word != argv + argc) {  // CLI11 says only "A subcommand is required"
             message = std::string("'") + *word + "' is not a command; the commands are";

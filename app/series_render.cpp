@@ -185,6 +185,13 @@ nlohmann::json renderSeries(core::SurfaceSeries& series, const ViewOptions& view
     }
     if (const std::string path = videoPath(request.png); video.is_null() && std::filesystem::exists(path))
         core::logWarning(path + ": an earlier run's video, not made again from these frames (left as it was)");
+    std::size_t stale = 0;  // frames numbered past this series' last, left by a longer one
+    while (std::filesystem::exists(framePath(request.png, count + stale, count))) ++stale;
+    if (stale > 0)
+        core::logWarning(framePath(request.png, count, count) +
+                         (stale > 1 ? " .. " + framePath(request.png, count + stale - 1, count) : std::string()) +
+                         ": an earlier run's frame" + (stale > 1 ? "s" : "") + " past this series' " +
+                         std::to_string(count) + " (left as " + (stale > 1 ? "they were" : "it was") + ")");
 
     const glm::dvec2 angles = camera.angles();
     nlohmann::json stats = {{"series", series.source()},

@@ -26,7 +26,7 @@ void ViewOptions::addTo(CLI::App& command)
     // A camera file, or a view file, is the whole camera: an angle or field of view beside it was ignored.
     auto* cameraOption = command.add_option("--camera", cameraFile,
                        "Camera JSON (eye, target, up, fov_y_deg), instead of the angles; its field of view is kept")
-        ->check(CLI::ExistingFile)
+        ->check(existingFile())
         ->excludes("--theta")
         ->excludes("--phi")
         ->excludes(fovOption)
@@ -34,7 +34,7 @@ void ViewOptions::addTo(CLI::App& command)
     command.add_option("--view", viewFile,
                        "View file (optimize's and render's --view-out, the viewer's 'save view'): its camera, method "
                        "and parameters, scalar, colour map, scale, units and legend; flags given as well override it")
-        ->check(CLI::ExistingFile)
+        ->check(existingFile())
         ->excludes(cameraOption)
         ->excludes("--theta")
         ->excludes("--phi")

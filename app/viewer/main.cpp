@@ -1,6 +1,7 @@
 // `inversevis-view`: the interactive viewer; parses arguments and maps errors to exit statuses.
 #include "viewer_app.h"
 #include "viewer_options.h"
+#include "../cli_checks.h"
 #include "../series_survey.h"
 #include "../version.h"
 
@@ -52,7 +53,7 @@ int main(int argc, char** argv)
         return viewer.run();
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return app.exit(e);  // --help
-        std::cerr << "inversevis-view: error: " << e.what() << "\n";
+        std::cerr << "inversevis-view: error: " << ivis::app::parseErrorText(app, e) << "\n";
         return 2;
     } catch (const ivis::Cancelled& e) {
         std::cerr << "inversevis-view: " << e.what() << "\n";

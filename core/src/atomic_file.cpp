@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <unistd.h>
 
 namespace ivis::core {
@@ -23,11 +25,54 @@ std::string temporaryFor(const std::string& path)
     return (target.parent_path() / (name + suffix)).string();
 }
 
-/// Calls @a write with @a path itself (a stream: isStream); a failure names it.
+/// Whether @a path names an open descriptor: /dev/stdout, /dev/stderr, /dev/stdin, /dev/fd/N or
+/// /proc/self/fd/N.
+bool namesDescriptor(const std::string& path)
+{
+    const std::string lexical = std::filesystem::path(path).lexically_normal().string();
+    return lexical == "/dev/stdout" || lexical == "/dev/stderr" || lexical == "/dev/stdin" ||
+           lexical.rfind("/dev/fd/", 0) == 0 || lexical.rfind("/proc/self/fd/", 0) == 0;
+}
+
+/// The program's own stream that @a path names (standard output or error), or null.
+std::ostream* standardStream(const std::string& path)
+{
+    const std::string lexical = std::filesystem::path(path).lexically_normal().string();
+    if (lexical == "/dev/stdout" || lexical == "/dev/fd/1" || lexical == "/proc/self/fd/1") return &std::cout;
+    if (lexical == "/dev/stderr" || lexical == "/dev/fd/2" || lexical == "/proc/self/fd/2") return &std::cerr;
+    return nullptr;
+}
+
+/// Calls @a write with @a temporary, then appends what it wrote to @a stream and removes it.
+void writeThrough(const std::string& temporary, std::ostream& stream, const std::function<void(const std::string&)>& write)
+{
+    struct Removal {
+        const std::string& path;
+        ~Removal()
+        {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+        }
+    } removal{temporary};
+    write(temporary);
+    std::ifstream in(temporary, std::ios::binary);
+    if (!in) throw std::runtime_error("its content was not written");
+    stream << in.rdbuf();
+    stream.flush();
+    if (!stream) throw std::runtime_error("the stream refused it");
+}
+
+/// Calls @a write with @a path itself (a stream: isStream), or, for the program's standard output
+/// or error, with a temporary file whose bytes then go there; a failure names @a path.
 void writeStream(const std::string& path, const std::function<void(const std::string&)>& write)
 {
     try {
-        write(path);
+        if (std::ostream* stream = standardStream(path)) {
+            const std::string name = "ivis-stream." + std::to_string(::getpid()) + ".tmp";
+            writeThrough(temporaryFor((std::filesystem::temp_directory_path() / name).string()), *stream, write);
+        } else {
+            write(path);
+        }
     } catch (const Cancelled&) {
         throw;
     } catch (const std::exception& e) {
@@ -69,6 +114,7 @@ void writeTemporary(const std::string& temporary, const std::string& path,
 
 bool isStream(const std::string& path)
 {
+    if (namesDescriptor(path)) return true;
     std::error_code error;
     const std::filesystem::file_status status = std::filesystem::status(path, error);
     return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&

@@ -85,16 +85,23 @@ struct LaneVec3 {
     Lanes x, y, z;
 };
 
-// The helpers below are inlined into each clone of closestPointsOfFour and never called across a
-// library's boundary, so the ABI of returning a vector without AVX does not matter here. (Ignored to
-// the end of the file: GCC warns there, where it makes the clones.)
+// The helpers below write their results through references: a 32-byte vector passed or returned by
+// value between functions compiled without AVX changes the ABI (GCC warns, clang refuses). They are
+// inlined into each clone of closestPointsOfFour. (GCC's warning ignored to the end of the file:
+// it warns where it makes the clones.)
 #pragma GCC diagnostic ignored "-Wpsabi"
-inline LaneVec3 minus(const LaneVec3& a, const LaneVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Lanes dot(const LaneVec3& a, const LaneVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-/// u a + v b + w c, summed left to right as glm sums it.
-inline Lanes weighted(const Lanes& u, const Lanes& a, const Lanes& v, const Lanes& b, const Lanes& w, const Lanes& c)
+/// out = a - b.
+inline void minus(const LaneVec3& a, const LaneVec3& b, LaneVec3& out)
 {
-    return u * a + v * b + w * c;
+    out.x = a.x - b.x, out.y = a.y - b.y, out.z = a.z - b.z;
+}
+/// out = a . b, summed as glm::dot sums it.
+inline void dot(const LaneVec3& a, const LaneVec3& b, Lanes& out) { out = a.x * b.x + a.y * b.y + a.z * b.z; }
+/// out = u a + v b + w c, summed left to right as glm sums it.
+inline void weighted(const Lanes& u, const Lanes& a, const Lanes& v, const Lanes& b, const Lanes& w, const Lanes& c,
+                     Lanes& out)
+{
+    out = u * a + v * b + w * c;
 }
 
 /// Four triangles' closest points to p into out[0, count); the lanes past count repeat the last
@@ -113,13 +120,15 @@ IVIS_AVX2_CLONE void closestPointsOfFour(const glm::dvec3& p, const glm::dvec3* 
     const LaneVec3 q{Lanes{} + p.x, Lanes{} + p.y, Lanes{} + p.z};
     const Lanes zero{}, one = zero + 1.0;
 
-    const LaneVec3 ab = minus(b, a), ac = minus(c, a), ap = minus(q, a);
-    const Lanes d1 = dot(ab, ap), d2 = dot(ac, ap);
-    const LaneVec3 bp = minus(q, b);
-    const Lanes d3 = dot(ab, bp), d4 = dot(ac, bp);
+    LaneVec3 ab, ac, ap, bp, cp;
+    Lanes d1, d2, d3, d4, d5, d6;
+    minus(b, a, ab), minus(c, a, ac), minus(q, a, ap);
+    dot(ab, ap, d1), dot(ac, ap, d2);
+    minus(q, b, bp);
+    dot(ab, bp, d3), dot(ac, bp, d4);
     const Lanes vc = d1 * d4 - d3 * d2;
-    const LaneVec3 cp = minus(q, c);
-    const Lanes d5 = dot(ab, cp), d6 = dot(ac, cp);
+    minus(q, c, cp);
+    dot(ab, cp, d5), dot(ac, cp, d6);
     const Lanes vb = d5 * d2 - d1 * d6;
     const Lanes va = d3 * d6 - d5 * d4;
     const Lanes denom = va + vb + vc;
@@ -148,10 +157,12 @@ IVIS_AVX2_CLONE void closestPointsOfFour(const glm::dvec3& p, const glm::dvec3* 
     u = inA ? one : u, v = inA ? zero : v, w = inA ? zero : w;
     const LaneMask byItself = degenerate & ~(inA | inB | onAB | inC | onAC | onBC);
 
-    const LaneVec3 point{weighted(u, a.x, v, b.x, w, c.x), weighted(u, a.y, v, b.y, w, c.y),
-                         weighted(u, a.z, v, b.z, w, c.z)};
-    const LaneVec3 d = minus(q, point);
-    const Lanes distanceSquared = dot(d, d);
+    LaneVec3 point, d;
+    weighted(u, a.x, v, b.x, w, c.x, point.x), weighted(u, a.y, v, b.y, w, c.y, point.y);
+    weighted(u, a.z, v, b.z, w, c.z, point.z);
+    minus(q, point, d);
+    Lanes distanceSquared;
+    dot(d, d, distanceSquared);
     for (int k = 0; k < count; ++k) {
         if (byItself[k]) {
             out[k] = closestPointOnTriangle(p, corners[3 * k], corners[3 * k + 1], corners[3 * k + 2]);

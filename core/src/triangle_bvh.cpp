@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <new>
+#include <string>
 #include <vector>
 
 namespace ivis::core {
@@ -90,7 +92,13 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) : mImpl(std::make_unique<Impl
     mImpl->mesh = &mesh;
     if (mesh.triangles.empty()) throw ValueError("cannot build a BVH of a mesh with no triangles");
     mImpl->device = rtcNewDevice("verbose=0");
-    if (!mImpl->device) throw InternalError("Embree device creation failed");
+    if (!mImpl->device) {
+        // Under an address-space limit Embree cannot reserve its threads' and allocator's room:
+        // the programs' out-of-memory line, not an internal error.
+        const RTCError error = rtcGetDeviceError(nullptr);  // read once: reading clears it
+        if (error == RTC_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+        throw InternalError("Embree device creation failed (error " + std::to_string(int(error)) + ")");
+    }
     mImpl->scene = rtcNewScene(mImpl->device);
     rtcSetSceneFlags(mImpl->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(mImpl->scene, RTC_BUILD_QUALITY_HIGH);

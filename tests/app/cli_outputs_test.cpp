@@ -103,6 +103,18 @@ TEST_F(Cli, OutputsAreNamedForTheirFormatAndApart)
     EXPECT_TRUE(fs::exists(output("X.PNG")));
     EXPECT_TRUE(nlohmann::json::accept(received)) << received;
     EXPECT_TRUE(fs::is_fifo(pipe));
+    // /dev/stdout redirected to a file (as runCli does, and a batch system's log): the JSON goes
+    // there after what the command printed before it, and nothing replaces the file.
+    const CliResult toFile = runCli("-q render scene:sphere --volume-res 48 --res 32x32 --cache-dir " +
+                                    quoted(output("")) + " -o " + quoted(output("Y.png")) + " --stats-json /dev/stdout");
+    EXPECT_EQ(toFile.status, 0) << toFile.err;
+    EXPECT_TRUE(nlohmann::json::accept(toFile.out)) << toFile.out;
+    const CliResult both = runCli("optimize scene:sphere --volume-res 48 --opt-res 16 --steps 1 --cache-dir " +
+                                  quoted(output("")) + " -o " + quoted(output("Z.png")) + " --json /dev/stdout");
+    EXPECT_EQ(both.status, 0) << both.err;
+    const std::size_t brace = both.out.find('{');
+    ASSERT_NE(brace, std::string::npos) << both.out;
+    EXPECT_TRUE(nlohmann::json::accept(both.out.substr(brace))) << both.out;
 }
 
 /// The command prefix that gives the CLI about 2 GB of memory; its sanitizer reports, if any, go

@@ -100,6 +100,9 @@ TEST_F(CliSeries, RealFfmpegWritesAnMp4OfTheSeriesFramesOnly)
     std::filesystem::copy_file(output("f_0000.png"), output("f_0005.png"));
     const CliResult result = runCli(renderSeries(quoted(pvd())));
     ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find(output("f_0005.png") + ": an earlier run's frame past this series' 5 (left as it was)"),
+              std::string::npos)
+        << result.err;
     const std::string video = test::readFile(output("f.mp4"));
     ASSERT_GT(video.size(), 8u);
     EXPECT_EQ(video.substr(4, 4), "ftyp") << "an ISO base media (MP4) file";

@@ -264,6 +264,11 @@ TEST_F(Cli, BadCameraFile)
     writeFile(shape, R"({"eye": [0, 0, 2.5], "orthographic": 1})");
     expectRejected(render(mesh, "--camera " + quoted(shape)),
                    {shape + ": bad camera file ('orthographic' must be true or false)"});
+    // Named as every other missing file is (CLI11 said "File does not exist: PATH").
+    expectRejected(render(mesh, "--camera " + quoted(input("none.json"))), {input("none.json") + ": file not found"});
+    fs::create_directory(input("folder.json"));
+    expectRejected(render(mesh, "--view " + quoted(input("folder.json"))),
+                   {input("folder.json") + ": a folder, not a file"});
 }
 
 TEST_F(Cli, BadFlagFailsBeforeTheMeshIsReadAndLogged)
@@ -359,6 +364,12 @@ TEST_F(Cli, OptionsRejectNaNAndValuesOutOfRange)
     }
     expectRejected(render("scene:sphere", "--min-coherence nan"), {"--min-coherence"});
     expectRejected(render("scene:sphere", "--theta nan"), {"--theta"});  // it said "camera eye ... must be finite"
+    // A value that is no number of the option's type, in words (CLI11 said "Could not convert: --step = abc").
+    expectRejected(render("scene:sphere", "--step abc"), {"--step: 'abc' is not a number"});
+    expectRejected(render("scene:sphere", "--spp 1.5"), {"--spp: '1.5' is not a whole number from 1 to 1024"});
+    expectRejected(render("scene:sphere", "--volume-res x"), {"--volume-res: 'x' is not a whole number from 16 to 4096"});
+    expectRejected(render("scene:sphere", "--spp 2000"), {"--spp: Value 2000 not in range 1 to 1024"});
+    expectRejected("info scene:bogus", {"unknown scene 'bogus' (known: sphere, torus, vessel-tree)"});
     // Refused before the volume is built (it was refused after, and left a cache and three lines).
     expectRejected(render("scene:sphere", "--spp 0"), {"--spp"});
 }

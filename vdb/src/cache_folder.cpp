@@ -52,7 +52,7 @@ std::string optionalCacheFolder(const std::string& cacheDir)
         return writableCacheFolder(cacheDir);
     } catch (const InputError& e) {
         core::logWarning(std::string(e.what()) +
-                         ": the volume is built for this run and not kept (--cache-dir chooses another folder)");
+                         ": the volume is built for this run and not kept (--cache-dir or XDG_CACHE_HOME chooses another folder)");
         return "";
     }
 }

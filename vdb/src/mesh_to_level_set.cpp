@@ -7,6 +7,7 @@
 #include <ivis/core/closest_point.h>
 #include <ivis/core/content_hash.h>
 #include <ivis/core/errors.h>
+#include <ivis/core/memory_reserve.h>
 #include <ivis/core/pseudo_normals.h>
 #include <ivis/core/triangle_bvh.h>
 
@@ -257,6 +258,8 @@ SurfaceVolume buildSurfaceVolume(const core::TriangleMesh& mesh, const VolumeOpt
     validate(options);
     if (mesh.triangles.empty()) throw ValueError("cannot build a volume of a mesh with no triangles");
 
+    // Declared before the grids, so it outlives them: their destructors allocate as a bad_alloc unwinds.
+    const core::ScopedMemoryReserve reserve;
     SurfaceVolume volume;
     volume.options = options;
     volume.unsignedDistance = usesUnsignedDistance(mesh, options.sign);

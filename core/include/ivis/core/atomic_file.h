@@ -10,8 +10,11 @@
 
 namespace ivis::core {
 
-/// @brief Whether @a path is a device, FIFO or socket (/dev/stdout, /dev/null, a named pipe): such
-///        a target is written to as it is, since renaming a file over it would replace it.
+/// @brief Whether @a path is a device, FIFO or socket (/dev/null, a named pipe) or names an open
+///        descriptor (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N, whatever it is
+///        redirected to): such a target is written to as it is, since renaming a file over it would
+///        replace it. What is written to the program's own standard output or error follows what
+///        it printed there before (a file it is redirected to is not truncated).
 bool isStream(const std::string& path);
 
 /// @brief Calls @a write with a temporary path beside @a path, then renames it to @a path.

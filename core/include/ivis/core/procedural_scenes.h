@@ -32,6 +32,10 @@ SurfaceField makeVesselTree(int gridResolution = 96);
 /// @brief Names accepted by makeScene: "sphere", "torus", "vessel-tree".
 std::vector<std::string> sceneNames();
 
+/// @brief Refuses a name that is not one of sceneNames().
+/// @throw InputError "unknown scene 'NAME' (known: ...)"
+void checkSceneName(const std::string& name);
+
 /// @brief Builds a named scene ("vessel-tree" is the embedded default).
 /// @throw InputError for an unknown name, listing the known ones
 SurfaceField makeScene(const std::string& name);

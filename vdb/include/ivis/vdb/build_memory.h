@@ -1,7 +1,8 @@
 /// @file build_memory.h
-/// @brief Whether a volume can be built in the memory at hand. OpenVDB's mesh-to-volume ends the
-///        process when an allocation fails (its trees' destructors allocate while the bad_alloc
-///        unwinds, and std::terminate follows), so a build that cannot fit is refused beforehand.
+/// @brief Whether a volume can be built in the memory at hand. OpenVDB's trees allocate as they
+///        are freed, so a bad_alloc that unwinds a build with no memory left ends the process
+///        (std::terminate; buildSurfaceVolume holds a core::ScopedMemoryReserve against it): a
+///        build that cannot fit is refused beforehand.
 #pragma once
 
 #include <ivis/core/triangle_mesh.h>
