@@ -129,7 +129,7 @@ std::string secondsTable(const nlohmann::json& results, const ReportLayout& layo
 std::string entryProblem(const std::string& method, const nlohmann::json& entry)
 {
     const std::vector<std::string> methods = render::methodNames();
-    if (std::find(methods.begin(), methods.end(), method) == methods.end()) return "no method is named " + method;
+    if (std::find(methods.begin(), methods.end(), method) == methods.end()) return "no method is named " + oneLine(method);
     if (!entry.is_object() || !entry.contains("seconds") || !entry.at("seconds").is_object())
         return "it holds no evaluation";
     for (const char* key : {"visibility", "front_visibility", "voxel_visibility", "paper_literal", "coherence"}) {
@@ -158,11 +158,14 @@ nlohmann::json detail::parseEvaluationJson(const std::string& path, const std::s
     ReportLayout layout;
     std::set<int> resolutions;
     for (const auto& [stem, methods] : results.items()) {
+        // A mesh's name is a file's stem: a line break in one would break every message naming it.
+        if (std::any_of(stem.begin(), stem.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }))
+            throw InputError(path + ": '" + oneLine(stem) + "' is not a mesh's name (it holds a control character)");
         if (!methods.is_object()) throw InputError(path + ": '" + stem + "' is not an object of methods");
         layout.stems.push_back(stem);
         for (const auto& [method, entry] : methods.items()) {
             if (const std::string problem = entryProblem(method, entry); !problem.empty())
-                throw InputError(path + ": " + stem + ":" + method + " is not an evaluation's (" + problem + ")");
+                throw InputError(path + ": " + stem + ":" + oneLine(method) + " is not an evaluation's (" + problem + ")");
             if (std::find(layout.methods.begin(), layout.methods.end(), method) == layout.methods.end())
                 layout.methods.push_back(method);
             for (const auto& seconds : entry.at("seconds").items()) resolutions.insert(std::stoi(seconds.key()));
@@ -238,7 +241,7 @@ std::string settingsDifference(const nlohmann::json& a, const nlohmann::json& b,
     // A flag one entry lacks is not its method's (--alpha-scan of a method without alpha).
     for (const auto& [flag, value] : a.items())
         if (b.contains(flag) && (sameMesh || meshSettings.count(flag) == 0) && value != b.at(flag))
-            return flag + " " + shown(value) + " against " + shown(b.at(flag));
+            return oneLine(flag) + " " + shown(value) + " against " + shown(b.at(flag));  // one line, whatever the file holds
     return "";
 }
 

@@ -3,8 +3,8 @@
 # tests/fuzz with clang into build-fuzz/ (the library instrumented for coverage), writes their
 # seeds and runs each target for SECONDS (default 300) on one core.
 #   scripts/fuzz.sh [READER] [SECONDS]   READER: obj off ply stl scalar_file volume_cache vtk_xml
-#                                        vtk_legacy pvd camera_json view_file evaluation_json,
-#                                        or all (default);
+#                                        vtk_legacy pvd camera_json view_file evaluation_json
+#                                        mesh_file font png exr, or all (default);
 #                                        findings are written to
 #                                        build-fuzz/findings/<reader>/
 #   IVIS_FUZZ_JOBS=2 scripts/fuzz.sh ...  builds with 2 jobs (default 1)
@@ -12,7 +12,8 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 ivis_install_packages "${IVIS_FUZZ_PACKAGES[@]}"
 
-READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json view_file evaluation_json)
+READERS=(obj off ply stl scalar_file volume_cache vtk_xml vtk_legacy pvd camera_json view_file evaluation_json
+  mesh_file font png exr)
 CHOSEN=${1:-all}
 if [[ "$CHOSEN" =~ ^[0-9]+$ ]]; then  # scripts/fuzz.sh SECONDS: every reader
   set -- all "$CHOSEN"
@@ -38,6 +39,22 @@ CC=clang CXX=clang++ cmake -S "$IVIS_ROOT" -B "$FUZZ_BUILD" -DCMAKE_BUILD_TYPE=R
 cmake --build "$FUZZ_BUILD" -j "${IVIS_FUZZ_JOBS:-1}" --target vtk_fuzz_seeds reader_fuzz_seeds "${TARGETS[@]/%/_fuzzer}"
 "$FUZZ_BUILD/tests/fuzz/vtk_fuzz_seeds" "$FUZZ_BUILD/corpus"
 "$FUZZ_BUILD/tests/fuzz/reader_fuzz_seeds" "$FUZZ_BUILD/corpus"
+# font's seed: the font every picture uses (scripts/setup.sh installs it).
+mkdir -p "$FUZZ_BUILD/corpus/font"
+cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$FUZZ_BUILD/corpus/font/"
+# mesh_file's seeds: every mesh seed behind the byte that names its format (mesh_file_fuzzer.cpp),
+# once for each choice of what is shown.
+mkdir -p "$FUZZ_BUILD/corpus/mesh_file"
+for seed in "$FUZZ_BUILD"/corpus/{ply,obj,off,stl,vtk_legacy,vtk_xml}/*; do
+  case "$seed" in
+    *.ply) format=0 ;; *.obj) format=1 ;; *.off) format=2 ;; *.stl) format=3 ;; *.vtk) format=4 ;;
+    *.vtp) format=5 ;; *.vtu) format=6 ;; *) continue ;;
+  esac
+  for shown in 0 1 2 3; do
+    { printf "\\$(printf '%03o' $((format + 7 * shown)))"; cat "$seed"; } \
+      >"$FUZZ_BUILD/corpus/mesh_file/$shown-$(basename "$seed")"
+  done
+done
 
 status=0
 for target in "${TARGETS[@]}"; do

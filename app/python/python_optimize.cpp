@@ -68,6 +68,10 @@ app::OptimizationOptions optimizationOptions(const OptimizeRequest& request, con
         throw ValueError("min_coherence " + std::to_string(request.look.minCoherence) + " must lie in [0, 1]");
     // A rule given as a parameter is kept, as `optimize --stable-shift` keeps it.
     const std::string& rule = method->info().readableRuleParameter;
+    // As `optimize --min-coherence` with such a method refuses it (the default and 0 ask for nothing).
+    if (rule.empty() && request.look.minCoherence != optimize::kDefaultMinCoherence && request.look.minCoherence != 0.0)
+        throw ValueError("min_coherence: " + method->name() +
+                         " has no rule for drawing rays to loosen (inversevis-wrap: stable_shift)");
     o.minCoherence = rule.empty() || request.look.parameters.contains(rule) ? 0.0 : request.look.minCoherence;
     o.checkUsedBy({method}, {request.optResolution});
     return o;

@@ -17,6 +17,9 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <utility>
+
 namespace py = pybind11;
 
 namespace ivis::python {
@@ -166,6 +169,10 @@ std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const Re
             throw ValueError(std::string("camera: not a camera (a camera file's JSON, as Picture.camera): ") + e.what());
         }
     } else {
+        for (const auto& [value, keyword] : {std::pair{request.theta, "theta"}, std::pair{request.phi, "phi"},
+                                             std::pair{request.fov.value_or(core::kDefaultFovYDeg), "fov"}})
+            if (!std::isfinite(value))  // as `render --theta nan` refuses it (it said "camera eye and target must differ")
+                throw ValueError(std::string(keyword) + " " + std::to_string(value) + " must be finite");
         picture.camera = core::Camera::fromAngles(request.theta, request.phi, core::kCameraDistance,
                                                   request.fov.value_or(core::kDefaultFovYDeg));
         picture.camera.orthographic = request.orthographic;
@@ -175,6 +182,10 @@ std::shared_ptr<Picture> renderMesh(const std::shared_ptr<Mesh>& drawn, const Re
         throw ValueError("a framed picture of " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                          " needs a wider picture");
     const std::string& rule = method->info().readableRuleParameter;
+    // As `render --min-coherence` with such a method refuses it (the default and 0 ask for nothing).
+    if (rule.empty() && request.minCoherence != optimize::kDefaultMinCoherence && request.minCoherence != 0.0)
+        throw ValueError("min_coherence: " + method->name() +
+                         " has no rule for drawing rays to loosen (inversevis-wrap: stable_shift)");
     picture.minCoherence = rule.empty() || values.count(rule) ? 0.0 : request.minCoherence;
 
     auto made = std::make_shared<Picture>();

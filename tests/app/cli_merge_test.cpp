@@ -113,7 +113,9 @@ TEST_F(Cli, MergedJobsGiveTheEvaluationOfThemAll)
         {[](nlohmann::json& j) { j["sphere"]["front"]["seconds"] = {{"fast", 1.0}}; },
          "sphere:front is not an evaluation's (its seconds are not numbers keyed by resolutions)"},
         {[](nlohmann::json& j) { j["sphere"]["front"]["display_res"] = "x"; },
-         "sphere:front is not an evaluation's (its display_res is not a whole number of pixels)"}};
+         "sphere:front is not an evaluation's (its display_res is not a whole number of pixels)"},
+        {[](nlohmann::json& j) { j["a\nb"] = j["sphere"]; },  // found by evaluation_json_fuzzer: a message of two lines
+         "'a b' is not a mesh's name (it holds a control character)"}};
     for (const auto& [breaking, message] : broken) {
         nlohmann::json part = nlohmann::json::parse(std::ifstream(output("p1.json")));
         breaking(part);

@@ -1,5 +1,7 @@
 // Every input a fuzz target found a problem with (tests/fuzz/regressions/<reader>/) is read again
 // by its reader: it must return or throw one single-line InputError, never crash or abort.
+#include "app/evaluation_report.h"
+
 #include <ivis/core/camera.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/file_bytes.h>
@@ -36,6 +38,7 @@ const std::map<std::string, std::function<void(const std::string&, std::string)>
         {"pvd", [](const std::string& p, std::string b) { detail::parsePvd(p, std::move(b)); }},
         {"volume_cache", [](const std::string& p, std::string) { vdb::readVolume(p); }},
         {"camera_json", [](const std::string& p, std::string b) { detail::parseCameraJson(p, b); }},
+        {"evaluation_json", [](const std::string& p, std::string b) { app::detail::parseEvaluationJson(p, b); }},
     };
     return table;
 }

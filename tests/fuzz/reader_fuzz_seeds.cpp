@@ -3,7 +3,9 @@
 // and, where it has one, binary layout; a PLY with vertex and face properties), FOLDER/scalar_file
 // (four values, nan included), FOLDER/volume_cache (the volume of a small icosphere) and
 // FOLDER/camera_json (a camera file with every key), FOLDER/view_file (a view file) and
-// FOLDER/evaluation_json (an evaluate --json file with every table's fields).
+// FOLDER/evaluation_json (an evaluate --json file with every table's fields), FOLDER/png and
+// FOLDER/exr (a small picture and its layers).
+#include <ivis/core/image_io.h>
 #include <ivis/core/procedural_scenes.h>
 #include <ivis/vdb/volume_cache.h>
 
@@ -134,6 +136,14 @@ int main(int argc, char** argv)
           R"("paper_literal":0.6,"reveal":null,"seconds":{"16":2.5,"100":3.0},"several_views":{"union":)"
           R"({"visibility":0.99},"views":[{"coherence":0.99,"visibility":0.95}]},"visibility":0.95,)"
           R"("voxel_visibility":0.9}}})");
+    ivis::core::Image picture(4, 3, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    picture.at(1, 1) = glm::vec4(0.0f);
+    fs::create_directories(root / "png");
+    fs::create_directories(root / "exr");
+    ivis::core::writePng(picture, (root / "png" / "picture.png").string(), true);
+    ivis::core::ImageLayers layers(4, 3);
+    layers.add("region");
+    ivis::core::writeExr(picture, layers, (root / "exr" / "picture.exr").string(), {{1.0, 2.0, 3.0}, 0.5});
     ivis::vdb::VolumeOptions options;
     options.resolution = 16;
     ivis::vdb::writeVolume(ivis::vdb::buildSurfaceVolume(ivis::core::makeSphere(1).mesh, options),

@@ -75,6 +75,9 @@ def test_bad_render_arguments_are_refused_before_anything_is_built(sphere, tmp_p
         (dict(range=(1.0, 0.0)), ValueError, "range"),
         (dict(min_coherence=2.0), ValueError, "min_coherence"),
         (dict(min_coherence=float("nan")), ValueError, "min_coherence nan must lie in [0, 1]"),  # it turned the rule off
+        (dict(theta=float("nan")), ValueError, "theta nan must be finite"),  # it named the camera's eye
+        (dict(method="front", min_coherence=0.5), ValueError,  # it did nothing, as `render --method front
+         "min_coherence: front has no rule for drawing rays to loosen"),  # --min-coherence 0.5` refuses
         (dict(spp=0), ValueError, "spp 0"),
         (dict(camera={"target": [0, 0, 0]}), ValueError, "camera"),
         (dict(volume_resolution=3), ValueError, "resolution"),

@@ -108,6 +108,7 @@ def test_the_same_seed_gives_the_same_view_and_another_start_is_taken():
     (dict(energy="scalar", gamma=-1.0), "gamma -1"),
     (dict(finalists=-2), "finalists -2 is out of range"),
     (dict(min_coherence=1.5), "min_coherence"),
+    (dict(method="inversevis", min_coherence=0.5), "min_coherence: inversevis has no rule for drawing rays"),
     (dict(start=(float("inf"), 0.0)), "start .inf, 0.*: theta and phi must be finite"),
     (dict(size=(4, 100)), "needs a wider picture"),
     (dict(views=0), "views 0 is out of range"),

@@ -96,7 +96,8 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<std::array<double, 2>> views;
-    for (const auto& [offSquare, view] : candidates) {
+    for (const auto& candidate : candidates) {  // not a structured binding: C++17 lambdas cannot capture one
+        const std::array<double, 2>& view = candidate.second;
         if (int(views.size()) >= count) break;
         if (std::none_of(views.begin(), views.end(), [&](const std::array<double, 2>& v) {
                 return degreesBetweenViews(view[0], view[1], v[0], v[1]) < kHotSpotViewSeparationDeg;
