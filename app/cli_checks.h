@@ -23,7 +23,9 @@ inline CLI::Validator numberRange(double lo, double hi, bool loIncluded)
     return CLI::Validator(
         [lo, hi, loIncluded, range](std::string& text) -> std::string {
             double value = 0.0;
-            if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+            // Hexadecimal ("0x10", which strtod reads as 16) is no angle or length a user means.
+            if (text.find_first_of("xX") != std::string::npos || !CLI::detail::lexical_cast(text, value))
+                return "'" + text + "' is not a number";
             if (!((loIncluded ? value >= lo : value > lo) && value <= hi))
                 return "Value " + text + " not in range " + range;
             return {};

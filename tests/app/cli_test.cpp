@@ -366,6 +366,7 @@ TEST_F(Cli, OptionsRejectNaNAndValuesOutOfRange)
     expectRejected(render("scene:sphere", "--theta nan"), {"--theta"});  // it said "camera eye ... must be finite"
     // A value that is no number of the option's type, in words (CLI11 said "Could not convert: --step = abc").
     expectRejected(render("scene:sphere", "--step abc"), {"--step: 'abc' is not a number"});
+    expectRejected(render("scene:sphere", "--theta 0x10"), {"--theta: '0x10' is not a number"});  // it was 16 degrees
     expectRejected(render("scene:sphere", "--spp 1.5"), {"--spp: '1.5' is not a whole number from 1 to 1024"});
     expectRejected(render("scene:sphere", "--volume-res x"), {"--volume-res: 'x' is not a whole number from 16 to 4096"});
     expectRejected(render("scene:sphere", "--spp 2000"), {"--spp: Value 2000 not in range 1 to 1024"});
