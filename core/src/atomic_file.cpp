@@ -67,9 +67,9 @@ void writeThrough(const std::string& temporary, std::ostream& stream, const std:
 void writeStream(const std::string& path, const std::function<void(const std::string&)>& write)
 {
     try {
-        if (std::ostream* stream = standardStream(path)) {
-            const std::string name = "ivis-stream." + std::to_string(::getpid()) + ".tmp";
-            writeThrough(temporaryFor((std::filesystem::temp_directory_path() / name).string()), *stream, write);
+        if (std::ostream* stream = standardStream(path)) {  // temporaryFor names it by the process and a count
+            writeThrough(temporaryFor((std::filesystem::temp_directory_path() / "inversevis-stream").string()), *stream,
+                         write);
         } else {
             write(path);
         }
