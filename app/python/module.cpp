@@ -349,7 +349,9 @@ outline, shadows, shade_indirect, transparent, spp: render's --log, --invert, --
 --no-legend, --legend, --no-outline, --no-shadows, --unshaded-indirect, --transparent, --spp
 (each keyword is the option of the same name: hotspots=2 is --hotspots 2).
 read_view(path) gives the arguments of a view file's picture: render(mesh, **read_view(path)). volume_resolution: the volume's N (cached as the command line caches it).
-min_coherence: the readable rule's minimum where the method's rule is not given (0: its default).
+min_coherence: the readable rule (`render --min-coherence`): where the method's rule for drawing rays
+is not given (inversevis-wrap: stable_shift), the loosest rule whose picture keeps at least this
+estimated coherence; 0 keeps the method's default rule; a method without such a rule refuses other values.
 full_trace: trace every pixel's ray (no adaptive image sampling). measure: also measure what the
 picture shows, as `render --measure` (measures: visibility, voxel_visibility, paper_literal, front_visibility,
 surface_pixels, even_bound, reveal with a scalar; docs/measures.md). progress: None or a callable

@@ -273,19 +273,24 @@ std::vector<float> detail::parseScalarFile(const std::string& path, const std::s
     std::vector<float> values;
     detail::TextCursor in(data);
     for (std::string_view token = in.token(); !token.empty(); token = in.token()) {
-        // A token is quoted in full up to 40 characters (a comma-separated file's line is one token).
-        const std::string quoted = token.size() <= 40 ? std::string(token) : std::string(token.substr(0, 37)) + "...";
-        const std::string where = "value " + std::to_string(values.size()) + " '" + quoted + "'";
+        // Named only on error: the token's line, its number and its text, quoted in full up to 40
+        // characters (a comma-separated file's line is one token).
+        const auto where = [&] {
+            const std::size_t line = 1 + std::count(data.data(), token.data(), '\n');
+            const std::string quoted =
+                token.size() <= 40 ? std::string(token) : std::string(token.substr(0, 37)) + "...";
+            return "line " + std::to_string(line) + ": value " + std::to_string(values.size()) + " '" + quoted + "'";
+        };
         const detail::FloatToken number = detail::parseFloatToken(token);
         if (number.kind == detail::FloatToken::NotANumber)
-            failInput(path, where + " is not a number" +
+            failInput(path, where() + " is not a number" +
                                 (token.find(',') != std::string_view::npos
                                      ? " (values are separated by spaces or lines, not commas)"
                                      : ""));
         if (number.kind == detail::FloatToken::NonFinite && std::isfinite(number.value))
-            failInput(path, where + " is beyond the largest a 32-bit float holds (3.4e+38)");
+            failInput(path, where() + " is beyond the largest a 32-bit float holds (3.4e+38)");
         if (number.kind == detail::FloatToken::NonFinite && !std::isnan(number.value)) {
-            failInput(path, where + " is not finite (only nan is allowed)");
+            failInput(path, where() + " is not finite (only nan is allowed)");
         }
         values.push_back(float(number.value));
     }

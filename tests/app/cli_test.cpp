@@ -141,7 +141,7 @@ TEST_F(Cli, ScalarFileWithANonNumber)
     const std::string values = input("w.txt");
     writeFile(mesh, kTriangleObj);
     writeFile(values, "1 2 x\n");
-    expectRejected(sdf(mesh, "--scalar-file " + quoted(values)), {values + ": value 2 'x' is not a number"});
+    expectRejected(sdf(mesh, "--scalar-file " + quoted(values)), {values + ": line 1: value 2 'x' is not a number"});
 }
 
 TEST_F(Cli, UnknownScalarNameListsTheNamesThatExist)

@@ -38,12 +38,8 @@ namespace ivis::test {
 // up to half a level. Measured: 0.14 (indirect) and 0.002 (direct). The bound of 1 level is 7x that
 // and still fails for any systematic error: a wrong colour map, light, brightness factor or landing
 // rule moves the mean by 10 levels or more.
-TEST(Viewer, InverseVisMatchesCpuRenderer)
+TEST_F(Viewer, InverseVisMatchesCpuRenderer)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     const Agreement a = compareWithCpu("inversevis");
     EXPECT_GE(a.regionAgreement, 0.97);
     EXPECT_GT(a.bothIndirect, std::size_t(10000));
@@ -63,30 +59,20 @@ TEST(Viewer, InverseVisMatchesCpuRenderer)
     EXPECT_GT(wrap.bothIndirect, std::size_t(5000));
     EXPECT_LT(wrap.indirectMeanDiff, 1.0);
     EXPECT_LT(wrap.directMeanDiff, 0.5);
-#endif
 }
 
 // --unshaded-indirect draws the indirect part in the colour bar's own colours in the shaders too (it
 // was dimmed to 0.75 of them in both).
-TEST(Viewer, UnshadedIndirectMatchesCpuRenderer)
+TEST_F(Viewer, UnshadedIndirectMatchesCpuRenderer)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     const Agreement flat = compareWithCpu("inversevis-wrap", 200, "", nullptr, "scene:vessel-tree", {}, false);
     EXPECT_GE(flat.regionAgreement, 0.97);
     EXPECT_GT(flat.bothIndirect, std::size_t(5000));
     EXPECT_LT(flat.indirectMeanDiff, 1.0);
-#endif
 }
 
-TEST(Viewer, MirrorAndRingMatchCpuRenderer)
+TEST_F(Viewer, MirrorAndRingMatchCpuRenderer)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     // Mirror: the same sphere tracing as the CPU (measured 0.13 levels). Ring map: the CPU intersects
     // the BVH, the viewer sphere-traces and then intersects the triangles stored around the landing
     // point, so grazing rays may differ (measured 0.9 levels, 99.88% of regions).
@@ -98,18 +84,13 @@ TEST(Viewer, MirrorAndRingMatchCpuRenderer)
     EXPECT_GE(ring.regionAgreement, 0.97);
     EXPECT_GT(ring.bothIndirect, std::size_t(5000));
     EXPECT_LT(ring.indirectMeanDiff, 3.0);
-#endif
 }
 
 // A cell array is one value per triangle in the viewer too (a buffer of triangle values), flat
 // as on the CPU: the colours agree as closely as the vertex scalar's (a vertex blend instead, or
 // no colour at all, would differ by tens of levels).
-TEST(Viewer, CellScalarsMatchCpuRenderer)
+TEST_F(Viewer, CellScalarsMatchCpuRenderer)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     core::SurfaceLoadOptions load;
     load.read.scalarName = "pressure_cell";
     const Agreement a = compareWithCpu("inversevis", 200, "--scalar pressure_cell", nullptr,
@@ -118,17 +99,12 @@ TEST(Viewer, CellScalarsMatchCpuRenderer)
     EXPECT_GT(a.bothIndirect, std::size_t(5000));
     EXPECT_LT(a.indirectMeanDiff, 1.0);
     EXPECT_LT(a.directMeanDiff, 0.5);
-#endif
 }
 
 // A volume finer than 200 has a far field: the viewer combines its copy with the fine band as the
 // CPU does. With a budget too small for the band at 400 it resamples, and says so.
-TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
+TEST_F(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     std::string output;
     const Agreement exact = compareWithCpu("inversevis", 400, "", &output);
     EXPECT_NE(output.find("resolution 400 (voxel 0.0125), the volume's own, far field at 200"), std::string::npos) << output;
@@ -145,19 +121,14 @@ TEST(Viewer, FarFieldAndResampledVolumesMatchCpuRenderer)
     const Agreement wrapResampled = compareWithCpu("inversevis-wrap", 400, "--texture-budget 48", &output);
     EXPECT_GE(wrapResampled.regionAgreement, 0.95);
     EXPECT_LT(wrapResampled.indirectMeanDiff, 5.0);
-#endif
 }
 
 // A time series: each step as the time slider shows it (--screenshot writes one per step), on the
 // volume loaded once since the geometry stays (the CLI's cache, named by the mesh's hash, is reused),
 // with one colour range over all steps: each screenshot agrees with `render`'s frame of its step as
 // closely as one picture does (a range of each step's own would move the colours by tens of levels).
-TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
+TEST_F(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
     // --min-coherence 0: the rule the viewer's --screenshot draws (it chooses none).
@@ -195,15 +166,10 @@ TEST(Viewer, SeriesStepsShareOneVolumeAndMatchCpuFrames)
         EXPECT_LT(a.indirectMeanDiff, 1.0);
         EXPECT_LT(a.directMeanDiff, 0.5);
     }
-#endif
 }
 
-TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
+TEST_F(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     // Killed by the signal, it left the steps written so far (s_0000.png, s_0001.png). The signal goes
     // to the viewer alone: xvfb-run, signalled too, at times failed its own clean-up (status 5).
     TempDir dir;
@@ -229,17 +195,12 @@ TEST(Viewer, CtrlCDuringASeriesLeavesNoScreenshot)
         << output;
     for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
         EXPECT_EQ(entry.path().filename().string().find("s_"), std::string::npos) << entry.path() << " left behind";
-#endif
 }
 
 // A series' screenshots with their colour bars are one size, as render's frames are: the bar's
 // margin was each step's own, so "t = 1000" made the last one wider than the others.
-TEST(Viewer, SeriesScreenshotsAreOneSizeAsRendersFrames)
+TEST_F(Viewer, SeriesScreenshotsAreOneSizeAsRendersFrames)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string pvd = sharedMesh("vtk/artery_series/artery.pvd");
     const CliResult cpu = runCli("render '" + pvd + "' --scalar pressure_cell --res 160x160 --volume-res 64 --no-video "
@@ -257,17 +218,12 @@ TEST(Viewer, SeriesScreenshotsAreOneSizeAsRendersFrames)
         EXPECT_EQ(core::readPng(dir.file("cpu" + suffix)).width(), width) << step;
         EXPECT_EQ(core::readPng(dir.file("gpu" + suffix)).width(), width) << step;
     }
-#endif
 }
 
 // A step of other geometry: the slider uploads its mesh and loads its volume (the direct part
 // shows meanwhile); back on the artery, the artery's cache is read again.
-TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
+TEST_F(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const RunResult run = runViewer("'" + writeMixedSeries(dir) + "' --width 128 --height 128 --volume-res 64 --frames 1 --no-legend " +
                                         "--screenshot '" + dir.file("gpu.png") + "' --region-png '" +
@@ -290,18 +246,13 @@ TEST(Viewer, SeriesStepOfOtherGeometryLoadsItsVolume)
     }
     EXPECT_EQ(direct[0], direct[2]);
     EXPECT_NE(direct[0], direct[1]);
-#endif
 }
 
 // The interactive path: the ImGui panel, the background loader, the "optimise alpha" (parameters) button pressed
 // by --optimize (optimize::optimizeParameters on a background thread), the animation toward its result
 // and the window read back with the panel.
-TEST(Viewer, PanelRunsTheParameterOptimiser)
+TEST_F(Viewer, PanelRunsTheParameterOptimiser)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string shot = dir.file("window.png");
     const RunResult run = runViewer("scene:sphere --method inversevis --optimize parameters --energy scalar --opt-res 48 --frames 2 --width 640 --height 480 --ui-screenshot '" +
@@ -313,14 +264,10 @@ TEST(Viewer, PanelRunsTheParameterOptimiser)
     const core::Image window = core::readPng(shot);
     EXPECT_EQ(window.width(), 640);
     EXPECT_EQ(window.height(), 480);
-#endif
 }
 
-TEST(Viewer, UnreadableMeshExitsWithStatus2)
+TEST_F(Viewer, UnreadableMeshExitsWithStatus2)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
     TempDir dir;
     writeFile(dir.file("broken.obj"), "this is not a mesh\n");
     for (const std::string& mesh : {dir.file("missing.ply"), dir.file("broken.obj")}) {
@@ -358,7 +305,6 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
         EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     }
     // A far field larger than the texture budget is named as the cause (it was "do not fit").
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     const RunResult budget = runViewer("scene:sphere --volume-res 256 --reach 2 --texture-budget 16 --cache-dir '" +
                                            dir.path() + "' --screenshot '" + dir.file("s.png") + "'",
                                        true, dir);
@@ -375,7 +321,6 @@ TEST(Viewer, UnreadableMeshExitsWithStatus2)
         EXPECT_EQ(run.status, 2) << run.output;
         EXPECT_EQ(run.output.rfind("inversevis-view: error: ", 0), 0u) << run.output;
     }
-#endif
 }
 
 }  // namespace ivis::test

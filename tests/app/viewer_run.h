@@ -8,6 +8,7 @@
 #include <ivis/core/image.h>
 #include <ivis/core/surface_source.h>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -36,6 +37,16 @@ RunResult runViewer(std::string arguments, bool display, const TempDir& dir);
 
 /// True when xvfb-run is on PATH.
 bool haveXvfbRun();
+
+/// The fixture of the viewer's tests (built with the viewer alone): each runs it under xvfb-run,
+/// whose absence fails the test.
+class Viewer : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
+    }
+};
 
 /// 8-bit sRGB level of a linear value, as writePng stores it.
 int level(float linear);

@@ -33,12 +33,8 @@ namespace ivis::test {
 
 // The interactive window draws the wrap with the readable rule `render` would choose for a 1000 x
 // 1000 picture, found on the CPU once the volume is loaded; a rule given is drawn as given.
-TEST(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
+TEST_F(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string common = "scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --cache-dir '" +
                                dir.path() + "' --ui-screenshot '" + dir.file("window.png") + "'";
@@ -53,18 +49,13 @@ TEST(Viewer, InteractiveWindowDrawsTheWrapsReadableRule)
     const RunResult given = runViewer(common + " --stable-shift 0.005", true, dir);
     ASSERT_EQ(given.status, 0) << given.output;
     EXPECT_EQ(given.output.find("readable rule"), std::string::npos) << given.output;
-#endif
 }
 
 // The panel leaves the picture most of the window: its sections fold what is seldom changed (the
 // tracing accuracy, the picture's settings), and the picture lies right of it. The panel used to
 // cover 46% of a 1000 x 800 window (485 x 760), over the picture's left part.
-TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
+TEST_F(Viewer, PanelLeavesThePictureMostOfTheWindow)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 1000 --height 800 --frames 2 --cache-dir '" +
                                         dir.path() + "' --ui-screenshot '" + dir.file("window.png") + "'",
@@ -85,18 +76,13 @@ TEST(Viewer, PanelLeavesThePictureMostOfTheWindow)
     EXPECT_GE(pictureX, width) << "the picture lies right of the panel, not under it";
     EXPECT_EQ(pictureHeight, 800);
     EXPECT_GE(pictureWidth, 500) << "what the panel and the colour bar leave";
-#endif
 }
 
 // --play (the panel's play button) shows the series' steps one after the other, from the first to
 // the last, and stops there: --ui-screenshot waits for it. A step of other geometry keeps the next
 // waiting until its volume is loaded. One surface has nothing to play.
-TEST(Viewer, PlayShowsEveryStepInTurnAndStopsAtTheLast)
+TEST_F(Viewer, PlayShowsEveryStepInTurnAndStopsAtTheLast)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     auto play = [&](const std::string& series) {
         return runViewer("'" + series + "' --volume-res 64 --stable-shift 0.2 --play --play-rate 30 --frames 2 " +
@@ -129,17 +115,12 @@ TEST(Viewer, PlayShowsEveryStepInTurnAndStopsAtTheLast)
     EXPECT_EQ(one.status, 2) << one.output;
     EXPECT_NE(one.output.find("--play: scene:sphere is one surface, not a time series"), std::string::npos) << one.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("one.png")));
-#endif
 }
 
 // "optimise view" leaves the picture drawn with every parameter of the best view: the optimised
 // speed and the rule its readable rule chose (the rule used to be dropped, and the speed with it).
-TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
+TEST_F(Viewer, OptimiseViewDrawsTheBestViewsRule)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --optimize view "
                                     "--steps 1 --finalists 0 --opt-res 24 --cache-dir '" + dir.path() +
@@ -152,16 +133,11 @@ TEST(Viewer, OptimiseViewDrawsTheBestViewsRule)
     const nlohmann::json drawn = drawnParameters(run.output);
     ASSERT_FALSE(drawn.is_null()) << run.output;
     EXPECT_NEAR(drawn.at("stable_shift").get<double>(), shift, 1e-4);
-#endif
 }
 
 // --views 2: 'optimise view' also chooses a second view and says what the two show together.
-TEST(Viewer, OptimiseViewWithViewsChoosesASecondView)
+TEST_F(Viewer, OptimiseViewWithViewsChoosesASecondView)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const RunResult run = runViewer("scene:vessel-tree --volume-res 64 --width 300 --height 300 --frames 2 --optimize view "
                                     "--views 2 --steps 1 --finalists 0 --opt-res 24 --cache-dir '" + dir.path() +
@@ -176,17 +152,12 @@ TEST(Viewer, OptimiseViewWithViewsChoosesASecondView)
     const double best = std::stod(run.output.substr(each + 6));
     EXPECT_GT(together, best) << run.output;
     EXPECT_LE(together, 1.0);
-#endif
 }
 
 // A view file (here render's --view-out, with a log scale, an inverted map and hot spots) shows the
 // same picture in the viewer as in `render --view`.
-TEST(Viewer, ViewFileShowsTheCpuPicture)
+TEST_F(Viewer, ViewFileShowsTheCpuPicture)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string cache = " --volume-res 100 --cache-dir '" + dir.path() + "'";
     const CliResult made = runCli("render scene:vessel-tree --hotspots 2 --theta 60 --phi 40 --res 256x256 --colormap plasma "
@@ -212,18 +183,13 @@ TEST(Viewer, ViewFileShowsTheCpuPicture)
     EXPECT_GT(a.cpuIndirect, 1000u);
     EXPECT_LT(a.indirectMeanDiff, 2.0);
     EXPECT_LT(a.directMeanDiff, 1.0);
-#endif
 }
 
 // --probe tells of a pixel of the viewer's picture what `render --probe` tells of the same pixel
 // of the same view (an indirect one, so the curved ray is traced on the viewer's camera): headless
 // after the screenshot, and in the window as a click would.
-TEST(Viewer, ProbeTellsWhatRenderTellsOfThePixel)
+TEST_F(Viewer, ProbeTellsWhatRenderTellsOfThePixel)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string view = " --theta 60 --phi 40 --stable-shift 0.04 --no-legend --volume-res 64 --cache-dir '" +
                              dir.path() + "'";
@@ -250,18 +216,13 @@ TEST(Viewer, ProbeTellsWhatRenderTellsOfThePixel)
                                        true, dir);
     ASSERT_EQ(window.status, 0) << window.output;
     EXPECT_NE(window.output.find("inversevis-view: " + told.out), std::string::npos) << window.output;
-#endif
 }
 
 
 // --tracer cpu: the window shows the picture `render` writes, pixel for pixel and region for
 // region; its benchmark draws smaller pictures while the camera moves, then the full one.
-TEST(Viewer, CpuTracerShowsRendersPicture)
+TEST_F(Viewer, CpuTracerShowsRendersPicture)
 {
-#ifndef IVIS_VIEW_PATH
-    GTEST_SKIP() << "inversevis-view is not built (IVIS_BUILD_APP=OFF)";
-#else
-    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is missing: install it with scripts/setup.sh (Debian package xvfb)";
     TempDir dir;
     const std::string view = " --theta 60 --phi 40 --min-coherence 0 --no-legend --volume-res 64 --cache-dir '" +
                              dir.path() + "'";
@@ -303,7 +264,6 @@ TEST(Viewer, CpuTracerShowsRendersPicture)
     EXPECT_LT(tracedWidth, 400) << bench.output;
     EXPECT_NEAR(double(tracedWidth) / tracedHeight, 4.0 / 3.0, 0.1) << bench.output;
     EXPECT_NE(bench.output.find("at rest the full 400x300 picture in "), std::string::npos) << bench.output;
-#endif
 }
 
 }  // namespace ivis::test

@@ -62,7 +62,8 @@ TEST(MeshReader, SidecarErrors)
     };
     expectScalarError("1 2 3 4 5 6 7\n", "expected 8 scalar values (one per vertex), found 7");
     expectScalarError("1 2 3 4 5 6 7 8 9\n", "expected 8 scalar values (one per vertex), found 9");
-    expectScalarError("1 2 3 abc 5 6 7 8\n", "value 3 'abc' is not a number");
+    expectScalarError("1 2 3 abc 5 6 7 8\n", "line 1: value 3 'abc' is not a number");
+    expectScalarError("1 2\n3\n\n4 abc 6 7 8\n", "line 4: value 4 'abc' is not a number");
     expectScalarError("1 2 3 0x10 5 6 7 8\n", "value 3 '0x10' is not a number");
     expectScalarError("1 2 3 inf 5 6 7 8\n", "value 3 'inf' is not finite");
     expectScalarError("1 2 3 1e+300 5 6 7 8\n", "value 3 '1e+300' is beyond the largest a 32-bit float holds");
@@ -71,7 +72,7 @@ TEST(MeshReader, SidecarErrors)
     for (int k = 0; k < 2000; ++k) commas += ",1";
     writeFile(w, commas);
     const std::string message = inputError([&] { readScalarFile(w, 8); });
-    EXPECT_NE(message.find("value 0 '1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1...' is not a number (values are separated by "
+    EXPECT_NE(message.find("line 1: value 0 '1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1...' is not a number (values are separated by "
                            "spaces or lines, not commas)"),
               std::string::npos)
         << message;

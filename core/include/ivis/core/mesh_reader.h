@@ -103,7 +103,7 @@ std::vector<ArrayInfo> describeArrays(const SurfaceField& field);
 
 /// @brief Reads a sidecar scalar file: whitespace/newline separated numbers ("nan" allowed).
 /// @param expectedCount number of vertices; a different count is an error
-/// @throw InputError naming the file and the first bad token (numbered from 0, like vertices)
+/// @throw InputError naming the file, the first bad token's line and its number (from 0, like vertices)
 ///        or the count mismatch
 std::vector<float> readScalarFile(const std::string& path, std::size_t expectedCount);
 

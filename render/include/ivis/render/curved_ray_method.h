@@ -138,6 +138,7 @@ public:
         return false;
     }
 
+    /// @brief A CurvedRayMap: each pixel's curved ray traced to where it lands.
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     bool drawsIndirect() const override { return true; }
     /// @brief The hull {phi = hull_offset}: the mesh grown by the hull offset (offsetMeshExtent).

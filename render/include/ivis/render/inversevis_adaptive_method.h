@@ -39,8 +39,11 @@ public:
     }
     const MethodInfo& info() const override { return inverseVisAdaptiveMethodInfo(); }
     ParameterValues values() const override;
+    /// @brief The profile's alpha at the seed's alignment (halved on each relaunch) along its tangent.
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
+    /// @brief The profile's retries: a ray that does not land is launched again this often.
     int relaunches() const override { return mProfile.retries; }
+    /// @brief The launch moves with the profile's coefficients; false where the profile is clamped.
     bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const override;
     /// @brief The alpha profile.
     const AlphaProfile& profile() const { return mProfile; }

@@ -18,7 +18,9 @@ public:
     InverseVisMethod(const CurvedRayParams& ray, float alpha) : CurvedRayMethod(ray), mAlpha(alpha) {}
     const MethodInfo& info() const override { return inverseVisMethodInfo(); }
     ParameterValues values() const override;
+    /// @brief alpha along the seed's tangent (the paper's launch).
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
+    /// @brief The launch moves with alpha along the seed's tangent.
     bool launchSensitivity(const CurvedRayStart& start, int launch, LaunchSensitivity& sensitivity) const override;
     /// @brief The scale of the initial velocity.
     float alpha() const { return mAlpha; }

@@ -51,6 +51,7 @@ public:
     InverseVisWrapMethod(const CurvedRayParams& ray, const WrapLaunch& launch) : CurvedRayMethod(ray), mLaunch(launch) {}
     const MethodInfo& info() const override { return inverseVisWrapMethodInfo(); }
     ParameterValues values() const override;
+    /// @brief Rays start at the view ray's closest approach to the surface, not the hull exit.
     SeedRule seedRule() const override { return SeedRule::ClosestApproach; }
     /// @brief Sets the ring position from the local radius, the launch direction and alpha; false
     ///        beyond the ring or with no surface near the seed.
@@ -61,6 +62,7 @@ public:
     /// @brief The stability rule: the ray and both probes land, their landings bending by at most
     ///        stable_shift.
     bool isStable(CurvedRayStart& start, const CurvedRayEnd& own, const CurvedRayEnd* probes) const override;
+    /// @brief The speed and direction aim() set for the ray.
     glm::vec3 launchVelocity(const CurvedRayStart& start, int launch) const override;
     /// @brief stable_shift between probes a neighbouring pixel (of a 1000-pixel picture) apart.
     std::optional<StabilityScale> stabilityScale() const override;

@@ -18,6 +18,7 @@ public:
     explicit MirrorMethod(const MirrorParams& params) : mParams(params) {}
     const MethodInfo& info() const override { return mirrorMethodInfo(); }
     ParameterValues values() const override;
+    /// @brief Each pixel's view ray reflected by the quadratic mirror behind the object.
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     bool drawsIndirect() const override { return true; }
     /// @brief The object and the mirror's footprint (mirrorFootprint).

@@ -20,7 +20,9 @@ public:
     ParameterValues values() const override;
     /// @brief The rings' layout (layoutRings): ring_pixel_centre, ring_inner, back_centre, back_radius.
     ParameterValues viewValues(const core::CameraFrame& frame, const core::TriangleMesh& mesh) const override;
+    /// @brief False: the rings' straight rays start at the projection centre, inside the object.
     bool indirectRaysArriveFromOutside() const override { return false; }
+    /// @brief The ring map: a ring pixel's and the back disc's straight rays from the projection centre.
     std::unique_ptr<IndirectMap> indirectMap(const RenderScene& scene, const core::CameraFrame& frame) const override;
     bool drawsIndirect() const override { return true; }
     /// @brief The outer ring (ringExtent).
