@@ -1,6 +1,6 @@
 /// @file mesh_reader_files.h
 /// @brief Mesh files the reader tests write (PLY headers, a tetrahedron, a cube) and their checks
-///        of the reader's one-line errors: what mesh_reader_test.cpp and mesh_reader_errors_test.cpp share.
+///        of the reader's one-line errors: what the mesh and VTK reader tests share.
 #pragma once
 
 #include <ivis/core/errors.h>
@@ -31,6 +31,22 @@ inline std::string inputError(const std::function<void()>& read)
         return std::string("<not an InputError: ") + e.what() + ">";
     }
     return "<no error>";
+}
+
+/// The problem readMesh reports for a file @a name in @a dir holding @a text: its error after
+/// "<path>: " (expected to be one line starting so), or inputError's marker.
+inline std::string readProblem(const TempDir& dir, const std::string& text, const std::string& name)
+{
+    const std::string path = dir.file(name);
+    writeFile(path, text);
+    const std::string message = inputError([&] { readMesh(path); });
+    if (message.rfind("<", 0) == 0) return message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    if (message.rfind(path + ": ", 0) != 0) {
+        ADD_FAILURE() << "the error does not start with the file: " << message;
+        return message;
+    }
+    return message.substr(path.size() + 2);
 }
 
 /// Expects readMesh(@a path) to fail with one line "<path>: ...@a problem...".

@@ -4,6 +4,7 @@
 #include <ivis/core/mesh_reader.h>
 #include <ivis/core/surface_source.h>
 
+#include "mesh_reader_files.h"
 #include "test_support.h"
 #include "vtk_files.h"
 
@@ -284,19 +285,7 @@ TEST(VtkLegacyReader, UnstructuredTetrahedraShowTheirBoundary)
 /// The problem readMesh reports for a .vtk file holding @a text, or a marker.
 std::string readError(const TempDir& dir, const std::string& text)
 {
-    const std::string path = dir.file("bad.vtk");
-    writeFile(path, text);
-    try {
-        readMesh(path);
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-        return message.substr(path.size() + 2);
-    } catch (const std::exception& e) {
-        return std::string("<not an InputError: ") + e.what() + ">";
-    }
-    return "<no error>";
+    return readProblem(dir, text, "bad.vtk");
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to)

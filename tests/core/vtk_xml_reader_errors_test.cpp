@@ -5,6 +5,7 @@
 #include <ivis/core/surface_source.h>
 #include <ivis/core/show_array.h>
 
+#include "mesh_reader_files.h"
 #include "test_support.h"
 #include "vtk_files.h"
 #include "vtk_xml_shapes.h"
@@ -31,22 +32,10 @@ using test::writeFile;
 // Bad input: one line "<path>: <problem>", exit status 2 in the program, never a crash
 // ----------------------------------------------------------------------------------------------
 
-/// The message readMesh throws for a file holding @a text (written as @a name), or a marker.
+/// The problem readMesh reports for a file holding @a text (written as @a name), or a marker.
 std::string readError(const TempDir& dir, const std::string& text, const std::string& name = "bad.vtp")
 {
-    const std::string path = dir.file(name);
-    writeFile(path, text);
-    try {
-        readMesh(path);
-    } catch (const InputError& e) {
-        const std::string message = e.what();
-        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
-        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-        return message.substr(path.size() + 2);
-    } catch (const std::exception& e) {
-        return std::string("<not an InputError: ") + e.what() + ">";
-    }
-    return "<no error>";
+    return readProblem(dir, text, name);
 }
 
 /// @a text with the first @a from after @a anchor replaced by @a to.
