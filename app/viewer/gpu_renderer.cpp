@@ -91,7 +91,7 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
                          array.data(), GL_STATIC_DRAW);
         }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(mField->mesh, 0.0f, fineVoxelSize));
+    keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(core::bounds(mField->mesh), 0.0f, fineVoxelSize));
     mVolumeScale = {fineVoxelSize, slices.reach};
     mHasVolume = true;
 }

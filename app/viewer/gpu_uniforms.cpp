@@ -192,7 +192,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
         p.set("uRetries", curved->relaunches());
         p.set("uEscape", render::escapeDistance(volume.reach));
         p.set("uMaxHullSteps", kMaxHullSteps);
-        const core::Bounds3 hull = render::hullBounds(field.mesh, hullOffset, volume.fineVoxelSize);
+        const core::Bounds3 hull = render::hullBounds(core::bounds(field.mesh), hullOffset, volume.fineVoxelSize);
         p.set("uHullLo", glm::vec3(hull.lo));
         p.set("uHullHi", glm::vec3(hull.hi));
     }

@@ -106,6 +106,7 @@ void ViewerApp::openWindow()
     mRenderer = std::make_unique<GpuRenderer>();
     mColorBar = std::make_unique<ColorBarOverlay>();
     mNormals = render::vertexNormals(mField->mesh);
+    mVertices = std::make_unique<core::ClusteredVertices>(mField->mesh.positions);
     mRenderer->setMesh(*mField, mNormals);
     mRenderer->setColormap(mShading.colormap);
     // Software rasterisers run the shaders on the CPU, slower than the CPU renderer: there the CPU

@@ -21,6 +21,7 @@
 #include "../series_survey.h"
 
 #include <ivis/core/atomic_file.h>
+#include <ivis/core/clustered_vertices.h>
 #include <ivis/core/show_array.h>
 #include <ivis/core/surface_field.h>
 #include <ivis/core/surface_series.h>
@@ -159,6 +160,7 @@ private:
     ViewerOptions mOptions;
     std::unique_ptr<core::SurfaceField> mField;  ///< heap: the scene and renderer keep its address
     std::vector<glm::vec3> mNormals;             ///< vertex normals of mField's mesh
+    std::unique_ptr<core::ClusteredVertices> mVertices;  ///< mField's vertices, which framing scans before a scene loads
     std::unique_ptr<core::SurfaceSeries> mSeries;  ///< the time series shown (null for one surface)
     SeriesSurvey mSurvey;
     std::string mCacheFolder;  ///< where volumes are cached; "" when none can be written (optionalCacheFolder)

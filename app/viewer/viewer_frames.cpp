@@ -33,7 +33,7 @@ void ViewerApp::frameOrbit(int width, int height)
     try {
         const core::Camera framed =
             mLoaded ? render::frameView(*mLoaded->scene, camera, *mMethod, aspect)
-                    : render::fitCamera(camera, render::offsetMeshExtent(mField->mesh, camera, 0.0), aspect);
+                    : render::fitCamera(camera, render::offsetMeshExtent(*mVertices, camera, 0.0), aspect);
         mOrbit.fovYDeg = framed.fovYDeg;
         mOrbit.orthoHalfHeight = framed.orthoHalfHeight;
         mOrbit.windowCentre = framed.windowCentre;

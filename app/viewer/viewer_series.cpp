@@ -28,6 +28,7 @@ void ViewerApp::showStep(std::size_t step)
         mRenderer->dropVolume();
         mField = std::make_unique<core::SurfaceField>(std::move(field));
         mNormals = render::vertexNormals(mField->mesh);
+        mVertices = std::make_unique<core::ClusteredVertices>(mField->mesh.positions);
         mProbe.clear();  // its triangle is of the other mesh
     }
     mRenderer->setMesh(*mField, mNormals);

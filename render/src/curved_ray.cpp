@@ -15,9 +15,9 @@
 
 namespace ivis::render {
 
-core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize)
+core::Bounds3 hullBounds(const core::Bounds3& meshBounds, float hullOffset, float voxelSize)
 {
-    core::Bounds3 box = core::bounds(mesh);
+    core::Bounds3 box = meshBounds;
     const double grow = double(hullOffset) + voxelSize, half = vdb::kBoxHalfExtent;
     box.lo = glm::max(box.lo - grow, glm::dvec3(-half));
     box.hi = glm::min(box.hi + grow, glm::dvec3(half));

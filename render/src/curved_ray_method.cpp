@@ -57,14 +57,14 @@ std::unique_ptr<IndirectMap> CurvedRayMethod::indirectMap(const RenderScene& sce
 
 PictureExtent CurvedRayMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
-    return offsetMeshExtent(scene.mesh(), camera, mRay.hullOffset);
+    return offsetMeshExtent(scene.vertices(), camera, mRay.hullOffset);
 }
 
 CurvedRayMap::CurvedRayMap(const RenderScene& scene, const core::CameraFrame& frame, const CurvedRayMethod& method)
     : mScene(scene),
       mFrame(frame),
       mMethod(method),
-      mHullBox(hullBounds(scene.mesh(), method.rayParams().hullOffset, scene.distance().voxelSize())),
+      mHullBox(hullBounds(scene.bounds(), method.rayParams().hullOffset, scene.distance().voxelSize())),
       mEpsilon(landingEpsilon(method.rayParams(), scene.distance()))
 {
 }

@@ -88,7 +88,7 @@ PictureExtent landedExtent(const RenderScene& scene, const core::Camera& camera,
             else landed.lo[axis] = std::max(edge - cell, bound.lo[axis]);
         }
     landed.fixed = bound.fixed;
-    return landed.united(offsetMeshExtent(scene.mesh(), camera, 0.0));
+    return landed.united(offsetMeshExtent(scene.vertices(), camera, 0.0));
 }
 
 }  // namespace ivis::render

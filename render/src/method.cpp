@@ -30,7 +30,7 @@ std::unique_ptr<IndirectMap> Method::indirectMap(const RenderScene& /*scene*/, c
 
 PictureExtent Method::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
-    return offsetMeshExtent(scene.mesh(), camera, 0.0);
+    return offsetMeshExtent(scene.vertices(), camera, 0.0);
 }
 
 }  // namespace ivis::render

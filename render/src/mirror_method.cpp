@@ -52,7 +52,7 @@ std::unique_ptr<IndirectMap> MirrorMethod::indirectMap(const RenderScene& scene,
 
 PictureExtent MirrorMethod::pictureExtent(const RenderScene& scene, const core::Camera& camera) const
 {
-    return Method::pictureExtent(scene, camera).united(mirrorFootprint(camera, mParams, scene.bvh(), core::bounds(scene.mesh())));
+    return Method::pictureExtent(scene, camera).united(mirrorFootprint(camera, mParams, scene.bvh(), scene.bounds()));
 }
 
 const MethodInfo& mirrorMethodInfo()

@@ -19,7 +19,7 @@ Shader::Shader(const RenderScene& scene, const core::CameraFrame& frame, const S
       mUp(frame.upVector()),
       mRight(frame.right()),
       mIndirectShadows(options.shadows && method.indirectRaysArriveFromOutside()),
-      mSurfaceBox(hullBounds(scene.mesh(), 0.0f, scene.distance().voxelSize()))
+      mSurfaceBox(hullBounds(scene.bounds(), 0.0f, scene.distance().voxelSize()))
 {
 }
 

@@ -114,7 +114,7 @@ TEST(AdaptiveSampling, ABracketedValleySearchFindsTheWholeRaysSeed)
     const RenderScene& scene = *fixture.scene;
     auto sampler = scene.distance().sampler();
     const float voxel = scene.distance().voxelSize(), hull = 0.6f;
-    const core::Bounds3 box = hullBounds(scene.mesh(), hull, voxel);
+    const core::Bounds3 box = hullBounds(scene.bounds(), hull, voxel);
     const core::CameraFrame frame(core::Camera::fromAngles(70.0, 30.0), 200, 200);
     int compared = 0, exact = 0, far = 0;
     for (int y = 0; y < 200; y += 7)

@@ -23,7 +23,7 @@ namespace {
 core::Bounds3 hullBox()
 {
     const auto& fixture = test::sphereScene();
-    return hullBounds(fixture.field.mesh, 0.4f, fixture.scene->distance().voxelSize());
+    return hullBounds(fixture.scene->bounds(), 0.4f, fixture.scene->distance().voxelSize());
 }
 
 /// Landing points of the curved rays of a column of pixels sweeping from the sphere's silhouette to
@@ -138,7 +138,7 @@ TEST(CurvedRay, ClosestApproachIsTheLeastDistanceAlongTheRay)
     const auto& fixture = test::vesselScene();
     auto sampler = fixture.scene->distance().sampler();
     const float quarterVoxel = 0.25f * fixture.scene->distance().voxelSize();
-    const core::Bounds3 box = hullBounds(fixture.field.mesh, 0.4f, fixture.scene->distance().voxelSize());
+    const core::Bounds3 box = hullBounds(fixture.scene->bounds(), 0.4f, fixture.scene->distance().voxelSize());
     const core::CameraFrame frame(core::Camera::fromAngles(90.0, 0.0), 60, 60);
     int found = 0;
     for (int y = 0; y < 60; ++y)
@@ -177,7 +177,7 @@ TEST(CurvedRay, HintedClosestApproachFindsTheRaysLowestValleyFromAnyHint)
     const auto& fixture = test::vesselScene();
     auto sampler = fixture.scene->distance().sampler();
     const float voxel = fixture.scene->distance().voxelSize();
-    const core::Bounds3 box = hullBounds(fixture.field.mesh, 0.4f, voxel);
+    const core::Bounds3 box = hullBounds(fixture.scene->bounds(), 0.4f, voxel);
     const core::CameraFrame frame(core::Camera::fromAngles(60.0, 30.0), 50, 50);
     int approached = 0, hintedElsewhere = 0;
     for (int y = 0; y < 50; ++y)
@@ -225,7 +225,7 @@ TEST(CurvedRay, ClosestApproachTakesTheMiddleOfAFlatValley)
     const test::SceneFixture fixture(std::move(box), 100);
     auto sampler = fixture.scene->distance().sampler();
     const float voxel = fixture.scene->distance().voxelSize();
-    const core::Bounds3 hull = hullBounds(fixture.field.mesh, 0.4f, voxel);
+    const core::Bounds3 hull = hullBounds(fixture.scene->bounds(), 0.4f, voxel);
     for (float y = -0.1f; y <= 0.1f; y += 0.01f)
         for (const float height : {0.05f, 0.1371f, 0.2f}) {
             // Along -z, at a constant height above the +x face.

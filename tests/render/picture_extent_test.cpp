@@ -27,6 +27,12 @@ core::TriangleMesh pointMesh(const glm::vec3& p)
     return mesh;
 }
 
+/// offsetMeshExtent of @a mesh's vertices in clusters of the default size.
+PictureExtent meshExtent(const core::TriangleMesh& mesh, const core::Camera& camera, double offset)
+{
+    return offsetMeshExtent(core::ClusteredVertices(mesh.positions), camera, offset);
+}
+
 /// Least and greatest x and y on the image plane over @a count points on the sphere of radius
 /// @a offset around every vertex (brute force).
 PictureExtent sampledExtent(const core::TriangleMesh& mesh, const core::Camera& camera, double offset, int count)
@@ -62,7 +68,7 @@ TEST(PictureExtent, BallAtTheTargetReachesTheTangentConesAngle)
     for (const core::Camera& camera : {core::Camera::fromAngles(90, 0), core::Camera::fromAngles(20, 130),
                                        core::Camera::fromAngles(0, 0), core::Camera::fromAngles(160, -75)})
         for (double radius : {0.0, 0.4, 1.0, 1.4, 2.2}) {
-            const PictureExtent extent = offsetMeshExtent(mesh, camera, radius);
+            const PictureExtent extent = meshExtent(mesh, camera, radius);
             const double expected = std::tan(std::asin(radius / 2.5));
             EXPECT_NEAR(extent.hi.x, expected, 1e-6) << radius;
             EXPECT_NEAR(extent.hi.y, expected, 1e-6) << radius;
@@ -85,7 +91,7 @@ TEST(PictureExtent, BallOffTheAxisMatchesSampledPointsOnItsSphere)
         core::Camera camera = core::Camera::fromAngles(90.0 * (uniform(random) + 1.0), 180.0 * uniform(random));
         camera.orthographic = trial % 4 == 3;
         const core::TriangleMesh mesh = pointMesh(centre);
-        const PictureExtent extent = offsetMeshExtent(mesh, camera, radius);
+        const PictureExtent extent = meshExtent(mesh, camera, radius);
         SCOPED_TRACE("trial " + std::to_string(trial));
         expectSampledWithin(extent, sampledExtent(mesh, camera, radius, 20000), 2e-3, 1e-9);
     }
@@ -99,7 +105,7 @@ TEST(PictureExtent, MeshGrownByTheHullOffsetMatchesBruteForce)
     for (const core::Camera& camera : {core::Camera::fromAngles(90, 0), core::Camera::fromAngles(40, 60),
                                        core::Camera::fromAngles(130, 200), core::Camera::fromAngles(5, -20)})
         for (double offset : {0.0, 0.4}) {
-            const PictureExtent extent = offsetMeshExtent(mesh, camera, offset);
+            const PictureExtent extent = meshExtent(mesh, camera, offset);
             // 200 directions lie within about 8 degrees of any direction: cos(8 deg) of the offset.
             expectSampledWithin(extent, sampledExtent(mesh, camera, offset, offset > 0.0 ? 200 : 1),
                                 offset > 0.0 ? 0.01 * offset + 1e-9 : 1e-9, 1e-9);
@@ -111,17 +117,46 @@ TEST(PictureExtent, MeshGrownByTheHullOffsetMatchesBruteForce)
 TEST(PictureExtent, BallReachingTheEyesPlaneIsUnbounded)
 {
     const core::Camera camera = core::Camera::fromAngles(90, 0);  // eye (0, 0, 2.5) looking down -z
-    EXPECT_TRUE(std::isinf(offsetMeshExtent(pointMesh(glm::vec3(0.0f, 0.0f, 2.0f)), camera, 0.6).hi.x));
+    EXPECT_TRUE(std::isinf(meshExtent(pointMesh(glm::vec3(0.0f, 0.0f, 2.0f)), camera, 0.6).hi.x));
     // Beside the eye on its right, across its plane: unbounded to the right and up and down, not to the left.
-    const PictureExtent crossing = offsetMeshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.4f)), camera, 0.2);
+    const PictureExtent crossing = meshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.4f)), camera, 0.2);
     EXPECT_TRUE(std::isinf(crossing.hi.x));
     EXPECT_TRUE(std::isinf(crossing.hi.y));
     EXPECT_TRUE(std::isinf(crossing.lo.y));
     EXPECT_NEAR(crossing.lo.x, std::tan(std::atan(1.0 / 0.1) - std::asin(0.2 / std::sqrt(1.01))), 1e-5);  // float positions
-    const PictureExtent near = offsetMeshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.29f)), camera, 0.2);
+    const PictureExtent near = meshExtent(pointMesh(glm::vec3(1.0f, 0.0f, 2.29f)), camera, 0.2);
     EXPECT_TRUE(std::isfinite(near.hi.x));
     EXPECT_GT(near.hi.x, 50.0);
-    EXPECT_THROW(offsetMeshExtent(pointMesh(glm::vec3(0.0f)), camera, -0.1), ValueError);
+    EXPECT_THROW(meshExtent(pointMesh(glm::vec3(0.0f)), camera, -0.1), ValueError);
+}
+
+// Clusters only skip work: with one vertex per cluster, the default size and one cluster of all
+// (every vertex measured) the extent is the same to the last bit, from far views, from eyes inside
+// the grown mesh or beside it (unbounded sides) and orthographic ones.
+TEST(PictureExtent, ClustersNeverChangeTheExtent)
+{
+    const core::TriangleMesh mesh = core::makeVesselTree().mesh;
+    const core::ClusteredVertices single(mesh.positions, 1), clustered(mesh.positions),
+        whole(mesh.positions, mesh.positions.size());
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    int unbounded = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        core::Camera camera = core::Camera::fromAngles(180.0 * uniform(random), 360.0 * uniform(random));
+        camera.eye *= trial % 3 == 0 ? 0.3 + 0.5 * uniform(random) : 1.0;  // a third from within or beside the mesh
+        camera.orthographic = trial % 5 == 4;
+        for (double offset : {0.0, 0.4, 1.0}) {
+            const PictureExtent reference = offsetMeshExtent(whole, camera, offset);
+            for (const core::ClusteredVertices* vertices : {&single, &clustered}) {
+                const PictureExtent extent = offsetMeshExtent(*vertices, camera, offset);
+                EXPECT_EQ(extent.lo, reference.lo) << "trial " << trial << " offset " << offset;
+                EXPECT_EQ(extent.hi, reference.hi) << "trial " << trial << " offset " << offset;
+            }
+            unbounded += std::isinf(reference.hi.x) || std::isinf(reference.lo.y);
+        }
+    }
+    EXPECT_GT(unbounded, 0);  // the near eyes reached the unbounded case
+    EXPECT_LT(unbounded, 150);
 }
 
 TEST(PictureExtent, UnitedTakesTheFartherReachOnEachSide)

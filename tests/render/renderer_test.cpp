@@ -219,7 +219,7 @@ TEST(Renderer, ShadowRaysDoNotLeakThroughOpenWalls)
     const Shader shader(scene, frame, ShadingOptions{}, *makeMethod("backfaces"));
     auto sampler = scene.distance().sampler();
     const float voxel = scene.distance().voxelSize();
-    const core::Bounds3 surfaceBox = hullBounds(scene.mesh(), 0.0f, voxel);
+    const core::Bounds3 surfaceBox = hullBounds(scene.bounds(), 0.0f, voxel);
     int blocked = 0, leaks = 0;
     for (int y = 0; y < 128; ++y)
         for (int x = 0; x < 128; ++x) {
@@ -244,7 +244,7 @@ TEST(Renderer, ShadowRaysLeavingAConvexObjectAreFullyLit)
 {
     const RenderScene& scene = *test::sphereScene().scene;
     auto sampler = scene.distance().sampler();
-    const core::Bounds3 surfaceBox = hullBounds(scene.mesh(), 0.0f, scene.distance().voxelSize());
+    const core::Bounds3 surfaceBox = hullBounds(scene.bounds(), 0.0f, scene.distance().voxelSize());
     std::mt19937 random(7);
     std::normal_distribution<float> gauss;
     float darkest = 1.0f;

@@ -198,7 +198,7 @@ TEST(ShaderFunctions, ClosestApproachIsTheCpus)
     textures.bind();
     const float voxel = float(fixture.volume.voxelSize());
     app::UniformSet volumeUniforms;
-    app::keepVolumeUniforms(volumeUniforms, slices, 0.0f, render::hullBounds(scene.mesh(), 0.0f, voxel));
+    app::keepVolumeUniforms(volumeUniforms, slices, 0.0f, render::hullBounds(scene.bounds(), 0.0f, voxel));
 
     app::GpuFrame frame;
     frame.camera = core::Camera::fromAngles(70.0, 30.0);
@@ -206,7 +206,7 @@ TEST(ShaderFunctions, ClosestApproachIsTheCpus)
     frame.method = render::makeMethod("inversevis-wrap");
     const core::CameraFrame camera(frame.camera, frame.width, frame.height);
     const float hullOffset = frame.method->curved()->rayParams().hullOffset;
-    const core::Bounds3 hullBox = render::hullBounds(scene.mesh(), hullOffset, voxel);
+    const core::Bounds3 hullBox = render::hullBounds(scene.bounds(), hullOffset, voxel);
 
     std::vector<glm::vec4> inputs;
     std::vector<glm::vec4> expected;

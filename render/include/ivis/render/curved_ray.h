@@ -86,9 +86,9 @@ bool findClosestApproachNear(DistanceField::Sampler& sampler, const glm::vec3& o
                              float hullOffset, const core::Bounds3& hullBox, float bottomGuess, float reach,
                              glm::vec3& seed, float& distance, float* bottom = nullptr);
 
-/// @brief A box around the hull {phi = hullOffset} of @a mesh: its bounds grown by the offset
-///        plus one voxel, clipped to the volume's box.
-core::Bounds3 hullBounds(const core::TriangleMesh& mesh, float hullOffset, float voxelSize);
+/// @brief A box around the hull {phi = hullOffset} of a mesh: its bounds @a meshBounds grown by the
+///        offset plus one voxel, clipped to the volume's box.
+core::Bounds3 hullBounds(const core::Bounds3& meshBounds, float hullOffset, float voxelSize);
 
 /// @brief v0 = alpha * g x (r x g) with g = grad phi / |grad phi| at the seed: alpha times the part
 ///        of the view direction r tangential to the hull.

@@ -7,7 +7,7 @@
 #pragma once
 
 #include <ivis/core/camera.h>
-#include <ivis/core/triangle_mesh.h>
+#include <ivis/core/clustered_vertices.h>
 
 #include <glm/vec2.hpp>
 
@@ -47,9 +47,13 @@ double widestFramedHalfHeight(const core::Camera& camera);
 /// @note Exact for the offset surface {distance to the mesh = offset} (the curved-ray hull): its
 ///       tangent planes through the eye touch the offset ball of a vertex of the convex hull, at a
 ///       point whose distance to the mesh is exactly @a offset.
+/// @note The same whatever the clusters: a cluster's vertices are skipped only where the ball that
+///       holds them, grown by the offset, lies wholly in front of the eye and reaches less far
+///       than some vertex's ball.
+/// @param vertices the mesh's vertices (RenderScene::vertices())
 /// @param offset the ball radius (normalised units, >= 0; 0: the mesh itself)
 /// @return an infinite reach on a side where a ball reaches the eye's side plane (the eye within
 ///         the offset of the mesh or the mesh beside or behind the eye)
-PictureExtent offsetMeshExtent(const core::TriangleMesh& mesh, const core::Camera& camera, double offset);
+PictureExtent offsetMeshExtent(const core::ClusteredVertices& vertices, const core::Camera& camera, double offset);
 
 }  // namespace ivis::render

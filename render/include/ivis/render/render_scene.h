@@ -3,6 +3,7 @@
 ///        distance sampler and the triangle BVH for straight rays, built once and shared by all threads.
 #pragma once
 
+#include <ivis/core/clustered_vertices.h>
 #include <ivis/core/surface_field.h>
 #include <ivis/core/triangle_bvh.h>
 #include <ivis/render/distance_field.h>
@@ -21,9 +22,15 @@ namespace ivis::render {
 /// @brief Immutable scene; @a field and @a volume must outlive it.
 class RenderScene {
 public:
-    /// @brief Builds the distance sampler and the BVH of @a field's mesh.
+    /// @brief Builds the distance sampler, the BVH and the vertex clusters of @a field's mesh.
     RenderScene(const core::SurfaceField& field, const vdb::SurfaceVolume& volume)
-        : mField(field), mVolume(volume), mDistance(volume), mBvh(field.mesh), mNormals(vertexNormals(field.mesh))
+        : mField(field),
+          mVolume(volume),
+          mDistance(volume),
+          mBvh(field.mesh),
+          mNormals(vertexNormals(field.mesh)),
+          mVertices(field.mesh.positions),
+          mBounds(core::bounds(field.mesh))
     {
     }
     /// @brief The mesh with the scalar it shows.
@@ -37,6 +44,10 @@ public:
     const DistanceField& distance() const { return mDistance; }
     /// @brief The mesh's BVH, which straight rays and landings query.
     const core::TriangleBvh& bvh() const { return mBvh; }
+    /// @brief The mesh's bounding box.
+    const core::Bounds3& bounds() const { return mBounds; }
+    /// @brief The mesh's vertices in spatial clusters, which framing scans (offsetMeshExtent).
+    const core::ClusteredVertices& vertices() const { return mVertices; }
     /// @brief Area-weighted vertex normals of the mesh (for smooth shading).
     const std::vector<glm::vec3>& normals() const { return mNormals; }
     /// @brief What @a make (a callable taking the scene, returning a T) derives from this scene (a
@@ -69,6 +80,8 @@ private:
     DistanceField mDistance;
     core::TriangleBvh mBvh;
     std::vector<glm::vec3> mNormals;
+    core::ClusteredVertices mVertices;
+    core::Bounds3 mBounds;
     mutable std::mutex mDerivedMutex;
     mutable std::map<std::string, std::unique_ptr<Derived>, std::less<>> mDerived;
 };
