@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <utility>
 
 namespace ivis::core {
@@ -180,6 +181,23 @@ TEST(TriangleMesh, InconsistentOrientationStillFormsOneLoop)
     ASSERT_EQ(loops.size(), 1u);
     EXPECT_EQ(loops[0].size(), 4u);
     expectLoopsCoverBoundaryOnce(mesh);
+}
+
+// Random soups over few vertices (edges used once, twice, thrice and more, in either direction,
+// triangles with a repeated vertex): as many boundary edges as brute force counts.
+TEST(TriangleMesh, BoundaryOfRandomSoupsMatchesBruteForce)
+{
+    std::mt19937 random(5);
+    for (int trial = 0; trial < 20; ++trial) {
+        TriangleMesh mesh;
+        const std::uint32_t vertices = 4 + std::uint32_t(trial) * 3;
+        mesh.positions.assign(vertices, glm::vec3(0.0f));
+        std::uniform_int_distribution<std::uint32_t> vertex(0, vertices - 1);
+        for (int t = 0; t < 10 + 15 * trial; ++t) mesh.triangles.push_back({vertex(random), vertex(random), vertex(random)});
+        std::size_t expected = 0;
+        for (const auto& [edge, walked] : bruteBoundary(mesh)) expected += edge.first != edge.second ? 1 : 0;
+        EXPECT_EQ(boundaryEdgeCount(mesh), expected) << "trial " << trial;
+    }
 }
 
 TEST(TriangleMesh, TwoTetrahedraSharingAVertex)
