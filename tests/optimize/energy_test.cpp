@@ -95,6 +95,27 @@ TEST(Energy, AlphaDerivativeMatchesFiniteDifferencesOnVesselTree)
     for (float alpha : {0.3f, 0.5f}) expectSmoothPixelsMatch(test::vesselScene(), core::Camera::fromAngles(90.0, 0.0), alpha);
 }
 
+// The grids of the mesh alone are made once per scene and resolution: evaluators of one resolution
+// share them (whatever else differs), another resolution gets its own, and a shared grid measures
+// as one of its own does.
+TEST(Energy, EvaluatorsOfOneResolutionShareTheScenesGrids)
+{
+    const auto& fixture = test::sphereScene();
+    EnergyOptions a, b, other;
+    a.visibilityResolution = b.visibilityResolution = 60;
+    a.paperLiteral = b.paperLiteral = other.paperLiteral = true;
+    b.resolution = 40;
+    other.visibilityResolution = 70;
+    const EnergyEvaluator first(*fixture.scene, a), second(*fixture.scene, b), third(*fixture.scene, other);
+    EXPECT_EQ(first.surfaceVoxels(), second.surfaceVoxels());
+    EXPECT_EQ(first.literalGrid(), second.literalGrid());
+    EXPECT_NE(first.surfaceVoxels(), third.surfaceVoxels());
+    EXPECT_EQ(third.surfaceVoxels()->lattice().resolution, 70);
+    const SurfaceVoxels own(fixture.field.mesh, 60);
+    EXPECT_EQ(first.surfaceVoxels()->count(), own.count());
+    EXPECT_EQ(first.surfaceVoxels()->totalArea(), own.totalArea());
+}
+
 TEST(Energy, SurfaceVisibilityCountsTheSurfaceVoxelsOfLandingPoints)
 {
     const auto& fixture = test::sphereScene();

@@ -50,12 +50,21 @@ EnergyEvaluator::EnergyEvaluator(const RenderScene& scene, const EnergyOptions& 
             throw InputError(scene.field().sourcePath + ": the scalar energy needs values of '" + scene.field().name +
                              "', which has none (every value is NaN)");
     }
+    // The grids of the mesh alone are the scene's, made once per resolution (the reveal's depends
+    // on the scalar's values, which a time series changes under the same scene).
+    const int resolution = options.visibilityResolution;
     if (options.kind == EnergyKind::Visibility)
-        mSurface = std::make_unique<SurfaceVoxels>(scene.mesh(), options.visibilityResolution);
+        mSurface = &scene.derived<SurfaceVoxels>("surface voxels " + std::to_string(resolution),
+                                                 [resolution](const RenderScene& s) {
+                                                     return SurfaceVoxels(s.mesh(), resolution);
+                                                 });
     if (options.kind == EnergyKind::Visibility && options.reveal)
         mReveal = std::make_unique<RevealMeasure>(scene.field(), options.importanceRange, options.visibilityResolution);
     if (options.kind == EnergyKind::Visibility && options.paperLiteral)
-        mLiteral = std::make_unique<VisibilityGrid>(scene.mesh(), scene.bvh(), options.visibilityResolution);
+        mLiteral = &scene.derived<VisibilityGrid>("paper-literal grid " + std::to_string(resolution),
+                                                  [resolution](const RenderScene& s) {
+                                                      return VisibilityGrid(s.mesh(), s.bvh(), resolution);
+                                                  });
 }
 
 float EnergyEvaluator::importance(const SurfacePoint& point) const

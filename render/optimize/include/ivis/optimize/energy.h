@@ -82,18 +82,20 @@ public:
     const EnergyOptions& options() const { return mOptions; }
     /// @brief The scene it measures.
     const render::RenderScene& scene() const { return mScene; }
-    /// @brief The surface voxels of the visibility kind (null for the scalar kind).
-    const SurfaceVoxels* surfaceVoxels() const { return mSurface.get(); }
+    /// @brief The surface voxels of the visibility kind (null for the scalar kind), the scene's
+    ///        for this resolution (made once per scene and resolution, shared by its evaluators).
+    const SurfaceVoxels* surfaceVoxels() const { return mSurface; }
     /// @brief The reveal measure (null unless EnergyOptions::reveal).
     const RevealMeasure* revealMeasure() const { return mReveal.get(); }
-    /// @brief The paper-literal grid (null unless EnergyOptions::paperLiteral).
-    const VisibilityGrid* literalGrid() const { return mLiteral.get(); }
+    /// @brief The paper-literal grid (null unless EnergyOptions::paperLiteral), shared as the
+    ///        surface voxels are.
+    const VisibilityGrid* literalGrid() const { return mLiteral; }
 
 private:
     const render::RenderScene& mScene;
     EnergyOptions mOptions;
-    std::unique_ptr<SurfaceVoxels> mSurface;
-    std::unique_ptr<VisibilityGrid> mLiteral;
+    const SurfaceVoxels* mSurface = nullptr;
+    const VisibilityGrid* mLiteral = nullptr;
     std::unique_ptr<RevealMeasure> mReveal;
 };
 
