@@ -73,6 +73,7 @@ void GpuRenderer::setMesh(const core::SurfaceField& field, const std::vector<glm
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 
     mField = &field;
+    mMeshBounds = core::bounds(field.mesh);
     mIndexCount = GLsizei(indices.size());
     keepMeshUniforms(mSceneUniforms, field);
     checkGl("uploading the mesh");
@@ -91,7 +92,7 @@ void GpuRenderer::setVolume(const DenseSlices& slices, float fineVoxelSize, floa
                          array.data(), GL_STATIC_DRAW);
         }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(core::bounds(mField->mesh), 0.0f, fineVoxelSize));
+    keepVolumeUniforms(mSceneUniforms, slices, interiorStep, render::hullBounds(mMeshBounds, 0.0f, fineVoxelSize));
     mVolumeScale = {fineVoxelSize, slices.reach};
     mHasVolume = true;
 }
@@ -156,7 +157,7 @@ void GpuRenderer::render(const GpuFrame& frame)
     GlProgram* indirectProgram = mHasVolume && method.drawsIndirect() ? &mIndirectPrograms.get(method.info()) : nullptr;
     if (indirectProgram) {
         mSceneUniforms.applyTo(*indirectProgram);
-        setIndirectUniforms(*indirectProgram, frame, camera, *mField, mVolumeScale);
+        setIndirectUniforms(*indirectProgram, frame, camera, *mField, mMeshBounds, mVolumeScale);
     }
 
     mTarget.beginFrame(frame.shading.background);

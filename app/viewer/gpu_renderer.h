@@ -82,6 +82,7 @@ private:
     GlTexture mColormap;
     OffscreenTarget mTarget;
     const core::SurfaceField* mField = nullptr;
+    core::Bounds3 mMeshBounds;  ///< mField's mesh's bounds
     GLsizei mIndexCount = 0;
     bool mHasVolume = false;
     VolumeScale mVolumeScale;

@@ -166,7 +166,7 @@ void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::
 }
 
 void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::CameraFrame& camera,
-                         const core::SurfaceField& field, const VolumeScale& volume)
+                         const core::SurfaceField& field, const core::Bounds3& meshBounds, const VolumeScale& volume)
 {
     setSharedUniforms(p, frame, camera);
     p.set("uViewport", glm::vec2(float(frame.width), float(frame.height)));
@@ -192,7 +192,7 @@ void setIndirectUniforms(GlProgram& p, const GpuFrame& frame, const core::Camera
         p.set("uRetries", curved->relaunches());
         p.set("uEscape", render::escapeDistance(volume.reach));
         p.set("uMaxHullSteps", kMaxHullSteps);
-        const core::Bounds3 hull = render::hullBounds(core::bounds(field.mesh), hullOffset, volume.fineVoxelSize);
+        const core::Bounds3 hull = render::hullBounds(meshBounds, hullOffset, volume.fineVoxelSize);
         p.set("uHullLo", glm::vec3(hull.lo));
         p.set("uHullHi", glm::vec3(hull.hi));
     }

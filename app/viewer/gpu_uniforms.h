@@ -40,8 +40,9 @@ void setMeshPassUniforms(GlProgram& program, const GpuFrame& frame, const core::
 
 /// @brief Sets the indirect pass's per-frame uniforms: look, camera, and every parameter of the
 ///        frame's method and every value it derives from the view (each method's program reads its own).
-/// @param field the surface (ring layout, hull box)
+/// @param field the surface (ring layout)
+/// @param meshBounds the bounds of its mesh (the hull box), kept from one frame to the next
 void setIndirectUniforms(GlProgram& program, const GpuFrame& frame, const core::CameraFrame& camera,
-                         const core::SurfaceField& field, const VolumeScale& volume);
+                         const core::SurfaceField& field, const core::Bounds3& meshBounds, const VolumeScale& volume);
 
 }  // namespace ivis::app

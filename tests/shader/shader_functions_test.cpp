@@ -231,7 +231,7 @@ TEST(ShaderFunctions, ClosestApproachIsTheCpus)
                 "OUT(0) = vec4(seed, found ? distance : -1.0);";
     call.setUniforms = [&](app::GlProgram& program) {
         volumeUniforms.applyTo(program);
-        app::setIndirectUniforms(program, frame, camera, scene.field(), {voxel, slices.reach});
+        app::setIndirectUniforms(program, frame, camera, scene.field(), scene.bounds(), {voxel, slices.reach});
     };
     const std::vector<glm::vec4> gpu = runShaderCall(call, inputs);
     // A ray whose valley bottom lies within a float's rounding of the hull may be found on one side
