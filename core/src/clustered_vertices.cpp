@@ -62,24 +62,23 @@ ClusteredVertices::ClusteredVertices(const std::vector<glm::vec3>& positions, st
         cluster.radius = cluster.radius * (1.0 + 1e-9) + 1e-12;  // holds its vertices whatever the rounding
         mClusters.push_back(cluster);
     };
-    std::vector<std::uint32_t> codes(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) codes[i] = order[i].first;
     const auto split = [&](auto&& self, std::size_t begin, std::size_t end, int shift) -> void {
         if (end - begin <= perCluster || shift < 0) {
             for (std::size_t b = begin; b < end; b += perCluster) addCluster(b, std::min(end, b + perCluster));
             return;
         }
         while (begin < end) {  // the children: runs sharing the code's bits above shift
-            const std::uint32_t cell = codes[begin] >> shift;
-            const std::size_t childEnd = std::size_t(
-                std::upper_bound(codes.begin() + std::ptrdiff_t(begin), codes.begin() + std::ptrdiff_t(end), cell,
-                                 [shift](std::uint32_t c, std::uint32_t code) { return c < (code >> shift); }) -
-                codes.begin());
-            self(self, begin, childEnd, shift - 3);
-            begin = childEnd;
+            const std::uint32_t cell = order[begin].first >> shift;
+            const auto first = order.begin() + std::ptrdiff_t(begin), last = order.begin() + std::ptrdiff_t(end);
+            const auto childEnd = std::upper_bound(first, last, cell, [shift](std::uint32_t c, const auto& entry) {
+                return c < (entry.first >> shift);
+            });
+            const std::size_t next = std::size_t(childEnd - order.begin());
+            self(self, begin, next, shift - 3);
+            begin = next;
         }
     };
-    split(split, 0, codes.size(), 27);
+    split(split, 0, order.size(), 27);
 }
 
 }  // namespace ivis::core

@@ -1,6 +1,7 @@
 /// @file render_scene.h
 /// @brief Everything the renderer reads about one surface: the normalised field, its volume, the
-///        distance sampler and the triangle BVH for straight rays, built once and shared by all threads.
+///        distance sampler, the triangle BVH for straight rays, the mesh's bounds and its clustered
+///        vertices for framing, built once and shared by all threads.
 #pragma once
 
 #include <ivis/core/clustered_vertices.h>
