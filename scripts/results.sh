@@ -23,10 +23,8 @@ start=$(date +%s)
 "${evaluate[@]}" "${pictures[@]}" --scalar pressure_t200 --json "$work/shared-artery.json" \
   "$SHARED/vampy_artery_cfd_pressure.ply"
 "${evaluate[@]}" "${pictures[@]}" --json "$work/shared-tree.json" scene:vessel-tree
-# The wider set: two generated hot spots on every mesh; the default method against the two
-# baselines (the faithful and adaptive models and the front view would double the run's time).
-wider_methods=neugebauer,mirror,inversevis-wrap
-"$cli" evaluate --opt-res 100 --display-res 1000 --methods "$wider_methods" --resume --hotspots 2 \
+# The wider set: every method, two generated hot spots on every mesh.
+"${evaluate[@]}" --hotspots 2 \
   --json "$work/wider.json" "$WIDER"/*.ply
 
 # Two views of the default method on every mesh (optimize --views 2), each kept once made.
@@ -121,8 +119,8 @@ scripts/results.sh            # ../shared/meshes and ../test-meshes (scripts/tes
 
 which runs \`inversevis evaluate --opt-res 100 --display-res 1000 --methods $methods\`
 on the shared meshes (the artery with \`--scalar pressure_t200\`, the generated vessel tree with its
-wall shear stress, every other mesh with \`--hotspots 2\`), the methods $wider_methods on the
-wider set ([test-meshes.md](test-meshes.md), \`--hotspots 2\`), joins the runs with
+wall shear stress, every other mesh with \`--hotspots 2\`) and on the wider set
+([test-meshes.md](test-meshes.md), \`--hotspots 2\`), joins the runs with
 \`inversevis merge\`, runs \`inversevis optimize --views 2\` on every mesh, and
 \`inversevis optimize --hotspots 2 --energy scalar\` on every mesh.
 

@@ -116,6 +116,9 @@ std::pair<EnergyValue, std::vector<HotSpotShape>> hotSpotsIn(const EnergyEvaluat
     render::RenderOptions options;
     options.width = options.height = size;
     options.method = method;
+    // Only the layers are judged: no shadow rays, outline or colour bar (the layers are the same).
+    options.shading.shadows = false;
+    options.outline = options.legend = false;
     const render::RenderResult picture = render::renderImage(measure.scene(), camera, options);
     return {measurePicture(measure, picture.layers), hotSpotShapes(*measure.revealMeasure(), picture.layers)};
 }
