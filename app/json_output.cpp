@@ -40,14 +40,17 @@ std::string readableSettingLine(const optimize::ReadableSetting& setting)
 
 std::string hotSpotChoiceLine(const optimize::HotSpotChoice& choice)
 {
-    char text[200];
-    if (!choice.chosen) {
-        std::snprintf(text, sizeof text, "hot-spot rule: none of the %d views judged shows every hot spot %.0f%% seen "
-                      "and as one place; the best view stays", choice.judged, 100.0 * optimize::kMinHotSpotSeen);
-        return text;
-    }
-    std::snprintf(text, sizeof text, "hot-spot rule: judged view %d is the best whose every hot spot reads as one place "
-                  "(%.0f%% of the best view's energy)", choice.judged, 100.0 * choice.energyRatio);
+    char text[300];
+    if (!choice.chosen)
+        std::snprintf(text, sizeof text, "hot-spot rule: no view could be judged (every one has a hot spot facing away); "
+                      "the best view stays");
+    else if (!choice.reads)
+        std::snprintf(text, sizeof text, "hot-spot rule: none of the %d views judged shows every hot spot %.0f%% seen and "
+                      "as one place; the nearest to it is taken (shortfall %.3f, %.0f%% of the best view's energy)",
+                      choice.judged, 100.0 * optimize::kMinHotSpotSeen, choice.shortfall, 100.0 * choice.energyRatio);
+    else
+        std::snprintf(text, sizeof text, "hot-spot rule: judged view %d is the best whose every hot spot reads as one "
+                      "place (%.0f%% of the best view's energy)", choice.judged, 100.0 * choice.energyRatio);
     return text;
 }
 

@@ -23,7 +23,7 @@ nlohmann::json visitedViewJson(const optimize::VisitedView& view);
 std::string readableSettingLine(const optimize::ReadableSetting& setting);
 
 /// @brief "hot-spot rule: judged view 3 is the best whose every hot spot reads as one place (82% of
-///        the best view's energy)", or that none did.
+///        the best view's energy)", or that none did and the nearest to it was taken.
 std::string hotSpotChoiceLine(const optimize::HotSpotChoice& choice);
 
 /// @brief The measures (docs/measures.md) of one view: visibility, voxel_visibility, paper_literal, front_visibility,

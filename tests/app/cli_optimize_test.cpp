@@ -140,6 +140,8 @@ TEST_F(Cli, OptimizeTakesTheBestViewWhoseHotSpotsReadAsOnePlace)
     EXPECT_FALSE(plain.contains("hot_spot_rule"));
     const nlohmann::json& choice = rule.at("hot_spot_rule");
     ASSERT_FALSE(choice.at("chosen_view").is_null()) << choice.dump();
+    EXPECT_TRUE(choice.at("reads").get<bool>()) << choice.dump();
+    EXPECT_EQ(choice.at("shortfall").get<double>(), 0.0);
     EXPECT_GE(choice.at("judged").get<int>(), 1);
     const nlohmann::json& chosen = rule.at("visited").at(choice.at("chosen_view").get<std::size_t>());
     EXPECT_EQ(rule.at("theta"), chosen.at("theta"));

@@ -3,7 +3,8 @@
 // its hull's; a view failing any one of them, or showing no hot spot, fails. Which way each hot
 // spot faces, the views that put one in the middle of the far side, which the rule skips, and the
 // views that show every hot spot side-on, which it tries where none of the search's views reads;
-// a picture judged whole (hotSpotsReadIn), as the readable rule asks where the rule chose the view.
+// a picture judged whole (hotSpotsReadIn), as the readable rule asks where the rule chose the view;
+// how far a view is from reading (hotSpotShortfall), by which the rule takes the nearest where none reads.
 #include "render/scene_fixture.h"
 
 #include <ivis/optimize/hot_spot_rule.h>
@@ -11,8 +12,10 @@
 #include <ivis/core/hot_spots.h>
 #include <ivis/core/errors.h>
 #include <ivis/core/procedural_scenes.h>
+#include <ivis/optimize/picture_measure.h>
 #include <ivis/optimize/viewpoint_annealing.h>
 #include <ivis/render/method_registry.h>
+#include <ivis/render/renderer.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -47,6 +50,50 @@ TEST(HotSpotRule, EveryHotSpotMustBeSeenAndReadAsOnePlace)
     EXPECT_FALSE(hotSpotsReadAsOnePlace({std::nan(""), 1.0}, {round, round}));
 }
 
+TEST(HotSpotRule, TheShortfallIsTheWorstBoundMissedRelativeToItAndZeroExactlyWhereTheHotSpotsRead)
+{
+    const HotSpotShape round = shape(0.98, 1.27);
+    EXPECT_EQ(hotSpotShortfall({0.95, 1.0}, {round, round}), 0.0);
+    EXPECT_EQ(hotSpotShortfall({0.9, 0.9}, {shape(0.9, 1.6), shape(0.9, 1.6)}), 0.0) << "the limits themselves";
+    EXPECT_NEAR(hotSpotShortfall({0.45, 1.0}, {round, round}), 0.5, 1e-12) << "half the seen share missing";
+    EXPECT_NEAR(hotSpotShortfall({1.0, 1.0}, {round, shape(0.72, 1.27)}), 0.2, 1e-12) << "a fifth of the share";
+    EXPECT_NEAR(hotSpotShortfall({1.0, 1.0}, {shape(0.98, 2.4), round}), 0.5, 1e-12) << "an outline half again";
+    EXPECT_NEAR(hotSpotShortfall({0.81, 1.0}, {shape(0.45, 2.0), shape(0.98, 2.4)}), 0.5, 1e-12) << "the worst of all";
+    EXPECT_NEAR(hotSpotShortfall({1.0}, {shape(0.0, 0.0)}), 1.0, 1e-12) << "a hot spot no pixel shows";
+    EXPECT_EQ(hotSpotShortfall({}, {}), 1.0);
+    EXPECT_EQ(hotSpotShortfall({1.0, 1.0}, {round}), 1.0);
+    EXPECT_EQ(hotSpotShortfall({std::nan(""), 1.0}, {round, round}), 1.0);
+    EXPECT_EQ(hotSpotShortfall({1.0}, {shape(0.98, std::nan(""))}), 1.0);
+    // Zero exactly where the views read, over a grid of values round the limits.
+    for (const double seen : {0.5, std::nextafter(0.9, 0.0), 0.9, 1.0})
+        for (const double share : {0.2, std::nextafter(0.9, 0.0), 0.9, 1.0})
+            for (const double outline : {1.0, 1.6, std::nextafter(1.6, 2.0), 3.0}) {
+                const std::vector<double> seens = {1.0, seen};
+                const std::vector<HotSpotShape> shapes = {round, shape(share, outline)};
+                EXPECT_EQ(hotSpotShortfall(seens, shapes) == 0.0, hotSpotsReadAsOnePlace(seens, shapes))
+                    << seen << " " << share << " " << outline;
+                EXPECT_GE(hotSpotShortfall(seens, shapes), 0.0);
+            }
+}
+
+TEST(HotSpotRule, OfTwoRoundsTheOneThatReadsOrComesNearerIsTakenAndBothJudgedCount)
+{
+    HotSpotChoice none, near, nearer, reads;
+    none.judged = 2;
+    near.judged = 3, near.chosen = 4, near.shortfall = 0.2;
+    nearer.judged = 5, nearer.chosen = 9, nearer.shortfall = 0.1;
+    reads.judged = 1, reads.chosen = 7, reads.shortfall = 0.0, reads.reads = true;
+    EXPECT_EQ(betterHotSpotChoice(near, nearer).chosen, std::optional<std::size_t>(9));
+    EXPECT_EQ(betterHotSpotChoice(nearer, near).chosen, std::optional<std::size_t>(9));
+    EXPECT_EQ(betterHotSpotChoice(near, near).chosen, std::optional<std::size_t>(4)) << "a tie keeps the first round's";
+    EXPECT_TRUE(betterHotSpotChoice(nearer, reads).reads);
+    EXPECT_EQ(betterHotSpotChoice(none, near).chosen, std::optional<std::size_t>(4));
+    EXPECT_EQ(betterHotSpotChoice(near, none).chosen, std::optional<std::size_t>(4));
+    EXPECT_FALSE(betterHotSpotChoice(none, none).chosen);
+    EXPECT_EQ(betterHotSpotChoice(near, nearer).judged, 8);
+    EXPECT_EQ(betterHotSpotChoice(none, reads).judged, 3);
+}
+
 /// A camera at distance 3 from the origin along @a direction, looking at the origin.
 core::Camera cameraFrom(const glm::dvec3& direction)
 {
@@ -54,6 +101,56 @@ core::Camera cameraFrom(const glm::dvec3& direction)
     camera.eye = 3.0 * glm::normalize(direction);
     camera.up = std::abs(glm::normalize(direction).y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
     return camera;
+}
+
+// One hot spot on the unit sphere, the front view alone: seen from two sides of it near the
+// silhouette (more than half of it, less than 90%), no view reads, and the rule takes the judged
+// view nearest to reading as its own pictures measure them, the second judged; the view from behind
+// it, facing away, is not judged.
+TEST(HotSpotRule, WhereNoViewReadsTheJudgedViewNearestToReadingIsTaken)
+{
+    core::SurfaceField sphere = core::makeSphere(4);
+    const core::HotSpots spots = core::placeHotSpots(sphere.mesh, 1);
+    sphere.values = core::hotSpotValues(sphere.mesh, spots);
+    const test::SceneFixture fixture(sphere, 100);
+    EnergyOptions options;
+    options.reveal = true;
+    options.importanceRange = {0.0f, 1.0f};
+    const EnergyEvaluator measure(*fixture.scene, options);
+    const glm::dvec3 toward = glm::normalize(glm::dvec3(spots.centres[0]));
+    const glm::dvec3 side = glm::normalize(glm::cross(toward, glm::dvec3(0.3, 1.0, 0.2)));
+    const glm::dvec3 otherSide = glm::cross(toward, side);
+    std::vector<VisitedView> visited(3);
+    const glm::dvec3 directions[3] = {glm::normalize(side + 0.5 * toward), -toward,
+                                      glm::normalize(otherSide + 0.6 * toward)};
+    for (int i = 0; i < 3; ++i) {
+        visited[i].camera = cameraFrom(directions[i]);
+        visited[i].method = render::makeMethod("front");
+        visited[i].value.energy = 1.0 - 0.25 * i;
+        visited[i].thetaDeg = glm::degrees(std::acos(directions[i].y));
+        visited[i].phiDeg = glm::degrees(std::atan2(directions[i].x, directions[i].z));
+    }
+    const HotSpotChoice choice = chooseHotSpotView(visited, 0, measure, 8);
+    EXPECT_EQ(choice.judged, 2) << "the view from behind it is not judged";
+    double shortfalls[3] = {1.0, 1.0, 1.0};
+    for (const int i : {0, 2}) {
+        render::RenderOptions picture;
+        picture.width = picture.height = kHotSpotPictureSize;
+        picture.method = visited[i].method;
+        const render::RenderResult result = render::renderImage(*fixture.scene, visited[i].camera, picture);
+        shortfalls[i] = hotSpotShortfall(measurePicture(measure, result.layers).reveal.perRegion,
+                                         hotSpotShapes(*measure.revealMeasure(), result.layers));
+        EXPECT_GT(shortfalls[i], 0.0) << "half of it seen does not read";
+        EXPECT_LT(shortfalls[i], 1.0);
+    }
+    ASSERT_LT(shortfalls[2], shortfalls[0]) << "the view more towards it is nearer to reading";
+    const std::size_t nearest = 2;
+    ASSERT_TRUE(choice.chosen);
+    EXPECT_EQ(*choice.chosen, nearest);
+    EXPECT_FALSE(choice.reads);
+    EXPECT_EQ(choice.shortfall, shortfalls[nearest]);
+    EXPECT_DOUBLE_EQ(choice.energyRatio, visited[nearest].value.energy);
+    EXPECT_EQ(choice.shapes.size(), 1u);
 }
 
 // One hot spot on the unit sphere, pictured by the front view alone: seen face on it is one round

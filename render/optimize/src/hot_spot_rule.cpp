@@ -18,14 +18,23 @@
 
 namespace ivis::optimize {
 
+double hotSpotShortfall(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes)
+{
+    if (seen.empty() || seen.size() != shapes.size()) return 1.0;
+    double shortfall = 0.0;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+        for (const double part : {(kMinHotSpotSeen - seen[i]) / kMinHotSpotSeen,
+                                  (kMinHotSpotShare - shapes[i].largestShare) / kMinHotSpotShare,
+                                  (shapes[i].outlineRatio - kMaxHotSpotOutline) / kMaxHotSpotOutline}) {
+            if (std::isnan(part)) return 1.0;
+            shortfall = std::max(shortfall, part);
+        }
+    return shortfall;
+}
+
 bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes)
 {
-    if (seen.empty() || seen.size() != shapes.size()) return false;
-    for (std::size_t i = 0; i < seen.size(); ++i)
-        if (!(seen[i] >= kMinHotSpotSeen && shapes[i].largestShare >= kMinHotSpotShare &&
-              shapes[i].outlineRatio <= kMaxHotSpotOutline))
-            return false;
-    return true;
+    return !seen.empty() && seen.size() == shapes.size() && hotSpotShortfall(seen, shapes) == 0.0;
 }
 
 std::vector<HotSpotFacing> hotSpotFacings(const core::TriangleMesh& mesh, const RevealMeasure& reveal)
@@ -158,21 +167,33 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
         if (interrupter && interrupter->wasInterrupted()) throw Cancelled("hot-spot rule cancelled");
         judged.push_back(index);
         auto [value, shapes] = hotSpotsIn(measure, view.camera, view.method, kHotSpotPictureSize);
-        if (!hotSpotsReadAsOnePlace(value.reveal.perRegion, shapes)) continue;
-        choice.chosen = index;
-        choice.shapes = std::move(shapes);
+        const double shortfall = hotSpotShortfall(value.reveal.perRegion, shapes);
+        if (choice.chosen && !(shortfall < choice.shortfall)) continue;  // no nearer than one judged before
         const double bestEnergy = visited[best].value.energy;
+        choice.chosen = index;
+        choice.reads = shortfall == 0.0;
+        choice.shortfall = shortfall;
+        choice.shapes = std::move(shapes);
         choice.energyRatio = bestEnergy > 0.0 ? view.value.energy / bestEnergy : 1.0;
-        break;
+        if (choice.reads) break;
     }
     choice.judged = int(judged.size());
     return choice;
+}
+
+HotSpotChoice betterHotSpotChoice(const HotSpotChoice& first, const HotSpotChoice& second)
+{
+    HotSpotChoice better = second.chosen && (!first.chosen || second.shortfall < first.shortfall) ? second : first;
+    better.judged = first.judged + second.judged;
+    return better;
 }
 
 nlohmann::json hotSpotChoiceJson(const HotSpotChoice& choice)
 {
     return {{"judged", choice.judged},
             {"chosen_view", choice.chosen ? nlohmann::json(*choice.chosen) : nlohmann::json()},
+            {"reads", choice.reads},
+            {"shortfall", choice.shortfall},
             {"energy_ratio", choice.energyRatio},
             {"shapes", hotSpotShapesJson(choice.shapes)}};
 }

@@ -184,33 +184,35 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         const EnergyEvaluator& measure = hotSpotMeasure.emplace(evaluator.scene(), judged);
         if (measure.revealMeasure() && measure.revealMeasure()->regionCount() > 0) {
             result.hotSpots = chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter);
-            if (!result.hotSpots->chosen) {
+            if (!result.hotSpots->reads) {
                 // None of the search's views reads: views that show every hot spot side-on, visited
-                // now (they become the best view only where one reads).
+                // now (they become the best view only where one reads or comes nearer to reading).
                 const std::size_t from = result.visited.size();
                 const std::vector<HotSpotFacing> facings =
                     hotSpotFacings(evaluator.scene().mesh(), *measure.revealMeasure());
                 for (const auto& [theta, phi] : sideOnViews(facings, 2 * options.hotSpotViews))
                     result.visited.push_back(visit(theta, phi, result.bestView().method));
-                const int judgedBefore = result.hotSpots->judged;
-                result.hotSpots =
-                    chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter, from);
-                result.hotSpots->judged += judgedBefore;
+                result.hotSpots = betterHotSpotChoice(
+                    *result.hotSpots,
+                    chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter, from));
             }
             if (result.hotSpots->chosen) result.best = *result.hotSpots->chosen;
         }
     }
     if (options.readableResolution > 0 && !start->info().readableRuleParameter.empty()) {
         VisitedView& best = result.visited[result.best];
-        // Where the hot-spot rule chose the view, a looser rule must keep its hot spots one place,
-        // judged at the measure's size (a looser rule draws more of a ring's outer edge, which
-        // can carry a sliver of a hot spot apart from the rest).
+        // Where the hot-spot rule chose a view that reads, a looser rule must keep its hot spots one
+        // place, judged at the measure's size (a looser rule draws more of a ring's outer edge,
+        // which can carry a sliver of a hot spot apart from the rest); where it chose the view
+        // nearest to reading, no rule looser than the one it was judged with.
         std::function<bool(const render::MethodPtr&)> keepsHotSpots;
-        if (result.hotSpots && result.hotSpots->chosen)
+        if (result.hotSpots && result.hotSpots->reads)
             keepsHotSpots = [&](const render::MethodPtr& method) {
                 return hotSpotsReadIn(*hotSpotMeasure, cameraAt(best.thetaDeg, best.phiDeg, *method), method,
                                       options.readableResolution);
             };
+        else if (result.hotSpots && result.hotSpots->chosen)
+            keepsHotSpots = [](const render::MethodPtr&) { return false; };
         result.readable = loosestReadable(evaluator.scene(), best.camera, best.method,
                                           {options.readableResolution, options.readableResolution}, options.minCoherence,
                                           keepsHotSpots);

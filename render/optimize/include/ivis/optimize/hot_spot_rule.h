@@ -76,15 +76,29 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
 /// @brief What the hot-spot rule chose.
 struct HotSpotChoice {
     int judged = 0;                     ///< views whose pictures were judged
-    std::optional<std::size_t> chosen;  ///< the visited view whose hot spots read (none: no judged view's did)
+    std::optional<std::size_t> chosen;  ///< the visited view taken: the first judged whose hot spots read, else
+                                        ///< the judged view nearest to reading (none: no view was judged)
+    bool reads = false;                 ///< whether the chosen view's hot spots read as one place
+    double shortfall = 1.0;             ///< the chosen view's hotSpotShortfall in its judged picture (0: it reads)
     std::vector<HotSpotShape> shapes;   ///< the chosen view's hot spots in its judged picture
     double energyRatio = 1.0;           ///< the chosen view's energy over the search's best view's
 };
+
+/// @brief Of two choices of the rule over other views, the one that reads, else the one nearer to
+///        reading (@a first where they tie); the judged views of both counted.
+HotSpotChoice betterHotSpotChoice(const HotSpotChoice& first, const HotSpotChoice& second);
 
 /// @brief True when every region of @a seen (RevealValue::perRegion) is at least kMinHotSpotSeen seen
 ///        and every one of @a shapes has a largest share of at least kMinHotSpotShare and an outline
 ///        ratio of at most kMaxHotSpotOutline (false without any region).
 bool hotSpotsReadAsOnePlace(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes);
+
+/// @brief How far the hot spots of @a seen and @a shapes are from reading as one place: over the
+///        regions, the largest shortfall of a bound relative to the bound ((kMinHotSpotSeen - seen) /
+///        kMinHotSpotSeen, the same of the largest share, (outline ratio - kMaxHotSpotOutline) /
+///        kMaxHotSpotOutline); 0 exactly where hotSpotsReadAsOnePlace holds, 1 without any region,
+///        with a shape missing or with a NaN.
+double hotSpotShortfall(const std::vector<double>& seen, const std::vector<HotSpotShape>& shapes);
 
 /// @brief Whether every hot spot (counted as @a measure, an evaluator with the reveal, counts them)
 ///        reads as one place (hotSpotsReadAsOnePlace) in @a method's @a size x @a size picture from @a camera.
@@ -95,14 +109,15 @@ bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, 
 ///        least kHotSpotViewSeparationDeg from those judged before it and none with a hot spot facing
 ///        away (someHotSpotFacesAway), judged on a kHotSpotPictureSize picture from its camera with
 ///        its method (its hot spots counted as @a measure, an evaluator with the reveal, counts
-///        them), up to the first whose hot spots read.
+///        them), up to the first whose hot spots read; where none reads, the one nearest to reading
+///        (the least hotSpotShortfall, the first judged of those that tie).
 /// @param interrupter optional cancel, asked before each picture
 /// @throw ValueError when @a measure does not measure the reveal; Cancelled when interrupted
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
                                 int views, core::Interrupter* interrupter = nullptr, std::size_t from = 0);
 
 /// @brief What the rule chose, as optimize --json reports it: {"judged", "chosen_view" (the index in
-///        "visited", null for none), "energy_ratio", "shapes"}.
+///        "visited", null for none), "reads", "shortfall", "energy_ratio", "shapes"}.
 nlohmann::json hotSpotChoiceJson(const HotSpotChoice& choice);
 
 }  // namespace ivis::optimize
