@@ -77,7 +77,8 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "views (each at least 20 degrees from those before) whose every hot spot is at least 90% seen "
                        "and reads as one place in a 500 x 500 picture (share in one region at least 0.9, outline "
                        "ratio at most 1.6; beyond the paper); where none does, as many more views that show every "
-                       "hot spot side-on are tried; where none of those does either, the best view stays; 0: no rule")
+                       "hot spot side-on are tried; where none of those does either, the judged view nearest to reading "
+                       "is taken; 0: no rule")
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
 }
