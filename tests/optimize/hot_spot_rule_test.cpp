@@ -103,21 +103,43 @@ core::Camera cameraFrom(const glm::dvec3& direction)
     return camera;
 }
 
+/// One hot spot on the unit sphere, its scene at volume 100 and a measure of its reveal.
+struct OneHotSpotSphere {
+    core::HotSpots spots;
+    test::SceneFixture fixture;
+    EnergyEvaluator measure;
+
+    OneHotSpotSphere() : OneHotSpotSphere(core::makeSphere(4)) {}
+
+private:
+    explicit OneHotSpotSphere(core::SurfaceField sphere)
+        : spots(core::placeHotSpots(sphere.mesh, 1)),
+          fixture(withHotSpots(std::move(sphere), spots), 100),
+          measure(*fixture.scene, revealOptions())
+    {
+    }
+    static core::SurfaceField withHotSpots(core::SurfaceField sphere, const core::HotSpots& spots)
+    {
+        sphere.values = core::hotSpotValues(sphere.mesh, spots);
+        return sphere;
+    }
+    static EnergyOptions revealOptions()
+    {
+        EnergyOptions options;
+        options.reveal = true;
+        options.importanceRange = {0.0f, 1.0f};
+        return options;
+    }
+};
+
 // One hot spot on the unit sphere, the front view alone: seen from two sides of it near the
 // silhouette (more than half of it, less than 90%), no view reads, and the rule takes the judged
 // view nearest to reading as its own pictures measure them, the second judged; the view from behind
 // it, facing away, is not judged.
 TEST(HotSpotRule, WhereNoViewReadsTheJudgedViewNearestToReadingIsTaken)
 {
-    core::SurfaceField sphere = core::makeSphere(4);
-    const core::HotSpots spots = core::placeHotSpots(sphere.mesh, 1);
-    sphere.values = core::hotSpotValues(sphere.mesh, spots);
-    const test::SceneFixture fixture(sphere, 100);
-    EnergyOptions options;
-    options.reveal = true;
-    options.importanceRange = {0.0f, 1.0f};
-    const EnergyEvaluator measure(*fixture.scene, options);
-    const glm::dvec3 toward = glm::normalize(glm::dvec3(spots.centres[0]));
+    const OneHotSpotSphere one;
+    const glm::dvec3 toward = glm::normalize(glm::dvec3(one.spots.centres[0]));
     const glm::dvec3 side = glm::normalize(glm::cross(toward, glm::dvec3(0.3, 1.0, 0.2)));
     const glm::dvec3 otherSide = glm::cross(toward, side);
     std::vector<VisitedView> visited(3);
@@ -130,16 +152,16 @@ TEST(HotSpotRule, WhereNoViewReadsTheJudgedViewNearestToReadingIsTaken)
         visited[i].thetaDeg = glm::degrees(std::acos(directions[i].y));
         visited[i].phiDeg = glm::degrees(std::atan2(directions[i].x, directions[i].z));
     }
-    const HotSpotChoice choice = chooseHotSpotView(visited, 0, measure, 8);
+    const HotSpotChoice choice = chooseHotSpotView(visited, 0, one.measure, 8);
     EXPECT_EQ(choice.judged, 2) << "the view from behind it is not judged";
     double shortfalls[3] = {1.0, 1.0, 1.0};
     for (const int i : {0, 2}) {
         render::RenderOptions picture;
         picture.width = picture.height = kHotSpotPictureSize;
         picture.method = visited[i].method;
-        const render::RenderResult result = render::renderImage(*fixture.scene, visited[i].camera, picture);
-        shortfalls[i] = hotSpotShortfall(measurePicture(measure, result.layers).reveal.perRegion,
-                                         hotSpotShapes(*measure.revealMeasure(), result.layers));
+        const render::RenderResult result = render::renderImage(*one.fixture.scene, visited[i].camera, picture);
+        shortfalls[i] = hotSpotShortfall(measurePicture(one.measure, result.layers).reveal.perRegion,
+                                         hotSpotShapes(*one.measure.revealMeasure(), result.layers));
         EXPECT_GT(shortfalls[i], 0.0) << "half of it seen does not read";
         EXPECT_LT(shortfalls[i], 1.0);
     }
@@ -157,20 +179,13 @@ TEST(HotSpotRule, WhereNoViewReadsTheJudgedViewNearestToReadingIsTaken)
 // disc, wholly seen; from the opposite side it is not seen at all.
 TEST(HotSpotRule, APictureIsJudgedWhole)
 {
-    core::SurfaceField sphere = core::makeSphere(4);
-    const core::HotSpots spots = core::placeHotSpots(sphere.mesh, 1);
-    sphere.values = core::hotSpotValues(sphere.mesh, spots);
-    const test::SceneFixture fixture(sphere, 100);
-    EnergyOptions options;
-    options.reveal = true;
-    options.importanceRange = {0.0f, 1.0f};
-    const EnergyEvaluator measure(*fixture.scene, options);
-    ASSERT_EQ(measure.revealMeasure()->regionCount(), 1u);
+    const OneHotSpotSphere one;
+    ASSERT_EQ(one.measure.revealMeasure()->regionCount(), 1u);
     const render::MethodPtr front = render::makeMethod("front");
-    const glm::dvec3 towardSpot(spots.centres[0]);
-    EXPECT_TRUE(hotSpotsReadIn(measure, cameraFrom(towardSpot), front, 200));
-    EXPECT_FALSE(hotSpotsReadIn(measure, cameraFrom(-towardSpot), front, 200));
-    EXPECT_THROW(hotSpotsReadIn(EnergyEvaluator(*fixture.scene, EnergyOptions{}), cameraFrom(towardSpot), front, 200),
+    const glm::dvec3 towardSpot(one.spots.centres[0]);
+    EXPECT_TRUE(hotSpotsReadIn(one.measure, cameraFrom(towardSpot), front, 200));
+    EXPECT_FALSE(hotSpotsReadIn(one.measure, cameraFrom(-towardSpot), front, 200));
+    EXPECT_THROW(hotSpotsReadIn(EnergyEvaluator(*one.fixture.scene, EnergyOptions{}), cameraFrom(towardSpot), front, 200),
                  ValueError)
         << "no reveal measured";
 }
