@@ -78,7 +78,8 @@ void OptimizationOptions::addTo(CLI::App& command)
                        "and reads as one place in a 500 x 500 picture (share in one region at least 0.9, outline "
                        "ratio at most 1.6; beyond the paper); where none does, as many more views that show every "
                        "hot spot side-on are tried; where none of those does either, the judged view nearest to reading "
-                       "is taken; 0: no rule")
+                       "is taken, unless (where it misses by at most 5% of a bound) the same view with its tightest "
+                       "readable rule or one 4 degrees off in theta, phi or both reads; 0: no rule")
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
 }

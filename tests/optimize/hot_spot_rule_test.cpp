@@ -4,7 +4,8 @@
 // spot faces, the views that put one in the middle of the far side, which the rule skips, and the
 // views that show every hot spot side-on, which it tries where none of the search's views reads;
 // a picture judged whole (hotSpotsReadIn), as the readable rule asks where the rule chose the view;
-// how far a view is from reading (hotSpotShortfall), by which the rule takes the nearest where none reads.
+// how far a view is from reading (hotSpotShortfall), by which the rule takes the nearest where none
+// reads; and the views it tries round that nearest one first (viewsRoundTheNearest).
 #include "render/scene_fixture.h"
 
 #include <ivis/optimize/hot_spot_rule.h>
@@ -307,6 +308,47 @@ TEST(HotSpotRule, HotSpotsFacingNoOneWayAreSideOnAtTheSilhouette)
     EXPECT_TRUE(sideOnViews({left}, 8).empty());
     EXPECT_TRUE(sideOnViews({left, left}, 8).empty());
     EXPECT_TRUE(sideOnViews({}, 8).empty());
+}
+
+/// The wrap's stable_shift of @a method.
+float stableShift(const render::Method& method) { return method.values().at("stable_shift").at(0); }
+
+// Round the view nearest to reading: first that view with the tightest rung of its readable rule,
+// then its eight neighbours 4 degrees off in theta, phi or both, with its own method, kept on the
+// sphere across a pole and across phi = 180; a method without the rule, or already at its
+// tightest, has the neighbours only.
+TEST(HotSpotRule, RoundTheNearestViewItsTighterRuleFirstThenItsNeighbours)
+{
+    VisitedView nearest;
+    nearest.thetaDeg = 60.0;
+    nearest.phiDeg = 178.0;
+    nearest.method = render::makeMethod("inversevis-wrap");
+    const std::vector<CandidateView> round = viewsRoundTheNearest(nearest);
+    ASSERT_EQ(round.size(), 9u);
+    EXPECT_EQ(round[0].thetaDeg, 60.0);
+    EXPECT_EQ(round[0].phiDeg, 178.0);
+    EXPECT_FLOAT_EQ(stableShift(*round[0].method), stableShift(*nearest.method) / 8.0f);
+    for (std::size_t i = 1; i < round.size(); ++i) {
+        EXPECT_EQ(round[i].method, nearest.method);
+        EXPECT_GE(round[i].thetaDeg, 0.0);
+        EXPECT_LE(round[i].thetaDeg, 180.0);
+        EXPECT_LE(std::abs(round[i].phiDeg), 180.0);
+        const double apart = degreesBetweenViews(nearest.thetaDeg, nearest.phiDeg, round[i].thetaDeg, round[i].phiDeg);
+        EXPECT_GT(apart, 3.0) << i;
+        EXPECT_LT(apart, std::sqrt(2.0) * kHotSpotNeighbourDeg) << i;
+        for (std::size_t j = 1; j < i; ++j)
+            EXPECT_GT(degreesBetweenViews(round[i].thetaDeg, round[i].phiDeg, round[j].thetaDeg, round[j].phiDeg), 1.0);
+    }
+    nearest.thetaDeg = 2.0;  // beside the pole: the neighbours beyond it lie across it
+    for (const CandidateView& view : viewsRoundTheNearest(nearest)) {
+        EXPECT_GE(view.thetaDeg, 0.0);
+        EXPECT_LE(degreesBetweenViews(2.0, 178.0, view.thetaDeg, view.phiDeg), std::sqrt(2.0) * kHotSpotNeighbourDeg);
+    }
+    nearest.method = render::makeMethod("front");
+    EXPECT_EQ(viewsRoundTheNearest(nearest).size(), 8u) << "no readable rule";
+    const render::MethodPtr wrap = render::makeMethod("inversevis-wrap");
+    nearest.method = render::withValues(*wrap, {{"stable_shift", {wrap->info().parameter("stable_shift")->lo}}});
+    EXPECT_EQ(viewsRoundTheNearest(nearest).size(), 8u) << "already at its tightest";
 }
 
 }  // namespace

@@ -154,8 +154,10 @@ TEST(ReadableRule, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
     const ReadableSetting tighter = loosestReadable(scene, camera, wrap, kSize, between);
     EXPECT_LT(stableShift(*tighter.method), ladder[own]);
     expectChosenRung(tighter, between);
-    // A rung looser than the method's own must also pass `keeps`, asked from the loosest down; the
-    // own rung and tighter ones are never asked. Any coherence: the loosest rung that keeps.
+    // A rung looser than the method's own must also pass `keeps`: the chosen rung is asked first,
+    // then the rest by bisection, so that where every rung up to some one keeps, that one is taken
+    // after at most 1 + log2 of the looser rungs asked; the own rung and tighter ones are never asked.
+    // Any coherence: the loosest rung that keeps.
     std::vector<float> asked;
     const auto keepsUpTo = [&](float limit) {
         return [&asked, limit](const render::MethodPtr& method) {
@@ -163,12 +165,20 @@ TEST(ReadableRule, KeepsTheLoosestSettingBeforeTheCoherenceFallsShort)
             return stableShift(*method) <= limit;
         };
     };
-    EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1e-6, keepsUpTo(ladder[own + 2])).method),
-                    ladder[own + 2]);
-    EXPECT_EQ(asked, std::vector<float>(ladder.rbegin(), ladder.rend() - std::ptrdiff_t(own + 2)));
+    const std::size_t looser = ladder.size() - own - 1;
+    ASSERT_GE(looser, 4u);
+    for (std::size_t limit = own; limit < ladder.size(); ++limit) {
+        asked.clear();
+        EXPECT_FLOAT_EQ(stableShift(*loosestReadable(scene, camera, wrap, kSize, 1e-6, keepsUpTo(ladder[limit])).method),
+                        ladder[limit])
+            << limit;
+        ASSERT_FALSE(asked.empty());
+        EXPECT_EQ(asked.front(), ladder.back()) << "the chosen rung first";
+        EXPECT_LE(asked.size(), 1 + std::size_t(std::ceil(std::log2(double(looser))))) << limit;
+        for (const float value : asked) EXPECT_GT(value, ladder[own]);
+    }
     asked.clear();
     EXPECT_EQ(loosestReadable(scene, camera, wrap, kSize, 1e-6, keepsUpTo(0.0f)).method, wrap) << "its own rung";
-    EXPECT_EQ(asked.size(), ladder.size() - own - 1);
     asked.clear();
     EXPECT_LT(stableShift(*loosestReadable(scene, camera, wrap, kSize, between, keepsUpTo(0.0f)).method), ladder[own]);
     EXPECT_TRUE(asked.empty()) << "a rung at or below its own is not asked";

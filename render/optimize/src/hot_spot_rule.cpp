@@ -3,7 +3,9 @@
 #include <ivis/core/errors.h>
 #include <ivis/core/sphere_lattice.h>
 #include <ivis/optimize/picture_measure.h>
+#include <ivis/optimize/readable_rule.h>
 #include <ivis/optimize/viewpoint_annealing.h>
+#include <ivis/render/method_registry.h>
 #include <ivis/render/renderer.h>
 
 #include <nlohmann/json.hpp>
@@ -116,6 +118,24 @@ std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>&
     return views;
 }
 
+std::vector<CandidateView> viewsRoundTheNearest(const VisitedView& nearest)
+{
+    std::vector<CandidateView> views;
+    const std::string& parameter = nearest.method->info().readableRuleParameter;
+    const std::vector<float> ladder = readableRuleLadder(*nearest.method);
+    if (!ladder.empty() && ladder.front() < nearest.method->values().at(parameter).at(0))
+        views.push_back({nearest.thetaDeg, nearest.phiDeg, render::withValues(*nearest.method, {{parameter, {ladder.front()}}})});
+    for (int dTheta = -1; dTheta <= 1; ++dTheta)
+        for (int dPhi = -1; dPhi <= 1; ++dPhi) {
+            if (dTheta == 0 && dPhi == 0) continue;
+            CandidateView view{nearest.thetaDeg + dTheta * kHotSpotNeighbourDeg,
+                               nearest.phiDeg + dPhi * kHotSpotNeighbourDeg, nearest.method};
+            wrapViewAngles(view.thetaDeg, view.phiDeg);
+            views.push_back(view);
+        }
+    return views;
+}
+
 namespace {
 
 /// The hot spots' shapes and reveal in @a method's @a size x @a size picture from @a camera.
@@ -142,7 +162,7 @@ bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, 
 }
 
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
-                                int views, core::Interrupter* interrupter, std::size_t from)
+                                int views, core::Interrupter* interrupter, std::size_t from, double separationDeg)
 {
     if (!measure.revealMeasure())
         throw ValueError("the hot-spot rule needs a measure of the hot-spot reveal (a scalar with important regions)");
@@ -161,7 +181,7 @@ HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::si
         if (someHotSpotFacesAway(facings, view.camera)) continue;
         if (std::any_of(judged.begin(), judged.end(), [&](std::size_t j) {
                 return degreesBetweenViews(view.thetaDeg, view.phiDeg, visited[j].thetaDeg, visited[j].phiDeg) <
-                       kHotSpotViewSeparationDeg;
+                       separationDeg;
             }))
             continue;
         if (interrupter && interrupter->wasInterrupted()) throw Cancelled("hot-spot rule cancelled");

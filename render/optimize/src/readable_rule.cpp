@@ -129,8 +129,19 @@ ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Ca
     const auto atRung = [&](std::size_t k) {
         return ladder[k] == own ? method : render::withValues(*method, {{parameter, {ladder[k]}}});
     };
-    if (keeps)
-        while (ladder[chosen] > own && !keeps(atRung(chosen))) --chosen;
+    if (keeps && ladder[chosen] > own && !keeps(atRung(chosen))) {
+        // The loosest rung between the own one (taken to keep) and the chosen one that keeps, by
+        // bisection: each rung draws every ray a tighter one draws, so once a rung splits what
+        // `keeps` asks for, looser ones are taken to split it too.
+        std::size_t keeping = std::size_t(std::find(ladder.begin(), ladder.end(), own) - ladder.begin());
+        std::size_t splitting = chosen;
+        IVIS_CHECK(keeping < splitting);
+        while (splitting - keeping > 1) {
+            const std::size_t middle = (keeping + splitting) / 2;
+            (keeps(atRung(middle)) ? keeping : splitting) = middle;
+        }
+        chosen = keeping;
+    }
     const bool keepsMinimum = coherenceLowerBound(coherence[chosen]) >= minCoherence;
     return {atRung(chosen), coherence[chosen], size, keepsMinimum};
 }

@@ -22,20 +22,6 @@ double symmetricUniform(std::mt19937_64& random)
     return 2.0 * (double(random() >> 11) * (1.0 / 9007199254740992.0)) - 1.0;
 }
 
-/// Keeps a proposal on the sphere: theta reflected into [0, 180] (crossing a pole turns phi by
-/// 180 degrees), phi wrapped into (-180, 180].
-void wrapAngles(double& theta, double& phi)
-{
-    if (theta < 0.0) {
-        theta = -theta;
-        phi += 180.0;
-    } else if (theta > 180.0) {
-        theta = 360.0 - theta;
-        phi += 180.0;
-    }
-    phi = std::remainder(phi, 360.0);
-}
-
 /// Measures the @a count visited views of highest energy on @a finalist and makes the best there
 /// (the higher energy breaking ties) the result's best.
 void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvaluator& finalist)
@@ -56,6 +42,18 @@ void chooseAmongFinalists(AnnealingResult& result, int count, const EnergyEvalua
 }
 
 }  // namespace
+
+void wrapViewAngles(double& theta, double& phi)
+{
+    if (theta < 0.0) {
+        theta = -theta;
+        phi += 180.0;
+    } else if (theta > 180.0) {
+        theta = 360.0 - theta;
+        phi += 180.0;
+    }
+    phi = std::remainder(phi, 360.0);
+}
 
 double degreesBetweenViews(double theta1, double phi1, double theta2, double phi2)
 {
@@ -146,7 +144,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
     for (int step = 0; step < options.steps; ++step) {
         double theta = current.thetaDeg + options.neighbourhoodDeg * symmetricUniform(random);
         double phi = current.phiDeg + options.neighbourhoodDeg * symmetricUniform(random);
-        wrapAngles(theta, phi);
+        wrapViewAngles(theta, phi);
         VisitedView proposal = visit(theta, phi, current.method);
         const double gain = proposal.value.energy - current.value.energy;
         const double draw = 0.5 * (symmetricUniform(random) + 1.0);
@@ -163,7 +161,7 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
         for (const auto& [dTheta, dPhi] : {std::pair{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}}) {
             double theta = centre.thetaDeg + polishStep * dTheta;
             double phi = centre.phiDeg + polishStep * dPhi;
-            wrapAngles(theta, phi);
+            wrapViewAngles(theta, phi);
             VisitedView view = visit(theta, phi, centre.method);
             view.polish = true;
             keep(view);
@@ -195,6 +193,18 @@ AnnealingResult annealViewpoint(const EnergyEvaluator& evaluator, const render::
                 result.hotSpots = betterHotSpotChoice(
                     *result.hotSpots,
                     chooseHotSpotView(result.visited, result.best, measure, options.hotSpotViews, interrupter, from));
+            }
+            if (!result.hotSpots->reads && result.hotSpots->chosen &&
+                result.hotSpots->shortfall <= kHotSpotRoundShortfall) {
+                // Nor do those, but one comes near: that view with a tighter rule, then its close
+                // neighbours, each visited and judged in turn up to the first that reads.
+                for (const CandidateView& view : viewsRoundTheNearest(result.visited[*result.hotSpots->chosen])) {
+                    result.visited.push_back(visit(view.thetaDeg, view.phiDeg, view.method));
+                    result.hotSpots = betterHotSpotChoice(
+                        *result.hotSpots, chooseHotSpotView(result.visited, result.best, measure, 1, interrupter,
+                                                            result.visited.size() - 1, 0.0));
+                    if (result.hotSpots->reads) break;
+                }
             }
             if (result.hotSpots->chosen) result.best = *result.hotSpots->chosen;
         }

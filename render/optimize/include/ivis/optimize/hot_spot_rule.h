@@ -2,7 +2,8 @@
 /// @brief The optimisation's hot-spot rule (beyond the paper, docs/optimisation.md, "The hot-spot
 ///        rule"): with the scalar energy, the best view is the best of the few best distinct visited
 ///        views whose every hot spot is seen and reads as one place in its picture (docs/measures.md,
-///        3 and 4), where one of them does; else the best view stays.
+///        3 and 4), where one of them does; else the views round the one nearest to reading are tried,
+///        and else that one is taken.
 #pragma once
 
 #include <ivis/core/camera.h>
@@ -36,6 +37,14 @@ inline constexpr double kMaxHotSpotOutline = 1.6;
 inline constexpr double kHotSpotViewSeparationDeg = 20.0;
 /// @brief Pixels per side of the pictures the rule judges.
 inline constexpr int kHotSpotPictureSize = 500;
+/// @brief Degrees in theta, phi or both between the view nearest to reading and the neighbours of
+///        it that the rule judges where no view reads (viewsRoundTheNearest).
+inline constexpr double kHotSpotNeighbourDeg = 4.0;
+/// @brief The views round the nearest are tried only where its hotSpotShortfall is at most this: in
+///        sweeps round the nearest views of six meshes (the tighter rule on all, the neighbours on four)
+///        they read only round views within 0.025 of reading, and came no nearer round those 0.06 or
+///        more from it.
+inline constexpr double kHotSpotRoundShortfall = 0.05;
 
 /// @brief A hot spot whose normals, summed by area, come to less than this share of its area faces
 ///        no one way (it wraps round a tip or a thin part).
@@ -73,6 +82,22 @@ inline constexpr int kSideOnLatticeViews = 400;
 ///        it, at most @a count; none where no hot spot has a direction.
 std::vector<std::array<double, 2>> sideOnViews(const std::vector<HotSpotFacing>& facings, int count);
 
+/// @brief A view to visit: its angles (as core::Camera::fromAngles takes them) and its method.
+struct CandidateView {
+    double thetaDeg = 0.0;
+    double phiDeg = 0.0;
+    render::MethodPtr method;
+};
+
+/// @brief What the rule tries where none of the views it judged reads, round the one nearest to
+///        reading (@a nearest: its angles and method): that view with the tightest rung of its
+///        method's readable rule (readableRuleLadder's first, where the method has the rule and the
+///        rung is tighter than its own: a tighter rule leaves out a ring's outer edge, which can carry
+///        slivers of a hot spot apart from the rest), then its eight neighbours kHotSpotNeighbourDeg
+///        apart in theta, in phi or in both, with its method (the angles kept on the sphere:
+///        wrapViewAngles).
+std::vector<CandidateView> viewsRoundTheNearest(const VisitedView& nearest);
+
 /// @brief What the hot-spot rule chose.
 struct HotSpotChoice {
     int judged = 0;                     ///< views whose pictures were judged
@@ -106,7 +131,7 @@ bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, 
 
 /// @brief The hot-spot rule over @a visited from index @a from on: the search's best view (@a best)
 ///        first where it is among them, then the others by energy, at most @a views views, each at
-///        least kHotSpotViewSeparationDeg from those judged before it and none with a hot spot facing
+///        least @a separationDeg from those judged before it and none with a hot spot facing
 ///        away (someHotSpotFacesAway), judged on a kHotSpotPictureSize picture from its camera with
 ///        its method (its hot spots counted as @a measure, an evaluator with the reveal, counts
 ///        them), up to the first whose hot spots read; where none reads, the one nearest to reading
@@ -114,7 +139,8 @@ bool hotSpotsReadIn(const EnergyEvaluator& measure, const core::Camera& camera, 
 /// @param interrupter optional cancel, asked before each picture
 /// @throw ValueError when @a measure does not measure the reveal; Cancelled when interrupted
 HotSpotChoice chooseHotSpotView(const std::vector<VisitedView>& visited, std::size_t best, const EnergyEvaluator& measure,
-                                int views, core::Interrupter* interrupter = nullptr, std::size_t from = 0);
+                                int views, core::Interrupter* interrupter = nullptr, std::size_t from = 0,
+                                double separationDeg = kHotSpotViewSeparationDeg);
 
 /// @brief What the rule chose, as optimize --json reports it: {"judged", "chosen_view" (the index in
 ///        "visited", null for none), "reads", "shortfall", "energy_ratio", "shapes"}.

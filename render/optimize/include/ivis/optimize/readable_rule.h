@@ -64,8 +64,10 @@ std::vector<float> readableRuleLadder(const render::Method& method);
 ///        the pairs of every (height / 200)-th row and column: the method's own rule is loosened
 ///        where its picture has room in coherence and tightened where it has none. A method without such a
 ///        parameter is returned as it is, nothing measured; a method at the chosen value itself.
-/// @param keeps if given, a rung looser than the method's own must also pass it (asked of the
-///        chosen rung, then of each tighter one down to the method's own value, which needs not)
+/// @param keeps if given, a rung looser than the method's own must also pass it: asked of the
+///        chosen rung, and where that fails, the loosest rung that passes is found by bisection
+///        between it and the method's own value (which needs not pass), taking `keeps` to fail on
+///        every rung looser than one that fails
 /// @throw ValueError for a size below 1 or a minimum coherence outside (0, 1]
 ReadableSetting loosestReadable(const render::RenderScene& scene, const core::Camera& camera,
                                 const render::MethodPtr& method, const glm::ivec2& size, double minCoherence,

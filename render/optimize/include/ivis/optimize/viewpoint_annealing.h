@@ -50,6 +50,10 @@ inline constexpr double kAxisViews[6][2] = {{0.0, 0.0}, {180.0, 0.0}, {90.0, 0.0
 ///        {-1, 0, 1}, two or three of them nonzero; x varies slowest, z fastest).
 std::vector<std::array<double, 2>> cubeViews();
 
+/// @brief Keeps the view angles @a theta and @a phi (degrees) on the sphere: theta reflected into
+///        [0, 180] (crossing a pole turns phi by 180 degrees), phi wrapped into [-180, 180].
+void wrapViewAngles(double& theta, double& phi);
+
 /// @brief The great-circle angle in degrees between the directions of the views at (theta1, phi1)
 ///        and (theta2, phi2), all in degrees.
 double degreesBetweenViews(double theta1, double phi1, double theta2, double phi2);
