@@ -2,8 +2,8 @@
 /// @brief The optimisation's hot-spot rule (beyond the paper, docs/optimisation.md, "The hot-spot
 ///        rule"): with the scalar energy, the best view is the best of the few best distinct visited
 ///        views whose every hot spot is seen and reads as one place in its picture (docs/measures.md,
-///        3 and 4), where one of them does; else the views round the one nearest to reading are tried,
-///        and else that one is taken.
+///        3 and 4), where one of them does; else the first that reads of views showing every hot
+///        spot side-on, then of views round the one nearest to reading; else that nearest one.
 #pragma once
 
 #include <ivis/core/camera.h>
